@@ -1,0 +1,100 @@
+// `momentlab label FILE [--json] [--at X Y]...`: the cone of a force set and its labels.
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "commands.hpp"
+#include "momentlab/geometry/labels.hpp"
+#include "momentlab/io/force_set_json.hpp"
+#include "momentlab/io/json_output.hpp"
+
+namespace momentlab::cli {
+namespace {
+
+struct LabelOptions {
+    std::string file;
+    bool json = false;
+    std::vector<double> at;
+};
+
+std::string fmt(double x) {
+    std::ostringstream s;
+    s << std::setprecision(10) << x;
+    return s.str();
+}
+
+std::string fmt(const Vec2& v) { return "(" + fmt(v.x()) + ", " + fmt(v.y()) + ")"; }
+std::string fmt(const Vec3& v) { return "(" + fmt(v.x()) + ", " + fmt(v.y()) + ", " + fmt(v.z()) + ")"; }
+
+template <class List>
+void print_list(const char* name, const List& list) {
+    if (list.empty()) return;
+    std::cout << "    " << std::left << std::setw(10) << name;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        if constexpr (std::is_same_v<typename List::value_type, ExactVector>) {
+            std::cout << (i ? "  " : "") << fmt(list[i].value());
+        } else {
+            std::cout << (i ? "  " : "") << fmt(list[i]);
+        }
+    }
+    std::cout << "\n";
+}
+
+void print_region(const char* name, const Region& r) {
+    std::cout << "  " << name << " region: " << r.kind() << "\n";
+    print_list("vertices", r.vertices);
+    print_list("rays", r.rays);
+    print_list("lines", r.lines);
+}
+
+int run(const LabelOptions& o) {
+    const Labels labels(read_force_set_text(read_file(o.file)));
+    const Cone& f = labels.forces();
+    if (o.json) {
+        nlohmann::json out = {{"cone", to_json(f)}, {"labels", to_json(labels)}};
+        for (std::size_t i = 0; i + 1 < o.at.size(); i += 2) {
+            const Vec2 p(o.at[i], o.at[i + 1]);
+            out["at"].push_back({{"point", {p.x(), p.y()}}, {"label", to_string(labels.at(p))}});
+        }
+        std::cout << out.dump(2) << "\n";
+        return 0;
+    }
+    std::cout << "force set: " << f.kind() << " (dimension " << f.dimension() << ", lineality "
+              << f.lineality_dimension() << ")\n";
+    print_list("rays", f.rays());
+    print_list("lines", f.lineality());
+    print_list("facets", f.facets());
+    print_list("equations", f.equations());
+    std::cout << "moment labels:\n";
+    print_region("+", labels.plus());
+    print_region("-", labels.minus());
+    for (std::size_t i = 0; i + 1 < o.at.size(); i += 2) {
+        const Vec2 p(o.at[i], o.at[i + 1]);
+        std::cout << "  label at " << fmt(p) << ": " << to_string(labels.at(p)) << "\n";
+    }
+    return 0;
+}
+
+}  // namespace
+
+std::string read_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError("$", "cannot read file \"" + path + "\"");
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::function<int()> add_label_command(CLI::App& app) {
+    auto opts = std::make_shared<LabelOptions>();
+    CLI::App* cmd = app.add_subcommand("label", "Print a force set (JSON file) as a cone and its moment labels");
+    cmd->add_option("file", opts->file, "force-set JSON (see docs/formats.md)")->required();
+    cmd->add_flag("--json", opts->json, "machine-readable output on stdout");
+    cmd->add_option("--at", opts->at, "X Y: also print the label of this point (repeatable)")
+        ->expected(2)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    return [opts] { return run(*opts); };
+}
+
+}  // namespace momentlab::cli

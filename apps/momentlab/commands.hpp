@@ -1,0 +1,14 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace momentlab::cli {
+
+/// Adds the `label` subcommand; the returned function runs it after parsing.
+std::function<int()> add_label_command(CLI::App& app);
+
+/// Reads a whole file; throws InputError at "$" if it cannot be read.
+std::string read_file(const std::string& path);
+
+}  // namespace momentlab::cli

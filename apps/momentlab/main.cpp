@@ -1,0 +1,27 @@
+// momentlab: planar contact mechanics by moment labels. Each command parses its arguments,
+// calls the library and prints; bad input gives one line on stderr and exit status 2.
+#include <iostream>
+#include <stdexcept>
+
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{"momentlab: moment labels and planar contact mechanics (Mason 1991)"};
+    app.require_subcommand(1);
+    const auto run_label = momentlab::cli::add_label_command(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    try {
+        if (app.got_subcommand("label")) return run_label();
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "momentlab: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "momentlab: internal error: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

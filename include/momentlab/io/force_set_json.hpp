@@ -1,0 +1,42 @@
+#pragma once
+
+/// \file
+/// Reading force sets from JSON (the input of `momentlab label`).
+///
+/// A file is either a list of sets, combined by sum, or an object
+/// `{"combine": "sum" | "intersection", "sets": [...]}`. Each set is an object with a "type":
+///   {"type": "force",         "point": [x, y], "direction": [fx, fy]}   (Figure 1a)
+///   {"type": "line",          "point": [x, y], "direction": [dx, dy]}   (both senses)
+///   {"type": "point",         "point": [x, y]}                          (Figure 1b)
+///   {"type": "friction_cone", "point": [x, y], "normal": [nx, ny], "mu": m}  (Figure 1c)
+///   {"type": "moment",        "sign": 1 | -1 | 0}                       (0: both senses)
+///   {"type": "wrenches",      "generators": [[fx, fy, tau], ...]}
+///   {"type": "halfspaces",    "normals": [[a, b, c], ...]}              ({w : n . w >= 0})
+///   {"type": "sum" | "intersection", "sets": [...]}                     (nesting)
+
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "momentlab/geometry/cone.hpp"
+
+namespace momentlab {
+
+/// Bad user input, with the JSON path of the offending field (e.g. "$.sets[2].mu").
+class InputError : public std::invalid_argument {
+public:
+    InputError(const std::string& path, const std::string& message)
+        : std::invalid_argument(path + ": " + message), path_(path) {}
+    [[nodiscard]] const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+};
+
+/// The force set described by `doc`. Throws InputError naming the field on bad input.
+[[nodiscard]] Cone read_force_set(const nlohmann::json& doc);
+
+/// Parses `text` as JSON and reads the force set; malformed JSON is an InputError at "$".
+[[nodiscard]] Cone read_force_set_text(const std::string& text);
+
+}  // namespace momentlab

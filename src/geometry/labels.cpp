@@ -1,0 +1,142 @@
+#include "momentlab/geometry/labels.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace momentlab {
+namespace {
+
+// X = (x, y, s) -> functional (y, -x, s), and back.
+Mat3 points_to_functionals() {
+    Mat3 m;
+    m << 0, 1, 0, -1, 0, 0, 0, 0, 1;
+    return m;
+}
+
+Mat3 functionals_to_points() { return points_to_functionals().transpose(); }
+
+// The sheet s >= 0 of a cone of homogeneous points.
+Region sheet(const Cone& k_sheet) {
+    Region r;
+    for (const ExactVector& ray : k_sheet.rays()) {
+        const Vec3& v = ray.value();
+        if (ray.dot_sign(Vec3::UnitZ()) == Sign::Positive) {
+            r.vertices_h.push_back(v);
+            r.vertices.emplace_back(v.x() / v.z(), v.y() / v.z());
+        } else {
+            r.rays.emplace_back(v.x(), v.y());
+        }
+    }
+    for (const ExactVector& l : k_sheet.lineality()) r.lines.emplace_back(l.value().x(), l.value().y());
+    r.is_empty = r.vertices_h.empty();
+    if (r.is_empty) {
+        r.rays.clear();
+        r.lines.clear();
+        return r;
+    }
+    if (k_sheet.is_pointed() && k_sheet.dimension() == 3) {
+        for (const ExactVector& ray : k_sheet.rays()) r.boundary.push_back(ray.value());
+    }
+    for (const ExactVector& f : k_sheet.facets()) {
+        const Vec3& v = f.value();
+        if (v.x() != 0.0 || v.y() != 0.0) r.halfplanes.push_back(v);
+    }
+    for (const ExactVector& e : k_sheet.equations()) r.lines_h.push_back(e.value());
+    return r;
+}
+
+// Sutherland-Hodgman clip of a convex polygon by a x + b y + c >= 0 (for drawing).
+std::vector<Vec2> clip(const std::vector<Vec2>& poly, const Vec3& h) {
+    std::vector<Vec2> out;
+    const std::size_t n = poly.size();
+    auto value = [&](const Vec2& p) { return h.x() * p.x() + h.y() * p.y() + h.z(); };
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec2& a = poly[i];
+        const Vec2& b = poly[(i + 1) % n];
+        const double va = value(a), vb = value(b);
+        if (va >= 0) out.push_back(a);
+        if ((va >= 0) != (vb >= 0)) out.push_back(a + (b - a) * (va / (va - vb)));
+    }
+    return out;
+}
+
+}  // namespace
+
+const char* to_string(Label label) {
+    switch (label) {
+        case Label::Plus: return "+";
+        case Label::Minus: return "-";
+        case Label::Both: return "+-";
+        default: return "none";
+    }
+}
+
+std::string Region::kind() const {
+    if (is_empty) return "empty";
+    const std::size_t v = vertices.size(), r = rays.size(), l = lines.size();
+    if (l == 2) return "plane";
+    if (l == 1) {
+        if (r > 0) return "half-plane";
+        return v >= 2 ? "strip" : "line";
+    }
+    if (r == 0) return v == 1 ? "point" : (v == 2 ? "segment" : "polygon");
+    if (v == 1 && r == 1) return "ray";
+    return "unbounded";
+}
+
+std::vector<Vec2> Region::clipped(const Box& box) const {
+    if (is_empty) return {};
+    std::vector<Vec2> poly = {box.min, Vec2(box.max.x(), box.min.y()), box.max,
+                              Vec2(box.min.x(), box.max.y())};
+    for (const Vec3& h : halfplanes) poly = clip(poly, h);
+    for (const Vec3& e : lines_h) {
+        if (e.x() == 0.0 && e.y() == 0.0) continue;
+        poly = clip(clip(poly, e), -e);
+    }
+    // Collapse repeated points left by degenerate cuts.
+    std::vector<Vec2> out;
+    for (const Vec2& p : poly) {
+        if (out.empty() || (p - out.back()).norm() > 1e-12 * (1.0 + p.norm())) out.push_back(p);
+    }
+    while (out.size() > 1 && (out.front() - out.back()).norm() <= 1e-12 * (1.0 + out.front().norm())) {
+        out.pop_back();
+    }
+    return out;
+}
+
+Labels::Labels(Cone forces)
+    : forces_(std::move(forces)),
+      points_(forces_.dual().signed_permuted(functionals_to_points())) {
+    const Cone upper = Cone::half_space(Vec3::UnitZ());
+    plus_ = sheet(intersection(points_, upper));
+    minus_ = sheet(intersection(points_.negated(), upper));
+}
+
+Label Labels::at(const Vec2& point) const {
+    const Cone dual = forces_.dual();
+    const Vec3 lambda = moment_functional(point);
+    const bool plus = dual.has(lambda);
+    const bool minus = dual.has(-lambda);
+    if (plus && minus) return Label::Both;
+    if (plus) return Label::Plus;
+    if (minus) return Label::Minus;
+    return Label::None;
+}
+
+Cone Labels::forces_from_regions(const Region& plus, const Region& minus) {
+    std::vector<Vec3> gens;
+    for (const Region* r : {&plus, &minus}) {
+        if (r->is_empty) continue;
+        const double s = r == &plus ? 1.0 : -1.0;
+        for (const Vec3& v : r->vertices_h) gens.push_back(s * v);
+        for (const Vec2& d : r->rays) gens.push_back(s * Vec3(d.x(), d.y(), 0.0));
+        for (const Vec2& d : r->lines) {
+            gens.push_back(Vec3(d.x(), d.y(), 0.0));
+            gens.push_back(-Vec3(d.x(), d.y(), 0.0));
+        }
+    }
+    const Cone k = Cone::from_generators(gens);
+    return k.signed_permuted(points_to_functionals()).dual();
+}
+
+}  // namespace momentlab

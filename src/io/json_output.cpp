@@ -1,0 +1,46 @@
+#include "momentlab/io/json_output.hpp"
+
+namespace momentlab {
+namespace {
+
+nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+nlohmann::json vec(const Vec2& v) { return {v.x(), v.y()}; }
+
+template <class T>
+nlohmann::json list(const std::vector<T>& vs) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& v : vs) {
+        if constexpr (std::is_same_v<T, ExactVector>) {
+            out.push_back(vec(v.value()));
+        } else {
+            out.push_back(vec(v));
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+nlohmann::json to_json(const Cone& cone) {
+    return {{"kind", cone.kind()},
+            {"dimension", cone.dimension()},
+            {"lineality_dimension", cone.lineality_dimension()},
+            {"rays", list(cone.rays())},
+            {"lineality", list(cone.lineality())},
+            {"facets", list(cone.facets())},
+            {"equations", list(cone.equations())},
+            {"facet_rays", cone.facet_rays()}};
+}
+
+nlohmann::json to_json(const Region& region) {
+    return {{"kind", region.kind()},
+            {"vertices", list(region.vertices)},
+            {"rays", list(region.rays)},
+            {"lines", list(region.lines)}};
+}
+
+nlohmann::json to_json(const Labels& labels) {
+    return {{"plus", to_json(labels.plus())}, {"minus", to_json(labels.minus())}};
+}
+
+}  // namespace momentlab

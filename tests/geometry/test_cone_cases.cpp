@@ -1,0 +1,160 @@
+// Named cones whose answers are known by hand, one of every kind, plus exactness cases that
+// a tolerance-based hull gets wrong.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "momentlab/geometry/cone.hpp"
+
+namespace momentlab {
+namespace {
+
+Cone gen(std::initializer_list<Vec3> g) { return Cone::from_generators(std::vector<Vec3>(g)); }
+
+// True when `v` is a positive multiple of one of `list` (exactly).
+bool has_direction(const std::vector<ExactVector>& list, const Vec3& v) {
+    return std::any_of(list.begin(), list.end(), [&](const ExactVector& e) {
+        return parallel(e.value(), v) && dot_sign(e.value(), v) == Sign::Positive;
+    });
+}
+
+const Vec3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1);
+
+TEST(Cone, EveryKindFromGenerators) {
+    struct Case {
+        Cone cone;
+        const char* kind;
+        int dim, lin, rays, facets;
+    };
+    const Case cases[] = {
+        {gen({}), "{0}", 0, 0, 0, 0},
+        {gen({Vec3::Zero()}), "{0}", 0, 0, 0, 0},
+        {gen({X, 2 * X}), "ray", 1, 0, 1, 1},
+        {gen({X, -2 * X}), "line", 1, 1, 0, 0},
+        {gen({X, Y, X + Y}), "wedge", 2, 0, 2, 2},
+        {gen({X, -X, Y}), "half-plane", 2, 1, 1, 1},
+        {gen({X, Y, -X - Y}), "plane", 2, 2, 0, 0},
+        {gen({X, Y, Z}), "pointed cone", 3, 0, 3, 3},
+        {gen({X, -X, Y, Z}), "wedge x line", 3, 1, 2, 2},
+        {gen({X, -X, Y, -Y, Z}), "half-space", 3, 2, 1, 1},
+        {gen({X, Y, Z, -X - Y - Z}), "R^3", 3, 3, 0, 0},
+        {gen({X, -X, Y, -Y, Z, -Z}), "R^3", 3, 3, 0, 0},
+    };
+    for (const Case& c : cases) {
+        EXPECT_EQ(c.cone.kind(), c.kind);
+        EXPECT_EQ(c.cone.dimension(), c.dim) << c.kind;
+        EXPECT_EQ(c.cone.lineality_dimension(), c.lin) << c.kind;
+        EXPECT_EQ(c.cone.rays().size(), static_cast<std::size_t>(c.rays)) << c.kind;
+        EXPECT_EQ(c.cone.facets().size(), static_cast<std::size_t>(c.facets)) << c.kind;
+        // Duality is an involution and swaps the dimension with the codimension of lineality.
+        EXPECT_TRUE(c.cone.dual().dual() == c.cone) << c.kind;
+        EXPECT_EQ(c.cone.dual().dimension(), 3 - c.lin) << c.kind;
+    }
+}
+
+TEST(Cone, OrthantHasCoordinateFacets) {
+    const Cone c = gen({X, Y, Z, X + Y + Z, X + Y});  // two non-extreme generators
+    ASSERT_EQ(c.rays().size(), 3u);
+    for (const Vec3& v : {X, Y, Z}) {
+        EXPECT_TRUE(has_direction(c.rays(), v));
+        EXPECT_TRUE(has_direction(c.facets(), v));  // the facets of the orthant are x,y,z >= 0
+    }
+    EXPECT_EQ(c.faces().size(), 8u);  // itself, 3 facets, 3 rays, {0}
+}
+
+TEST(Cone, HalfSpaceAndWedgeTimesLineHaveTheirHandNormals) {
+    const Cone h = gen({X, -X, Y, -Y, 3 * Z + X});
+    ASSERT_EQ(h.facets().size(), 1u);
+    EXPECT_TRUE(has_direction(h.facets(), Z));
+    const Cone w = gen({X, -X, Y, Z});
+    EXPECT_TRUE(has_direction(w.facets(), Y));
+    EXPECT_TRUE(has_direction(w.facets(), Z));
+}
+
+TEST(Cone, GeneratorJustBelowAFacetIsExtreme) {
+    // (1, 1, 0) lies on the facet z = 0 of the orthant; (1, 1, -2^-60) lies just outside and
+    // is an extreme ray. A tolerance of 1e-12 would call both coplanar.
+    EXPECT_EQ(gen({X, Y, Z, Vec3(1, 1, 0)}).rays().size(), 3u);
+    EXPECT_EQ(gen({X, Y, Z, Vec3(1, 1, -0x1p-60)}).rays().size(), 4u);
+    EXPECT_EQ(gen({X, Y, Z, Vec3(1, 1, 0x1p-60)}).rays().size(), 3u);
+}
+
+TEST(Cone, ScaleInvariantAcrossExponents) {
+    // (-1, -1, 1e-3) + X + Y = (0, 0, 1e-3): Z is not extreme, the rays are X, Y, W.
+    for (double s : {1e-300, 1e-150, 1.0, 1e150, 1e300}) {
+        const Vec3 w(-1, -1, 1e-3);
+        const Cone c = gen({s * X, s * Y, s * Z, s * Vec3(1, 1, 0), s * w});
+        EXPECT_EQ(c.kind(), "pointed cone") << s;
+        EXPECT_EQ(c.rays().size(), 3u) << s;
+        EXPECT_TRUE(has_direction(c.rays(), s * w)) << s;  // the stored (rounded) generator
+        EXPECT_TRUE(c.has(Vec3(1, 1, 1))) << s;
+        EXPECT_EQ(gen({s * X, s * Y, s * Z, s * Vec3(1, 1, -0x1p-60)}).rays().size(), 4u) << s;
+    }
+}
+
+TEST(Cone, ManyGeneratorsOnFacetsOfAPyramid) {
+    std::vector<Vec3> g;
+    for (int i = -20; i <= 20; ++i) {
+        g.emplace_back(i, 20, 20);
+        g.emplace_back(i, -20, 20);
+        g.emplace_back(20, i, 20);
+        g.emplace_back(-20, i, 20);
+        g.emplace_back(i / 2, i / 3, 20);  // interior
+    }
+    const Cone c = Cone::from_generators(g);
+    EXPECT_EQ(c.rays().size(), 4u);
+    EXPECT_EQ(c.facets().size(), 4u);
+    for (const Vec3& corner : {Vec3(1, 1, 1), Vec3(-1, 1, 1), Vec3(1, -1, 1), Vec3(-1, -1, 1)}) {
+        EXPECT_TRUE(has_direction(c.rays(), corner));
+    }
+}
+
+TEST(Cone, ContainsGivesCertificates) {
+    const Cone c = gen({X, Y, Z});
+    const Vec3 w(1, 2, 3);
+    const Membership in = c.contains(w);
+    ASSERT_TRUE(in.member);
+    Vec3 sum = Vec3::Zero();
+    for (const auto& [v, k] : in.combination) {
+        EXPECT_GE(k, 0.0);
+        sum += k * v;
+    }
+    EXPECT_NEAR((sum - w).norm(), 0.0, 1e-12);
+    const Membership out = c.contains(Vec3(-1, 2, 3));
+    ASSERT_FALSE(out.member);
+    EXPECT_EQ(out.separator.dot_sign(Vec3(-1, 2, 3)), Sign::Negative);
+    for (const Vec3& v : {X, Y, Z}) EXPECT_NE(out.separator.dot_sign(v), Sign::Negative);
+    EXPECT_TRUE(c.in_relative_interior(Vec3(1, 1, 1)));
+    EXPECT_FALSE(c.in_relative_interior(Vec3(1, 1, 0)));
+    // Outside the span of a lower-dimensional cone the separator is an equation.
+    const Cone wedge = gen({X, Y});
+    const Membership off = wedge.contains(Z);
+    ASSERT_FALSE(off.member);
+    EXPECT_EQ(off.separator.dot_sign(Z), Sign::Negative);
+}
+
+TEST(Cone, SumIntersectionAndNegation) {
+    const Cone a = gen({X, Y, Z});
+    const Cone b = a.negated();
+    EXPECT_EQ(sum(a, b).kind(), "R^3");
+    EXPECT_EQ(intersection(a, b).kind(), "{0}");
+    EXPECT_TRUE(intersection(a, gen({X, Y, -Z})) == gen({X, Y}));
+    EXPECT_TRUE(sum(gen({X}), gen({-X})) == gen({X, -X}));
+    Mat3 shear;
+    shear << 1, 2, 0, 0, 1, 0, 0, 0, 1;
+    EXPECT_TRUE(a.linear_image(shear) == gen({X, Vec3(2, 1, 0), Z}));
+    EXPECT_THROW((void)a.linear_image(Mat3::Zero()), std::invalid_argument);
+    EXPECT_THROW((void)gen({Vec3(std::nan(""), 0, 0)}), std::invalid_argument);
+}
+
+TEST(Cone, FromHalfspaces) {
+    const std::vector<Vec3> n = {X, Y, Z};
+    const Cone c = Cone::from_halfspaces(n);
+    EXPECT_EQ(c.exact_representation(), Representation::Halfspaces);
+    EXPECT_TRUE(c == gen({X, Y, Z}));
+    EXPECT_TRUE(Cone::from_halfspaces(std::vector<Vec3>{}) == Cone::whole_space());
+    EXPECT_TRUE(Cone::from_halfspaces(std::vector<Vec3>{X, -X}) == gen({Y, -Y, Z, -Z}));
+}
+
+}  // namespace
+}  // namespace momentlab

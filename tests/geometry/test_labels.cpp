@@ -1,0 +1,145 @@
+// The paper's Figure 1 and 2 force sets, worked by hand, and the counterexample of DESIGN.md
+// to the paper's "convex hull of the + regions" shorthand for intersections.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "momentlab/geometry/force_sets.hpp"
+#include "momentlab/geometry/labels.hpp"
+
+namespace momentlab {
+namespace {
+
+bool has_direction(const std::vector<Vec2>& list, const Vec2& d) {
+    return std::any_of(list.begin(), list.end(), [&](const Vec2& v) {
+        return cross2_sign(v, d) == Sign::Zero && v.dot(d) > 0;
+    });
+}
+
+// True when one of the homogeneous vertices is a positive multiple of (x, y, s).
+bool has_vertex(const Region& r, const Vec3& xys) {
+    return std::any_of(r.vertices_h.begin(), r.vertices_h.end(), [&](const Vec3& v) {
+        return parallel(v, xys) && dot_sign(v, xys) == Sign::Positive;
+    });
+}
+
+TEST(Labels, Figure1aLineOfForce) {
+    // A force along +x through the origin: + to its left (y > 0), - to its right, both on it.
+    const Labels l(force_ray(Vec2(0, 0), Vec2(1, 0)));
+    EXPECT_EQ(l.plus().kind(), "half-plane");
+    EXPECT_EQ(l.minus().kind(), "half-plane");
+    EXPECT_EQ(l.at(Vec2(3, 1)), Label::Plus);
+    EXPECT_EQ(l.at(Vec2(-3, -1)), Label::Minus);
+    EXPECT_EQ(l.at(Vec2(7, 0)), Label::Both);
+    EXPECT_TRUE(has_direction(l.plus().rays, Vec2(0, 1)));
+    EXPECT_TRUE(has_direction(l.minus().rays, Vec2(0, -1)));
+    // Both senses: every point of the line is +-, no other point is labelled.
+    const Labels both(line_of_force(Vec2(0, 0), Vec2(1, 0)));
+    EXPECT_EQ(both.plus().kind(), "line");
+    EXPECT_EQ(both.at(Vec2(5, 0)), Label::Both);
+    EXPECT_EQ(both.at(Vec2(5, 1)), Label::None);
+}
+
+TEST(Labels, Figure1bForcesThroughAPoint) {
+    const Labels l(forces_through_point(Vec2(1, 2)));
+    EXPECT_EQ(l.plus().kind(), "point");
+    EXPECT_EQ(l.minus().kind(), "point");
+    EXPECT_TRUE(has_vertex(l.plus(), Vec3(1, 2, 1)));
+    EXPECT_TRUE(has_vertex(l.minus(), Vec3(1, 2, 1)));
+    EXPECT_EQ(l.at(Vec2(1, 2)), Label::Both);
+    EXPECT_EQ(l.at(Vec2(1, 2.5)), Label::None);
+}
+
+TEST(Labels, Figure1cFrictionCone) {
+    // Contact at the origin, normal +y, mu = 1/2: edges (+-1/2, 1). The moment of (fx, fy)
+    // at the origin about (x, y) is y fx - x fy, so + needs y/2 - x >= 0 and -y/2 - x >= 0:
+    // the wedge x <= -|y|/2 to the left; - is x >= |y|/2. The apex is in both.
+    const Labels l(friction_cone(Vec2(0, 0), Vec2(0, 1), 0.5));
+    EXPECT_EQ(l.plus().kind(), "unbounded");
+    EXPECT_TRUE(has_vertex(l.plus(), Vec3(0, 0, 1)));
+    EXPECT_TRUE(has_direction(l.plus().rays, Vec2(-1, 2)));
+    EXPECT_TRUE(has_direction(l.plus().rays, Vec2(-1, -2)));
+    EXPECT_TRUE(has_direction(l.minus().rays, Vec2(1, 2)));
+    EXPECT_TRUE(has_direction(l.minus().rays, Vec2(1, -2)));
+    EXPECT_EQ(l.at(Vec2(0, 0)), Label::Both);
+    EXPECT_EQ(l.at(Vec2(-1, 2)), Label::Plus);     // on the boundary y = -2x
+    EXPECT_EQ(l.at(Vec2(-1, 2.001)), Label::None);
+    EXPECT_EQ(l.at(Vec2(4, 1)), Label::Minus);
+}
+
+TEST(Labels, Figure2TwoFrictionCones) {
+    // A: (0,0), normal (0,1), mu 1/2 (see Figure1c). B: (2,0), normal (-1,1), mu 1/2: edges
+    // (-1/2, 3/2) and (-3/2, 1/2); + needs 3x + y <= 6 and x + 3y <= 2. The + region of the
+    // resultants is x <= -|y|/2, x + 3y <= 2 (3x + y <= 6 is implied): vertices (0,0) and
+    // y = -2x meets x + 3y = 2 at (-2/5, 4/5); rays along (-3, 1) and (-1, -2).
+    // The - region: x >= |y|/2, 3x + y >= 6, x + 3y >= 2: vertices (2, 0) and (6/5, 12/5)
+    // (y = 2x meets 3x + y = 6); rays along (3, -1) and (1, 2).
+    const Cone a = friction_cone(Vec2(0, 0), Vec2(0, 1), 0.5);
+    const Cone b = friction_cone(Vec2(2, 0), Vec2(-1, 1), 0.5);
+    const Labels la(a), lb(b), l(sum(a, b));
+    EXPECT_EQ(l.plus().vertices.size(), 2u);
+    EXPECT_TRUE(has_vertex(l.plus(), Vec3(0, 0, 1)));
+    EXPECT_TRUE(has_vertex(l.plus(), Vec3(-2, 4, 5)));
+    EXPECT_TRUE(has_direction(l.plus().rays, Vec2(-3, 1)));
+    EXPECT_TRUE(has_direction(l.plus().rays, Vec2(-1, -2)));
+    EXPECT_EQ(l.minus().vertices.size(), 2u);
+    EXPECT_TRUE(has_vertex(l.minus(), Vec3(2, 0, 1)));
+    EXPECT_TRUE(has_vertex(l.minus(), Vec3(6, 12, 5)));
+    EXPECT_TRUE(has_direction(l.minus().rays, Vec2(3, -1)));
+    EXPECT_TRUE(has_direction(l.minus().rays, Vec2(1, 2)));
+    // The paper's rule for resultants: intersect the labels, point by point.
+    for (double x = -4; x <= 4; x += 0.25) {
+        for (double y = -4; y <= 4; y += 0.25) {
+            const Vec2 p(x, y);
+            const Label pa = la.at(p), pb = lb.at(p), pl = l.at(p);
+            const bool plus = (pa == Label::Plus || pa == Label::Both) && (pb == Label::Plus || pb == Label::Both);
+            const bool minus = (pa == Label::Minus || pa == Label::Both) && (pb == Label::Minus || pb == Label::Both);
+            EXPECT_EQ(pl == Label::Plus || pl == Label::Both, plus) << x << " " << y;
+            EXPECT_EQ(pl == Label::Minus || pl == Label::Both, minus) << x << " " << y;
+        }
+    }
+}
+
+TEST(Labels, ParallelRaysCounterexampleToHullShorthand) {
+    // Two forces along +x, on y = 0 and on y = 1: the only common wrench is 0.
+    const Cone f = force_ray(Vec2(0, 0), Vec2(1, 0));
+    const Cone g = force_ray(Vec2(0, 1), Vec2(1, 0));
+    const Cone meet = intersection(f, g);
+    EXPECT_EQ(meet.kind(), "{0}");
+    const Labels l(meet);
+    EXPECT_EQ(l.plus().kind(), "plane");  // labels of {0}: the whole plane, twice
+    EXPECT_EQ(l.minus().kind(), "plane");
+    // The paper's shorthand would take the planar hull of F+ = {y >= 0} and G+ = {y >= 1}:
+    // the half-plane y >= 0, which misses (0, -1). The true label there is +-.
+    const Labels lf(f), lg(g);
+    EXPECT_EQ(lf.at(Vec2(0, -1)), Label::Minus);
+    EXPECT_EQ(lg.at(Vec2(0, -1)), Label::Minus);
+    EXPECT_EQ(l.at(Vec2(0, -1)), Label::Both);
+}
+
+TEST(Labels, DegenerateForceSets) {
+    EXPECT_EQ(Labels(Cone()).plus().kind(), "plane");
+    EXPECT_EQ(Labels(Cone::whole_space()).plus().kind(), "empty");
+    const Labels moments(pure_moments(0));
+    EXPECT_TRUE(moments.plus().is_empty && moments.minus().is_empty);
+    const Labels ccw(pure_moments(1));  // a positive moment is + about every point
+    EXPECT_EQ(ccw.plus().kind(), "plane");
+    EXPECT_EQ(ccw.minus().kind(), "empty");
+    EXPECT_EQ(ccw.at(Vec2(5, -3)), Label::Plus);
+}
+
+TEST(Labels, ClippedRegionsStayInTheBox) {
+    const Labels l(friction_cone(Vec2(0, 0), Vec2(0, 1), 0.5));
+    const Box box{Vec2(-2, -2), Vec2(2, 2)};
+    const auto poly = l.plus().clipped(box);
+    ASSERT_GE(poly.size(), 3u);
+    for (const Vec2& p : poly) {
+        EXPECT_LE(p.x(), 1e-12);  // the + region lies left of the apex
+        EXPECT_GE(p.x(), -2.0);
+        EXPECT_LE(std::abs(p.y()), 2.0);
+    }
+    EXPECT_TRUE(Labels(forces_through_point(Vec2(5, 5))).plus().clipped(box).empty());
+}
+
+}  // namespace
+}  // namespace momentlab

@@ -1,0 +1,113 @@
+#include "cdd_oracle.hpp"
+
+#include <setoper.h>
+#include <cdd.h>
+
+#include <mutex>
+#include <stdexcept>
+
+namespace momentlab::oracle {
+namespace {
+
+void init() {
+    static std::once_flag once;
+    std::call_once(once, [] { dd_set_global_constants(); });
+}
+
+// Rows [first, x, y, z]; `first` is 1 for the origin point, 0 otherwise.
+dd_MatrixPtr make(const std::vector<Vec3>& rows, dd_RepresentationType rep, bool with_origin) {
+    const long n = static_cast<long>(rows.size()) + (with_origin ? 1 : 0);
+    dd_MatrixPtr m = dd_CreateMatrix(n, 4);
+    m->representation = rep;
+    m->numbtype = dd_Rational;
+    long r = 0;
+    if (with_origin) {
+        dd_set_si(m->matrix[r][0], 1);
+        for (int j = 1; j < 4; ++j) dd_set_si(m->matrix[r][j], 0);
+        ++r;
+    }
+    for (const Vec3& v : rows) {
+        dd_set_si(m->matrix[r][0], 0);
+        for (int j = 0; j < 3; ++j) mpq_set_d(m->matrix[r][j + 1], v[j]);
+        ++r;
+    }
+    return m;
+}
+
+QVec row(dd_MatrixPtr m, long r) {
+    QVec v;
+    for (int j = 0; j < 3; ++j) v[static_cast<std::size_t>(j)] = mpq_class(m->matrix[r][j + 1]);
+    return v;
+}
+
+bool is_zero(const QVec& v) { return sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0; }
+
+void canonicalize(dd_MatrixPtr* m) {
+    dd_rowset impl_lin = nullptr, redset = nullptr;
+    dd_rowindex newpos = nullptr;
+    dd_ErrorType err = dd_NoError;
+    dd_MatrixCanonicalize(m, &impl_lin, &redset, &newpos, &err);
+    if (err != dd_NoError) throw std::runtime_error("cdd canonicalize failed");
+    set_free(impl_lin);
+    set_free(redset);
+    free(newpos);
+}
+
+OracleCone convert(dd_PolyhedraPtr poly) {
+    OracleCone out;
+    dd_MatrixPtr h = dd_CopyInequalities(poly);
+    dd_MatrixPtr g = dd_CopyGenerators(poly);
+    canonicalize(&h);
+    canonicalize(&g);
+    for (long r = 0; r < h->rowsize; ++r) {
+        const QVec v = row(h, r);
+        if (is_zero(v)) continue;  // the trivial row 1 >= 0
+        (set_member(r + 1, h->linset) ? out.equations : out.facets).push_back(v);
+    }
+    for (long r = 0; r < g->rowsize; ++r) {
+        if (mpq_sgn(g->matrix[r][0]) != 0) continue;  // the origin
+        const QVec v = row(g, r);
+        if (is_zero(v)) continue;
+        (set_member(r + 1, g->linset) ? out.lineality : out.rays).push_back(v);
+    }
+    out.dimension = 3 - static_cast<int>(out.equations.size());
+    out.lineality_dimension = static_cast<int>(out.lineality.size());
+    dd_FreeMatrix(h);
+    dd_FreeMatrix(g);
+    return out;
+}
+
+OracleCone run(dd_MatrixPtr m) {
+    dd_ErrorType err = dd_NoError;
+    dd_PolyhedraPtr poly = dd_DDMatrix2Poly(m, &err);
+    if (err != dd_NoError) throw std::runtime_error("cdd DDMatrix2Poly failed");
+    OracleCone out = convert(poly);
+    dd_FreePolyhedra(poly);
+    dd_FreeMatrix(m);
+    return out;
+}
+
+}  // namespace
+
+OracleCone from_generators(const std::vector<Vec3>& generators) {
+    init();
+    return run(make(generators, dd_Generator, true));
+}
+
+OracleCone from_halfspaces(const std::vector<Vec3>& normals) {
+    init();
+    if (normals.empty()) {
+        // cdd needs at least one row: the trivial inequality 1 >= 0.
+        dd_MatrixPtr m = make({}, dd_Inequality, true);
+        return run(m);
+    }
+    return run(make(normals, dd_Inequality, false));
+}
+
+QVec exact(const Vec3& v) { return {mpq_class(v.x()), mpq_class(v.y()), mpq_class(v.z())}; }
+
+mpq_class dot(const QVec& a, const QVec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+int sign(const mpq_class& q) { return sgn(q); }
+
+}  // namespace momentlab::oracle
