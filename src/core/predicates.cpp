@@ -6,6 +6,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 namespace momentlab {
 namespace {
@@ -96,28 +97,14 @@ inline bool in_expansion_range(const Vec3& v) {
 
 inline Sign sign_of(const mpq_class& q) { return sign_of_int(sgn(q)); }
 
-// Forward error bounds of the straightforward evaluations, relative to the sum of absolute
-// values of the terms (the "permanent"). Shewchuk's orient3d bound (7 + 56 eps) eps covers the
-// 3x3 determinant (our inputs are exact, which only helps); dot products and 2x2 minors have
-// smaller bounds, and we use the same conservative constant. The filter is only trusted when
-// the permanent is far from underflow, so absolute errors of denormal products are negligible.
-constexpr double kErrorBound = 8.0 * 0x1p-53;
-constexpr double kMinPermanent = 0x1p-600;
-
 }  // namespace
 
 PredicateStats& predicate_stats() { return g_stats; }
 
-Sign dot_sign(const Vec3& a, const Vec3& b) {
+namespace detail {
+
+Sign dot_sign_exact(const Vec3& a, const Vec3& b) {
     assert(a.allFinite() && b.allFinite());
-    const double p0 = a.x() * b.x(), p1 = a.y() * b.y(), p2 = a.z() * b.z();
-    const double value = p0 + p1 + p2;
-    const double permanent = std::fabs(p0) + std::fabs(p1) + std::fabs(p2);
-    if (std::fabs(value) > kErrorBound * permanent && permanent > kMinPermanent &&
-        std::isfinite(permanent)) {
-        ++g_stats.filtered;
-        return sign_of(value);
-    }
     if (in_expansion_range(a) && in_expansion_range(b)) {
         ++g_stats.expansion;
         Expansion<6> e;
@@ -132,21 +119,60 @@ Sign dot_sign(const Vec3& a, const Vec3& b) {
     return sign_of(r);
 }
 
-Sign det_sign(const Vec3& a, const Vec3& b, const Vec3& c) {
+// The 2x2 minor x1*y2 - x2*y1 with error at most eps|m| + eps^2 (|x1 y2| + |x2 y1|): the
+// products are split exactly (Dekker), their leading parts cancel exactly when close
+// (Sterbenz), and only the small tails are rounded.
+inline double accurate_minor(double x1, double y2, double x2, double y1) {
+    double p, pe, q, qe;
+    two_product(x1, y2, p, pe);
+    two_product(x2, y1, q, qe);
+    return (p - q) + (pe - qe);
+}
+
+__extension__ typedef __int128 Int128;
+
+// Integers up to 2^40 in magnitude: products of three fit in 120 bits, sums of six in 123.
+inline bool small_integer(double x, std::int64_t& out) {
+    if (!(std::fabs(x) <= 0x1p40)) return false;
+    out = static_cast<std::int64_t>(x);
+    return static_cast<double>(out) == x;
+}
+
+inline bool small_integers(const Vec3& a, const Vec3& b, const Vec3& c, std::int64_t v[9]) {
+    return small_integer(a.x(), v[0]) && small_integer(a.y(), v[1]) && small_integer(a.z(), v[2]) &&
+           small_integer(b.x(), v[3]) && small_integer(b.y(), v[4]) && small_integer(b.z(), v[5]) &&
+           small_integer(c.x(), v[6]) && small_integer(c.y(), v[7]) && small_integer(c.z(), v[8]);
+}
+
+Sign det_sign_exact(const Vec3& a, const Vec3& b, const Vec3& c) {
     assert(a.allFinite() && b.allFinite() && c.allFinite());
-    const double m0 = b.y() * c.z(), m1 = b.z() * c.y();
-    const double m2 = b.z() * c.x(), m3 = b.x() * c.z();
-    const double m4 = b.x() * c.y(), m5 = b.y() * c.x();
-    const double value = a.x() * (m0 - m1) + a.y() * (m2 - m3) + a.z() * (m4 - m5);
-    const double permanent = std::fabs(a.x()) * (std::fabs(m0) + std::fabs(m1)) +
-                             std::fabs(a.y()) * (std::fabs(m2) + std::fabs(m3)) +
-                             std::fabs(a.z()) * (std::fabs(m4) + std::fabs(m5));
-    if (std::fabs(value) > kErrorBound * permanent && permanent > kMinPermanent &&
-        std::isfinite(permanent)) {
-        ++g_stats.filtered;
-        return sign_of(value);
+    std::int64_t v[9];
+    if (small_integers(a, b, c, v)) {
+        // Exactly degenerate inputs are often small integers: exact in 128-bit arithmetic.
+        const Int128 m0 = static_cast<Int128>(v[4]) * v[8] - static_cast<Int128>(v[5]) * v[7];
+        const Int128 m1 = static_cast<Int128>(v[5]) * v[6] - static_cast<Int128>(v[3]) * v[8];
+        const Int128 m2 = static_cast<Int128>(v[3]) * v[7] - static_cast<Int128>(v[4]) * v[6];
+        const Int128 d = v[0] * m0 + v[1] * m1 + v[2] * m2;
+        return d > 0 ? Sign::Positive : (d < 0 ? Sign::Negative : Sign::Zero);
     }
     if (in_expansion_range(a) && in_expansion_range(b) && in_expansion_range(c)) {
+        // Second filter: nearly exact minors. For nearly collinear b, c the minors are small
+        // and the bound, relative to |a_i m_i| rather than to the permanent, is much tighter.
+        // Bound: each minor has error <= eps|m_i| + eps^2 P_i (see accurate_minor; the
+        // difference p - q is exact only when p, q are close, otherwise it adds eps|m_i|);
+        // the products and the two sums add <= 3 eps sum |a_i m_i| (plus eps^2 terms).
+        const double m0 = accurate_minor(b.y(), c.z(), b.z(), c.y());
+        const double m1 = accurate_minor(b.z(), c.x(), b.x(), c.z());
+        const double m2 = accurate_minor(b.x(), c.y(), b.y(), c.x());
+        const double value = a.x() * m0 + a.y() * m1 + a.z() * m2;
+        const double s = std::fabs(a.x() * m0) + std::fabs(a.y() * m1) + std::fabs(a.z() * m2);
+        const double permanent =
+            std::fabs(a.x()) * (std::fabs(b.y() * c.z()) + std::fabs(b.z() * c.y())) +
+            std::fabs(a.y()) * (std::fabs(b.z() * c.x()) + std::fabs(b.x() * c.z())) +
+            std::fabs(a.z()) * (std::fabs(b.x() * c.y()) + std::fabs(b.y() * c.x()));
+        const double eps = 0x1p-53;
+        const double bound = 6.0 * eps * s + 4.0 * eps * eps * permanent;
+        if (std::fabs(value) > bound && permanent > 0x1p-500) return sign_of(value);
         ++g_stats.expansion;
         Expansion<24> e;
         e.add_product(a.x(), b.y(), c.z());
@@ -165,16 +191,8 @@ Sign det_sign(const Vec3& a, const Vec3& b, const Vec3& c) {
     return sign_of(r);
 }
 
-Sign minor_sign(const Vec3& a, const Vec3& b, int i, int j) {
+Sign minor_sign_exact(const Vec3& a, const Vec3& b, int i, int j) {
     assert(a.allFinite() && b.allFinite());
-    const double p = a[i] * b[j], q = a[j] * b[i];
-    const double value = p - q;
-    const double permanent = std::fabs(p) + std::fabs(q);
-    if (std::fabs(value) > kErrorBound * permanent && permanent > kMinPermanent &&
-        std::isfinite(permanent)) {
-        ++g_stats.filtered;
-        return sign_of(value);
-    }
     if (in_expansion_range(a[i]) && in_expansion_range(a[j]) && in_expansion_range(b[i]) &&
         in_expansion_range(b[j])) {
         ++g_stats.expansion;
@@ -187,13 +205,6 @@ Sign minor_sign(const Vec3& a, const Vec3& b, int i, int j) {
     return sign_of(mpq_class(a[i]) * mpq_class(b[j]) - mpq_class(a[j]) * mpq_class(b[i]));
 }
 
-Sign cross2_sign(const Vec2& a, const Vec2& b) {
-    return minor_sign(Vec3(a.x(), a.y(), 0.0), Vec3(b.x(), b.y(), 0.0), 0, 1);
-}
-
-bool parallel(const Vec3& a, const Vec3& b) {
-    return minor_sign(a, b, 1, 2) == Sign::Zero && minor_sign(a, b, 2, 0) == Sign::Zero &&
-           minor_sign(a, b, 0, 1) == Sign::Zero;
-}
+}  // namespace detail
 
 }  // namespace momentlab

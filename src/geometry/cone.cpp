@@ -24,8 +24,9 @@ Vec3 scaled_by_power_of_two(const Vec3& v) {
     return Vec3(std::ldexp(v.x(), 1 - e), std::ldexp(v.y(), 1 - e), std::ldexp(v.z(), 1 - e));
 }
 
-// For display: integer vectors are divided by the gcd of their coordinates (exact), others
-// are scaled by a power of two. Neither changes the direction.
+// For display: integer vectors are divided by the gcd of their coordinates (exact), others are
+// left as they are unless far from 1, then scaled by a power of two. Neither changes the
+// direction.
 Vec3 readable(const Vec3& v) {
     const double limit = 0x1p53;
     bool integral = true;
@@ -38,7 +39,8 @@ Vec3 readable(const Vec3& v) {
         if (g > 1) return v / static_cast<double>(g);
         return v;
     }
-    return scaled_by_power_of_two(v);
+    const double m = v.cwiseAbs().maxCoeff();
+    return m > 0x1p-64 && m < 0x1p64 ? v : scaled_by_power_of_two(v);
 }
 
 }  // namespace
@@ -55,10 +57,13 @@ ExactVector ExactVector::cross(const Vec3& u, const Vec3& v, int sign) {
     e.u_ = u;
     e.v_ = v;
     e.sign_ = sign >= 0 ? 1 : -1;
-    // Scaling the factors first keeps the rounded product finite for any finite input.
-    const Vec3 c = scaled_by_power_of_two(u).cross(scaled_by_power_of_two(v));
-    const Vec3 exact_if_small = u.cross(v);
-    const Vec3 raw = exact_if_small.allFinite() ? exact_if_small : c;
+    // The plain product is exact for small integers; if it overflows (or underflows to zero),
+    // scaling the factors first by powers of two keeps it finite for any finite input.
+    Vec3 raw = u.cross(v);
+    const double m = raw.cwiseAbs().maxCoeff();
+    if (!(m > 0x1p-900 && m < 0x1p900)) {
+        raw = scaled_by_power_of_two(u).cross(scaled_by_power_of_two(v));
+    }
     e.value_ = readable(raw) * static_cast<double>(e.sign_);
     return e;
 }
@@ -96,6 +101,20 @@ ExactVector ExactVector::signed_permuted(const Mat3& p) const {
         e.sign_ = sign_ * (p.determinant() > 0 ? 1 : -1);
     }
     return e;
+}
+
+Incidence Incidence::transposed(std::size_t columns) const {
+    std::vector<int> count(columns + 1, 0);
+    for (int i : indices_) ++count[static_cast<std::size_t>(i) + 1];
+    Incidence t;
+    t.offsets_.assign(columns + 1, 0);
+    for (std::size_t c = 0; c < columns; ++c) t.offsets_[c + 1] = t.offsets_[c] + count[c + 1];
+    t.indices_.resize(indices_.size());
+    std::vector<int> fill(t.offsets_.begin(), t.offsets_.end() - 1);
+    for (std::size_t j = 0; j < size(); ++j) {
+        for (int i : row(j)) t.indices_[static_cast<std::size_t>(fill[static_cast<std::size_t>(i)]++)] = static_cast<int>(j);
+    }
+    return t;
 }
 
 Cone::Cone() {
@@ -165,11 +184,7 @@ Cone Cone::dual() const {
                                                     : Representation::Generators;
     // Transpose the incidences: ray j of the dual (facet j of this) lies on facet i of the dual
     // (ray i of this) exactly when ray i lies on facet j here.
-    d.facet_rays_.assign(d.facets_.size(), {});
-    for (std::size_t j = 0; j < facet_rays_.size(); ++j) {
-        for (int i : facet_rays_[j]) d.facet_rays_[static_cast<std::size_t>(i)].push_back(static_cast<int>(j));
-    }
-    for (auto& list : d.facet_rays_) std::sort(list.begin(), list.end());
+    d.facet_rays_ = facet_rays_.transposed(rays_.size());
     return d;
 }
 
@@ -283,13 +298,14 @@ std::vector<Face> Cone::faces() const {
     out.push_back(Face{d, all_rays, {}});
     if (d == l) return out;  // a linear subspace has no other face
     for (std::size_t j = 0; j < facets_.size(); ++j) {
-        out.push_back(Face{d - 1, facet_rays_[j], {static_cast<int>(j)}});
+        const auto row = facet_rays_.row(j);
+        out.push_back(Face{d - 1, std::vector<int>(row.begin(), row.end()), {static_cast<int>(j)}});
     }
     if (d - l == 3) {
         for (std::size_t i = 0; i < rays_.size(); ++i) {
             Face f{1, {static_cast<int>(i)}, {}};
             for (std::size_t j = 0; j < facets_.size(); ++j) {
-                const auto& fr = facet_rays_[j];
+                const auto fr = facet_rays_.row(j);
                 if (std::find(fr.begin(), fr.end(), static_cast<int>(i)) != fr.end()) {
                     f.facets.push_back(static_cast<int>(j));
                 }

@@ -17,6 +17,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -26,7 +27,7 @@ namespace {
 
 struct Parts {
     std::vector<ExactVector> rays, lineality, facets, equations;
-    std::vector<std::vector<int>> facet_rays;
+    Incidence facet_rays;
 };
 
 ExactVector in(const Vec3& v) { return ExactVector::input(v); }
@@ -96,46 +97,86 @@ struct AngularOrder {
     }
 };
 
+// The vector travels with the item so that the exact passes after sorting read memory in
+// order (indexing back into the input was cache-bound: ~60 ns a predicate at 10^6 items).
 struct Item {
+    Vec3 v;
+    double key;  // floating-point pseudo-angle inside the half; only a hint for the sort
     int index;
     int half;
 };
 
-// Sorts items by angle; ties (same direction around the axis) by `closer_first`, if given.
+// A pseudo-angle, increasing with the angle inside one open half-plane, from coordinates
+// (a, b) along and across the reference direction (b > 0 in half 1, b < 0 in half 3).
+inline double pseudo_angle(double a, double b, int half) {
+    const double d = std::fabs(a) + std::fabs(b);
+    if (d == 0.0 || !std::isfinite(d)) return 0.0;
+    return half == 1 ? 1.0 - a / d : 1.0 + a / d;
+}
+
+// Groups of items of exactly equal angle: [begin, end) ranges, stored as 32-bit starts.
+class Groups {
+public:
+    void add(std::size_t begin) { starts_.push_back(static_cast<std::uint32_t>(begin)); }
+    void close(std::size_t end) { end_ = end; }
+    [[nodiscard]] std::size_t size() const { return starts_.size(); }
+    [[nodiscard]] std::pair<std::size_t, std::size_t> operator[](std::size_t i) const {
+        return {starts_[i], i + 1 < starts_.size() ? starts_[i + 1] : end_};
+    }
+
+private:
+    std::vector<std::uint32_t> starts_;
+    std::size_t end_ = 0;
+};
+
+// Sorts items by angle, ties (the same direction around the axis) by `closer_first`, and
+// returns the groups of exactly equal angle as [begin, end) ranges.
+// The floating-point keys put the items almost in order; an exact insertion pass then makes
+// the order exact in O(n + inversions), and runs of exactly equal angle are sorted by the
+// exact tie-break. Correct for any keys; fast when they are close to the truth.
 template <class Closer>
-void angular_sort(std::vector<Item>& items, const std::vector<Vec3>& g, const AngularOrder& ord,
-                  Closer closer_first) {
-    std::sort(items.begin(), items.end(), [&](const Item& a, const Item& b) {
-        if (a.half != b.half) return a.half < b.half;
-        const Vec3& u = g[static_cast<std::size_t>(a.index)];
-        const Vec3& v = g[static_cast<std::size_t>(b.index)];
-        if (a.half == 1 || a.half == 3) {
-            const Sign s = ord.orient(u, v);
-            if (s != Sign::Zero) return s == Sign::Positive;
-        }
-        return closer_first(u, v);
+Groups angular_sort(std::vector<Item>& items, const AngularOrder& ord, Closer closer_first) {
+    std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) {
+        return a.half != b.half ? a.half < b.half : a.key < b.key;
     });
-}
-
-bool same_angle(const Item& a, const Item& b, const std::vector<Vec3>& g, const AngularOrder& ord) {
-    if (a.half != b.half) return false;
-    if (a.half == 0 || a.half == 2) return true;
-    return ord.orient(g[static_cast<std::size_t>(a.index)], g[static_cast<std::size_t>(b.index)]) ==
-           Sign::Zero;
-}
-
-// Groups of equal angle, as [begin, end) ranges into the sorted items.
-std::vector<std::pair<std::size_t, std::size_t>> angle_groups(const std::vector<Item>& items,
-                                                              const std::vector<Vec3>& g,
-                                                              const AngularOrder& ord) {
-    std::vector<std::pair<std::size_t, std::size_t>> groups;
+    // compare(a, b): Negative if a comes first, Zero for the same angle, Positive after.
+    auto compare = [&](const Item& a, const Item& b) {
+        if (a.half != b.half) return a.half < b.half ? Sign::Negative : Sign::Positive;
+        if (a.half == 0 || a.half == 2) return Sign::Zero;
+        return -ord.orient(a.v, b.v);
+    };
+    // One exact comparison per neighbouring pair; an item found out of order is moved back
+    // (insertion), which is rare when the keys are good. `same[i]`: items i-1, i share an angle.
+    std::vector<char> same(items.size(), 0);
+    for (std::size_t i = 1; i < items.size(); ++i) {
+        Sign s = compare(items[i - 1], items[i]);
+        if (s == Sign::Positive) {
+            std::size_t j = i;
+            do {
+                std::swap(items[j], items[j - 1]);
+                --j;
+            } while (j > 0 && compare(items[j - 1], items[j]) == Sign::Positive);
+            for (std::size_t k = std::max<std::size_t>(j, 1); k <= i; ++k) {
+                same[k] = compare(items[k - 1], items[k]) == Sign::Zero;
+            }
+            if (j == 0) same[0] = 0;
+            continue;
+        }
+        same[i] = s == Sign::Zero;
+    }
+    Groups groups;
     std::size_t start = 0;
     for (std::size_t i = 1; i <= items.size(); ++i) {
-        if (i == items.size() || !same_angle(items[i - 1], items[i], g, ord)) {
-            groups.emplace_back(start, i);
-            start = i;
+        if (i < items.size() && same[i]) continue;
+        groups.add(start);
+        if (i - start > 1) {
+            std::sort(items.begin() + static_cast<std::ptrdiff_t>(start),
+                      items.begin() + static_cast<std::ptrdiff_t>(i),
+                      [&](const Item& a, const Item& b) { return closer_first(a.v, b.v); });
         }
+        start = i;
     }
+    groups.close(items.size());
     return groups;
 }
 
@@ -150,21 +191,25 @@ int gap_vs_pi(const Vec3& u, const Vec3& v, const AngularOrder& ord) {
 
 // ---------------------------------------------------------------------------------------------
 // Rank 2: the generators span the plane of a and b.
-Parts build_planar(const std::vector<Vec3>& g, const Vec3& a, const Vec3& b) {
+Parts build_planar(std::span<const Vec3> g, const Vec3& a, const Vec3& b) {
     Parts parts;
     parts.equations.push_back(ExactVector::cross(a, b, 1));
     AngularOrder ord{AngularOrder::Mode::PlaneAxis, nonzero_cross_axis(a, b), Vec3::Zero(), a,
                      Vec3::Zero()};
     std::vector<Item> items;
     items.reserve(g.size());
-    for (std::size_t i = 0; i < g.size(); ++i) items.push_back({static_cast<int>(i), ord.half(g[i])});
-    angular_sort(items, g, ord, [](const Vec3&, const Vec3&) { return false; });
-    const auto groups = angle_groups(items, g, ord);
+    const int ci = (ord.axis + 1) % 3, cj = (ord.axis + 2) % 3;
+    const double flip = a.cross(b)[ord.axis] < 0 ? -1.0 : 1.0;  // hint only
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        const int half = ord.half(g[i]);
+        const double along = a[ci] * g[i][ci] + a[cj] * g[i][cj];
+        const double across = flip * (a[ci] * g[i][cj] - a[cj] * g[i][ci]);
+        items.push_back({g[i], pseudo_angle(along, across, half), static_cast<int>(i), half});
+    }
+    const Groups groups = angular_sort(items, ord, [](const Vec3&, const Vec3&) { return false; });
     const std::size_t m = groups.size();
     assert(m >= 2);
-    auto rep = [&](std::size_t group) -> const Vec3& {
-        return g[static_cast<std::size_t>(items[groups[group % m].first].index)];
-    };
+    auto rep = [&](std::size_t group) -> const Vec3& { return items[groups[group % m].first].v; };
     std::size_t wide = m, flat = m;
     for (std::size_t i = 0; i < m; ++i) {
         const int c = gap_vs_pi(rep(i), rep(i + 1), ord);
@@ -176,7 +221,8 @@ Parts build_planar(const std::vector<Vec3>& g, const Vec3& a, const Vec3& b) {
         const int k = ord.axis;
         parts.rays = {in(r1), in(r2)};
         parts.facets = {in(exact_normal_towards(r1, r2, k)), in(exact_normal_towards(r2, r1, k))};
-        parts.facet_rays = {{0}, {1}};
+        parts.facet_rays.add_row({0});
+        parts.facet_rays.add_row({1});
         return parts;
     }
     if (flat != m) {  // a half-plane bounded by the line of the two antipodal groups
@@ -186,7 +232,7 @@ Parts build_planar(const std::vector<Vec3>& g, const Vec3& a, const Vec3& b) {
         parts.rays = {in(off)};
         parts.lineality = {in(l)};
         parts.facets = {in(exact_normal_towards(l, off, ord.axis))};
-        parts.facet_rays = {{}};
+        parts.facet_rays.add_row({});
         return parts;
     }
     parts.lineality = {in(a), in(b)};  // the whole plane
@@ -201,7 +247,7 @@ struct PivotAnalysis {
     int retry_pivot = -1;   // a generator worth trying as the pivot next
 };
 
-PivotAnalysis analyse_pivot(const std::vector<Vec3>& g, std::size_t pivot, const Vec3& witness_hint) {
+PivotAnalysis analyse_pivot(std::span<const Vec3> g, std::size_t pivot, const Vec3& witness_hint) {
     PivotAnalysis out;
     const Vec3& p = g[pivot];
     std::vector<Item> items;
@@ -214,7 +260,7 @@ PivotAnalysis analyse_pivot(const std::vector<Vec3>& g, std::size_t pivot, const
             continue;
         }
         if (reference < 0) reference = static_cast<int>(i);
-        items.push_back({static_cast<int>(i), 0});
+        items.push_back({g[i], 0.0, static_cast<int>(i), 0});
     }
     if (antiparallel) return out;
     const Vec3& r = g[static_cast<std::size_t>(reference)];
@@ -228,7 +274,15 @@ PivotAnalysis analyse_pivot(const std::vector<Vec3>& g, std::size_t pivot, const
         }
     }
     AngularOrder ord{AngularOrder::Mode::Pivot, 0, p, r, witness};
-    for (Item& it : items) it.half = ord.half(g[static_cast<std::size_t>(it.index)]);
+    // An orthonormal frame (e1, e2) of the quotient by p, e1 along r: hints for the keys.
+    const Vec3 ph = p.normalized();
+    const Vec3 e1 = (r - r.dot(ph) * ph).normalized();
+    const Vec3 e2 = ph.cross(e1);
+    for (Item& it : items) {
+        const Vec3& u = it.v;
+        it.half = ord.half(u);
+        it.key = pseudo_angle(u.dot(e1), u.dot(e2), it.half);
+    }
     // Ties: nearer to p (along the great circle through p) first. In the plane of p and u,
     // u is nearer than v iff u lies inside cone(p, v).
     auto closer_first = [&](const Vec3& u, const Vec3& v) {
@@ -237,12 +291,9 @@ PivotAnalysis analyse_pivot(const std::vector<Vec3>& g, std::size_t pivot, const
         const Sign uv = cross_component_sign(u, v, k);
         return uv != Sign::Zero && uv == pv;
     };
-    angular_sort(items, g, ord, closer_first);
-    const auto groups = angle_groups(items, g, ord);
+    const Groups groups = angular_sort(items, ord, closer_first);
     const std::size_t m = groups.size();
-    auto rep = [&](std::size_t group) -> const Vec3& {
-        return g[static_cast<std::size_t>(items[groups[group % m].first].index)];
-    };
+    auto rep = [&](std::size_t group) -> const Vec3& { return items[groups[group % m].first].v; };
     std::size_t wide = m, flat = m;
     for (std::size_t i = 0; i < m; ++i) {
         const int c = m == 1 ? 1 : gap_vs_pi(rep(i), rep(i + 1), ord);
@@ -258,41 +309,43 @@ PivotAnalysis analyse_pivot(const std::vector<Vec3>& g, std::size_t pivot, const
         return out;
     }
     // Graham's scan: p, then the groups from just after the gap to just before it.
-    std::vector<int> stack = {static_cast<int>(pivot)};
-    auto push = [&](int idx) {
-        const Vec3& x = g[static_cast<std::size_t>(idx)];
-        while (stack.size() >= 2 &&
-               det_sign(g[static_cast<std::size_t>(stack[stack.size() - 2])],
-                        g[static_cast<std::size_t>(stack.back())], x) != Sign::Positive) {
+    // The stack holds positions in `items` (-1 for p), which the scan visits in order.
+    std::vector<std::int64_t> stack = {-1};
+    auto at = [&](std::int64_t k) -> const Vec3& { return k < 0 ? p : items[static_cast<std::size_t>(k)].v; };
+    auto push = [&](std::size_t k) {
+        const Vec3& x = items[k].v;
+        while (stack.size() >= 2 && det_sign(at(stack[stack.size() - 2]), at(stack.back()), x) != Sign::Positive) {
             stack.pop_back();
         }
-        stack.push_back(idx);
+        stack.push_back(static_cast<std::int64_t>(k));
     };
     for (std::size_t t = 1; t <= m; ++t) {
         const auto [b, e] = groups[(wide + t) % m];
-        for (std::size_t i = b; i < e; ++i) push(items[i].index);
+        for (std::size_t i = b; i < e; ++i) push(i);
     }
-    while (stack.size() >= 3 &&
-           det_sign(g[static_cast<std::size_t>(stack[stack.size() - 2])],
-                    g[static_cast<std::size_t>(stack.back())], p) != Sign::Positive) {
+    while (stack.size() >= 3 && det_sign(at(stack[stack.size() - 2]), at(stack.back()), p) != Sign::Positive) {
         stack.pop_back();
     }
     assert(stack.size() >= 3);
     out.kind = PivotAnalysis::Case::Pointed;
-    out.hull = std::move(stack);
+    out.hull.reserve(stack.size());
+    for (std::int64_t k : stack) out.hull.push_back(k < 0 ? static_cast<int>(pivot) : items[static_cast<std::size_t>(k)].index);
     return out;
 }
 
-Parts pointed_from_cycle(const std::vector<Vec3>& g, const std::vector<int>& cycle) {
+Parts pointed_from_cycle(std::span<const Vec3> g, const std::vector<int>& cycle) {
     Parts parts;
     const std::size_t k = cycle.size();
+    parts.rays.reserve(k);
+    parts.facets.reserve(k);
+    parts.facet_rays.reserve(k, 2);
     for (std::size_t i = 0; i < k; ++i) {
         const Vec3& a = g[static_cast<std::size_t>(cycle[i])];
         const Vec3& b = g[static_cast<std::size_t>(cycle[(i + 1) % k])];
         parts.rays.push_back(in(a));
         parts.facets.push_back(ExactVector::cross(a, b, 1));
-        parts.facet_rays.push_back({static_cast<int>(i), static_cast<int>((i + 1) % k)});
-        std::sort(parts.facet_rays.back().begin(), parts.facet_rays.back().end());
+        const int a_i = static_cast<int>(i), b_i = static_cast<int>((i + 1) % k);
+        parts.facet_rays.add_row({std::min(a_i, b_i), std::max(a_i, b_i)});
     }
     return parts;
 }
@@ -302,7 +355,7 @@ Parts pointed_from_cycle(const std::vector<Vec3>& g, const std::vector<int>& cyc
 // from the simplicial cone of three independent generators. The polygon is a cyclic list of
 // constraints c_0 .. c_{m-1}; its vertex i is c_i x c_{i+1}; it always lies in an open
 // hemisphere (inside the initial simplicial cone), so these vertices are never antipodal.
-Parts build_by_dual_clip(const std::vector<Vec3>& g, std::size_t i0, std::size_t i1, std::size_t i2) {
+Parts build_by_dual_clip(std::span<const Vec3> g, std::size_t i0, std::size_t i1, std::size_t i2) {
     std::vector<int> poly;
     if (det_sign(g[i0], g[i1], g[i2]) == Sign::Positive) {
         poly = {static_cast<int>(i0), static_cast<int>(i1), static_cast<int>(i2)};
@@ -368,7 +421,7 @@ Parts build_by_dual_clip(const std::vector<Vec3>& g, std::size_t i0, std::size_t
         parts.rays = {in(*off)};
         parts.lineality = {in(c0), in(G(poly[t]))};
         parts.facets = {normal};
-        parts.facet_rays = {{}};
+        parts.facet_rays.add_row({});
         return parts;
     }
     // The vertex at the end of edge t is c_t x c_{t+1}.
@@ -386,7 +439,7 @@ Parts build_by_dual_clip(const std::vector<Vec3>& g, std::size_t i0, std::size_t
             const Vec3& ray = parallel(c1, line) ? G(poly[t]) : c1;
             parts.facets.push_back(facet);
             parts.rays.push_back(in(ray));
-            parts.facet_rays.push_back({static_cast<int>(s)});
+            parts.facet_rays.add_row({static_cast<int>(s)});
         }
         return parts;
     }
@@ -397,11 +450,11 @@ Parts build_by_dual_clip(const std::vector<Vec3>& g, std::size_t i0, std::size_t
 
 // A floating-point guess of an extreme ray: the generator farthest in angle from the mean
 // direction. Only the running time depends on it; every decision after it is exact.
-std::size_t guess_extreme(const std::vector<Vec3>& g) {
+std::size_t guess_extreme(std::span<const Vec3> g) {
     Vec3 mean = Vec3::Zero();
     for (const Vec3& v : g) mean += v / v.norm();
     std::size_t best = 0;
-    double best_cos = 2.0;
+    double best_cos = std::numeric_limits<double>::infinity();  // mean is not normalised
     for (std::size_t i = 0; i < g.size(); ++i) {
         const double c = mean.dot(g[i]) / g[i].norm();
         if (c < best_cos) {
@@ -412,7 +465,7 @@ std::size_t guess_extreme(const std::vector<Vec3>& g) {
     return best;
 }
 
-Parts build_spatial(const std::vector<Vec3>& g, std::size_t ia, std::size_t ib, std::size_t ic) {
+Parts build_spatial(std::span<const Vec3> g, std::size_t ia, std::size_t ib, std::size_t ic) {
     std::size_t pivot = g.size() > 64 ? guess_extreme(g) : ia;
     for (int attempt = 0; attempt < 2; ++attempt) {
         const PivotAnalysis pa = analyse_pivot(g, pivot, g[ic]);
@@ -426,10 +479,14 @@ Parts build_spatial(const std::vector<Vec3>& g, std::size_t ia, std::size_t ib, 
 }  // namespace
 
 Cone ConeBuilder::build(std::span<const Vec3> generators) {
-    std::vector<Vec3> g;
-    g.reserve(generators.size());
-    for (const Vec3& v : generators) {
-        if (!is_zero(v)) g.push_back(v);
+    // Zero vectors generate nothing; copy the input only when it holds some.
+    std::vector<Vec3> nonzero;
+    std::span<const Vec3> g = generators;
+    if (std::any_of(generators.begin(), generators.end(), [](const Vec3& v) { return is_zero(v); })) {
+        for (const Vec3& v : generators) {
+            if (!is_zero(v)) nonzero.push_back(v);
+        }
+        g = nonzero;
     }
     Cone cone;  // {0}
     if (g.empty()) return cone;
@@ -452,7 +509,7 @@ Cone ConeBuilder::build(std::span<const Vec3> generators) {
         } else {
             parts.rays = {in(a)};
             parts.facets = {in(a)};
-            parts.facet_rays = {{}};
+            parts.facet_rays.add_row({});
         }
     } else {
         std::size_t ic = g.size();

@@ -22,6 +22,11 @@ nlohmann::json list(const std::vector<T>& vs) {
 }  // namespace
 
 nlohmann::json to_json(const Cone& cone) {
+    nlohmann::json incidence = nlohmann::json::array();
+    for (std::size_t j = 0; j < cone.facet_rays().size(); ++j) {
+        const auto row = cone.facet_rays().row(j);
+        incidence.push_back(std::vector<int>(row.begin(), row.end()));
+    }
     return {{"kind", cone.kind()},
             {"dimension", cone.dimension()},
             {"lineality_dimension", cone.lineality_dimension()},
@@ -29,7 +34,7 @@ nlohmann::json to_json(const Cone& cone) {
             {"lineality", list(cone.lineality())},
             {"facets", list(cone.facets())},
             {"equations", list(cone.equations())},
-            {"facet_rays", cone.facet_rays()}};
+            {"facet_rays", incidence}};
 }
 
 nlohmann::json to_json(const Region& region) {

@@ -11,6 +11,8 @@
 /// involved anywhere. Preconditions: all arguments finite (checked by the callers that take
 /// user input; asserted here in debug builds).
 
+#include <cmath>
+
 #include "momentlab/core/sign.hpp"
 #include "momentlab/core/vec.hpp"
 
@@ -21,29 +23,72 @@ constexpr Sign sign_of(double x) {
     return x > 0 ? Sign::Positive : (x < 0 ? Sign::Negative : Sign::Zero);
 }
 
+namespace detail {
+// The exact paths, called when the inline floating-point filter cannot decide.
+Sign dot_sign_exact(const Vec3& a, const Vec3& b);
+Sign det_sign_exact(const Vec3& a, const Vec3& b, const Vec3& c);
+Sign minor_sign_exact(const Vec3& a, const Vec3& b, int i, int j);
+
+// Forward error bound of the straightforward evaluations relative to the sum of absolute
+// values of the terms. Shewchuk's orient3d bound (7 + 56 eps) eps covers the 3x3 determinant
+// (our inputs are exact, which only helps); dot products and 2x2 minors have smaller bounds and
+// use the same constant. The filter is trusted only far from underflow, so absolute errors
+// of denormal products are negligible, and only when nothing overflowed.
+inline constexpr double kErrorBound = 8.0 * 0x1p-53;
+inline constexpr double kMinPermanent = 0x1p-600;
+
+inline bool filter_decides(double value, double permanent) {
+    return std::fabs(value) > kErrorBound * permanent && permanent > kMinPermanent &&
+           permanent < 0x1p1000;
+}
+}  // namespace detail
+
 /// The exact sign of the dot product a . b.
-[[nodiscard]] Sign dot_sign(const Vec3& a, const Vec3& b);
+[[nodiscard]] inline Sign dot_sign(const Vec3& a, const Vec3& b) {
+    const double p0 = a.x() * b.x(), p1 = a.y() * b.y(), p2 = a.z() * b.z();
+    const double value = p0 + p1 + p2;
+    if (detail::filter_decides(value, std::fabs(p0) + std::fabs(p1) + std::fabs(p2))) return sign_of(value);
+    return detail::dot_sign_exact(a, b);
+}
 
 /// The exact sign of det[a b c] = a . (b x c) (the orientation of three vectors from the origin).
-[[nodiscard]] Sign det_sign(const Vec3& a, const Vec3& b, const Vec3& c);
+[[nodiscard]] inline Sign det_sign(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const double m0 = b.y() * c.z(), m1 = b.z() * c.y();
+    const double m2 = b.z() * c.x(), m3 = b.x() * c.z();
+    const double m4 = b.x() * c.y(), m5 = b.y() * c.x();
+    const double value = a.x() * (m0 - m1) + a.y() * (m2 - m3) + a.z() * (m4 - m5);
+    const double permanent = std::fabs(a.x()) * (std::fabs(m0) + std::fabs(m1)) +
+                             std::fabs(a.y()) * (std::fabs(m2) + std::fabs(m3)) +
+                             std::fabs(a.z()) * (std::fabs(m4) + std::fabs(m5));
+    if (detail::filter_decides(value, permanent)) return sign_of(value);
+    return detail::det_sign_exact(a, b, c);
+}
 
 /// The exact sign of the 2x2 minor a[i]*b[j] - a[j]*b[i].
-[[nodiscard]] Sign minor_sign(const Vec3& a, const Vec3& b, int i, int j);
+[[nodiscard]] inline Sign minor_sign(const Vec3& a, const Vec3& b, int i, int j) {
+    const double p = a[i] * b[j], q = a[j] * b[i];
+    if (detail::filter_decides(p - q, std::fabs(p) + std::fabs(q))) return sign_of(p - q);
+    return detail::minor_sign_exact(a, b, i, j);
+}
 
 /// The exact sign of the planar cross product a.x*b.y - a.y*b.x.
-[[nodiscard]] Sign cross2_sign(const Vec2& a, const Vec2& b);
+[[nodiscard]] inline Sign cross2_sign(const Vec2& a, const Vec2& b) {
+    return minor_sign(Vec3(a.x(), a.y(), 0.0), Vec3(b.x(), b.y(), 0.0), 0, 1);
+}
 
 /// True when a and b are exactly parallel (a x b = 0), including when either is zero.
-[[nodiscard]] bool parallel(const Vec3& a, const Vec3& b);
+[[nodiscard]] inline bool parallel(const Vec3& a, const Vec3& b) {
+    return minor_sign(a, b, 1, 2) == Sign::Zero && minor_sign(a, b, 2, 0) == Sign::Zero &&
+           minor_sign(a, b, 0, 1) == Sign::Zero;
+}
 
 /// True when every coordinate of v is exactly zero.
 [[nodiscard]] inline bool is_zero(const Vec3& v) {
     return v.x() == 0.0 && v.y() == 0.0 && v.z() == 0.0;
 }
 
-/// Counters of how predicates were decided, for benchmarks and tests (per thread).
+/// Counters of the calls the floating-point filter could not decide (per thread).
 struct PredicateStats {
-    long filtered = 0;   ///< decided by the floating-point filter
     long expansion = 0;  ///< decided by an error-free expansion
     long gmp = 0;        ///< decided by GMP rationals (extreme exponents)
 };

@@ -4,6 +4,7 @@
 /// Closed polyhedral convex cones of R^3 (planar wrenches, twists, covectors), kept in both
 /// representations at once, each minimal (DESIGN, "The mathematics in one page").
 
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <vector>
@@ -45,6 +46,34 @@ private:
     Vec3 v_ = Vec3::Zero();
     int sign_ = 1;
     bool constructed_ = false;
+};
+
+/// Which extreme rays lie on each facet, stored as compressed rows (one allocation for all).
+class Incidence {
+public:
+    /// Appends the row of the next facet: indices of the rays on it, increasing.
+    void add_row(std::initializer_list<int> rays) { add_row(std::span<const int>(rays.begin(), rays.size())); }
+    /// Reserves room for `rows` rows of `per_row` rays on average.
+    void reserve(std::size_t rows, std::size_t per_row) {
+        offsets_.reserve(rows + 1);
+        indices_.reserve(rows * per_row);
+    }
+    void add_row(std::span<const int> rays) {
+        indices_.insert(indices_.end(), rays.begin(), rays.end());
+        offsets_.push_back(static_cast<int>(indices_.size()));
+    }
+    /// The rays on facet j.
+    [[nodiscard]] std::span<const int> row(std::size_t j) const {
+        return {indices_.data() + offsets_[j], static_cast<std::size_t>(offsets_[j + 1] - offsets_[j])};
+    }
+    /// The number of facets.
+    [[nodiscard]] std::size_t size() const { return offsets_.size() - 1; }
+    /// The incidence seen from the other side: for each of `columns` rays, the facets through it.
+    [[nodiscard]] Incidence transposed(std::size_t columns) const;
+
+private:
+    std::vector<int> offsets_{0};
+    std::vector<int> indices_;
 };
 
 /// Which representation of a cone was given exactly; the other one is computed from it.
@@ -100,7 +129,7 @@ public:
     [[nodiscard]] const std::vector<ExactVector>& facets() const { return facets_; }
     [[nodiscard]] const std::vector<ExactVector>& equations() const { return equations_; }
     /// For each facet, the indices of the extreme rays lying on it.
-    [[nodiscard]] const std::vector<std::vector<int>>& facet_rays() const { return facet_rays_; }
+    [[nodiscard]] const Incidence& facet_rays() const { return facet_rays_; }
     /// Which representation is exact input.
     [[nodiscard]] Representation exact_representation() const { return exact_; }
 
@@ -149,7 +178,7 @@ private:
     std::vector<ExactVector> lineality_;
     std::vector<ExactVector> facets_;
     std::vector<ExactVector> equations_;
-    std::vector<std::vector<int>> facet_rays_;
+    Incidence facet_rays_;
     Representation exact_ = Representation::Generators;
 
     friend struct ConeBuilder;
