@@ -21,7 +21,7 @@ struct LabelOptions {
 
 std::string fmt(double x) {
     std::ostringstream s;
-    s << std::setprecision(10) << x;
+    s << std::setprecision(10) << (x == 0.0 ? 0.0 : x);  // no "-0"
     return s.str();
 }
 

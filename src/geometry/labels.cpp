@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace momentlab {
 namespace {
@@ -106,17 +107,18 @@ std::vector<Vec2> Region::clipped(const Box& box) const {
 
 Labels::Labels(Cone forces)
     : forces_(std::move(forces)),
-      points_(forces_.dual().signed_permuted(functionals_to_points())) {
+      dual_(forces_.dual()),
+      points_(dual_.signed_permuted(functionals_to_points())) {
     const Cone upper = Cone::half_space(Vec3::UnitZ());
     plus_ = sheet(intersection(points_, upper));
     minus_ = sheet(intersection(points_.negated(), upper));
 }
 
 Label Labels::at(const Vec2& point) const {
-    const Cone dual = forces_.dual();
+    if (!point.allFinite()) throw std::invalid_argument("Labels::at: the point must be finite");
     const Vec3 lambda = moment_functional(point);
-    const bool plus = dual.has(lambda);
-    const bool minus = dual.has(-lambda);
+    const bool plus = dual_.has(lambda);
+    const bool minus = dual_.has(-lambda);
     if (plus && minus) return Label::Both;
     if (plus) return Label::Plus;
     if (minus) return Label::Minus;

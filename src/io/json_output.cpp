@@ -3,8 +3,9 @@
 namespace momentlab {
 namespace {
 
-nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
-nlohmann::json vec(const Vec2& v) { return {v.x(), v.y()}; }
+double clean(double x) { return x == 0.0 ? 0.0 : x; }  // no -0 in the output
+nlohmann::json vec(const Vec3& v) { return {clean(v.x()), clean(v.y()), clean(v.z())}; }
+nlohmann::json vec(const Vec2& v) { return {clean(v.x()), clean(v.y())}; }
 
 template <class T>
 nlohmann::json list(const std::vector<T>& vs) {

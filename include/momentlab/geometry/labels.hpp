@@ -74,6 +74,7 @@ public:
 
 private:
     Cone forces_;
+    Cone dual_;
     Cone points_;
     Region plus_;
     Region minus_;
