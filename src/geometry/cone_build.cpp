@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -241,11 +242,37 @@ Parts build_planar(std::span<const Vec3> g, const Vec3& a, const Vec3& b) {
 
 // ---------------------------------------------------------------------------------------------
 // Rank 3, pointed, with a known extreme ray p: Graham's scan around p.
+Parts pointed_from_cycle(std::span<const Vec3> g, const std::vector<int>& cycle);
+
+// What the angular order around a pivot p tells:
+//  * a gap wider than pi: p is on an edge of the cone. Without -p among the generators p is an
+//    extreme ray of a pointed cone (Graham's scan); with it, the cone is span(p) + a wedge.
+//  * a gap of exactly pi: p lies inside a 2-face F (the plane of the two boundary groups). With
+//    -p the cone is a half-space. Otherwise F, in its plane, is a wedge (retry from its
+//    extreme generator a*, a vertex of a pointed cone), a half-plane (retry from a*, which
+//    then spans the lineality) or the plane (a half-space).
+//  * all gaps below pi: p is interior; with -p the cone is R^3, otherwise undecided.
 struct PivotAnalysis {
-    enum class Case { Pointed, Other } kind = Case::Other;
-    std::vector<int> hull;  // extreme rays, counter-clockwise, when Pointed
-    int retry_pivot = -1;   // a generator worth trying as the pivot next
+    std::optional<Parts> parts;  // the cone, when decided
+    int retry_pivot = -1;        // a generator worth trying as the pivot next
+    bool interior = false;       // p lies in the interior of the cone
 };
+
+Parts whole_space_parts() {
+    Parts parts;
+    parts.lineality = {in(Vec3::UnitX()), in(Vec3::UnitY()), in(Vec3::UnitZ())};
+    return parts;
+}
+
+// The half-space {x : det(p, b, x) >= 0} with lineality span(p, l) and a generator w off it.
+Parts half_space_parts(const Vec3& p, const Vec3& b, const Vec3& l, const Vec3& w) {
+    Parts parts;
+    parts.rays = {in(w)};
+    parts.lineality = {in(p), in(l)};
+    parts.facets = {ExactVector::cross(p, b, 1)};
+    parts.facet_rays.add_row({});
+    return parts;
+}
 
 PivotAnalysis analyse_pivot(std::span<const Vec3> g, std::size_t pivot, const Vec3& witness_hint) {
     PivotAnalysis out;
@@ -262,7 +289,6 @@ PivotAnalysis analyse_pivot(std::span<const Vec3> g, std::size_t pivot, const Ve
         if (reference < 0) reference = static_cast<int>(i);
         items.push_back({g[i], 0.0, static_cast<int>(i), 0});
     }
-    if (antiparallel) return out;
     const Vec3& r = g[static_cast<std::size_t>(reference)];
     Vec3 witness = witness_hint;
     if (det_sign(p, r, witness) == Sign::Zero) {
@@ -300,12 +326,47 @@ PivotAnalysis analyse_pivot(std::span<const Vec3> g, std::size_t pivot, const Ve
         if (c > 0) wide = i;
         if (c == 0 && flat == m) flat = i;
     }
-    if (wide == m) {
-        if (flat != m) {
-            // p lies inside a face: retry from the generator of that face farthest from p.
-            const auto [b, e] = groups[flat];
-            out.retry_pivot = items[e - 1].index;
+    if (wide == m && flat == m) {
+        if (antiparallel) {
+            out.parts = whole_space_parts();
+        } else {
+            out.interior = true;
         }
+        return out;
+    }
+    if (wide == m) {
+        // The occupied side runs counter-clockwise from group flat + 1 (direction -u) to group
+        // flat (u): every generator has det(p, b, x) >= 0. m >= 3 (rank 3), so group
+        // flat + 2 lies strictly inside.
+        const Vec3& b = rep(flat + 1);
+        const Vec3& w = rep(flat + 2);
+        const Item& a_far = items[groups[flat].second - 1];
+        const Item& b_far = items[groups[(flat + 1) % m].second - 1];
+        if (antiparallel) {
+            out.parts = half_space_parts(p, b, rep(flat), w);
+            return out;
+        }
+        // Orientation inside the face's plane, seen from w: F = cone(b*, p, a*) is pointed iff
+        // turning from b* to a* goes the same way as from b* to p.
+        const Sign to_p = det_sign(b_far.v, p, w);
+        const Sign to_a = det_sign(b_far.v, a_far.v, w);
+        if (to_a == -to_p) {
+            out.parts = half_space_parts(p, b, a_far.v, w);
+        } else {
+            out.retry_pivot = a_far.index;
+        }
+        return out;
+    }
+    if (antiparallel) {  // span(p) + the wedge from the group after the gap to the one before
+        const Vec3& r1 = rep(wide + 1);
+        const Vec3& r2 = rep(wide);
+        Parts parts;
+        parts.lineality = {in(p)};
+        parts.rays = {in(r1), in(r2)};
+        parts.facets = {ExactVector::cross(p, r1, 1), ExactVector::cross(p, r2, -1)};
+        parts.facet_rays.add_row({0});
+        parts.facet_rays.add_row({1});
+        out.parts = std::move(parts);
         return out;
     }
     // Graham's scan: p, then the groups from just after the gap to just before it.
@@ -327,9 +388,10 @@ PivotAnalysis analyse_pivot(std::span<const Vec3> g, std::size_t pivot, const Ve
         stack.pop_back();
     }
     assert(stack.size() >= 3);
-    out.kind = PivotAnalysis::Case::Pointed;
-    out.hull.reserve(stack.size());
-    for (std::int64_t k : stack) out.hull.push_back(k < 0 ? static_cast<int>(pivot) : items[static_cast<std::size_t>(k)].index);
+    std::vector<int> hull;
+    hull.reserve(stack.size());
+    for (std::int64_t k : stack) hull.push_back(k < 0 ? static_cast<int>(pivot) : items[static_cast<std::size_t>(k)].index);
+    out.parts = pointed_from_cycle(g, hull);
     return out;
 }
 
@@ -448,15 +510,15 @@ Parts build_by_dual_clip(std::span<const Vec3> g, std::size_t i0, std::size_t i1
     return pointed_from_cycle(g, cycle);
 }
 
-// A floating-point guess of an extreme ray: the generator farthest in angle from the mean
-// direction. Only the running time depends on it; every decision after it is exact.
-std::size_t guess_extreme(std::span<const Vec3> g) {
-    Vec3 mean = Vec3::Zero();
-    for (const Vec3& v : g) mean += v / v.norm();
+// Floating-point guesses of an extreme ray; only the running time depends on them, every
+// decision after them is exact. The generator farthest in angle from a direction d: when all
+// generators lie within 90 degrees of d it is a vertex of their spherical hull (the angular
+// distance from d is convex there), up to rounding.
+std::size_t farthest_from(std::span<const Vec3> g, const Vec3& d) {
     std::size_t best = 0;
-    double best_cos = std::numeric_limits<double>::infinity();  // mean is not normalised
+    double best_cos = std::numeric_limits<double>::infinity();  // d need not be a unit vector
     for (std::size_t i = 0; i < g.size(); ++i) {
-        const double c = mean.dot(g[i]) / g[i].norm();
+        const double c = d.dot(g[i]) / g[i].norm();
         if (c < best_cos) {
             best_cos = c;
             best = i;
@@ -465,18 +527,44 @@ std::size_t guess_extreme(std::span<const Vec3> g) {
     return best;
 }
 
+// The mean direction of the generators is inside the cone; the farthest from it is the guess.
+std::size_t guess_extreme(std::span<const Vec3> g) {
+    Vec3 mean = Vec3::Zero();
+    for (const Vec3& v : g) mean += v / v.norm();
+    return farthest_from(g, mean);
+}
+
 Parts build_spatial(std::span<const Vec3> g, std::size_t ia, std::size_t ib, std::size_t ic) {
+    // At most three analyses: a face retry always ends in a decided case; an interior pivot
+    // gets one more guess, the generator most opposite to it.
     std::size_t pivot = g.size() > 64 ? guess_extreme(g) : ia;
-    for (int attempt = 0; attempt < 2; ++attempt) {
-        const PivotAnalysis pa = analyse_pivot(g, pivot, g[ic]);
-        if (pa.kind == PivotAnalysis::Case::Pointed) return pointed_from_cycle(g, pa.hull);
-        if (pa.retry_pivot < 0) break;
-        pivot = static_cast<std::size_t>(pa.retry_pivot);
+    bool second_guess = false;
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        if (attempt > 0) ++ConeBuilder::stats().retries;
+        PivotAnalysis pa = analyse_pivot(g, pivot, g[ic]);
+        if (pa.parts) {
+            ++ConeBuilder::stats().by_pivot;
+            return std::move(*pa.parts);
+        }
+        if (pa.retry_pivot >= 0) {
+            pivot = static_cast<std::size_t>(pa.retry_pivot);
+        } else if (pa.interior && !second_guess) {
+            second_guess = true;
+            pivot = farthest_from(g, g[pivot]);
+        } else {
+            break;
+        }
     }
+    ++ConeBuilder::stats().dual_clip;
     return build_by_dual_clip(g, ia, ib, ic);
 }
 
 }  // namespace
+
+ConePathStats& ConeBuilder::stats() {
+    thread_local ConePathStats stats;
+    return stats;
+}
 
 Cone ConeBuilder::build(std::span<const Vec3> generators) {
     // Zero vectors generate nothing; copy the input only when it holds some.

@@ -62,6 +62,32 @@ TEST(Cone, OrthantHasCoordinateFacets) {
     EXPECT_EQ(c.faces().size(), 8u);  // itself, 3 facets, 3 rays, {0}
 }
 
+TEST(Cone, FaceLatticeOfEveryKind) {
+    // Faces of a cone with lineality L are L + the faces of the pointed cone C / L.
+    struct Case {
+        Cone cone;
+        std::size_t faces;
+    };
+    const Case cases[] = {
+        {gen({}), 1},                       // {0}
+        {gen({X}), 2},                      // ray: itself, {0}
+        {gen({X, -X}), 1},                  // line
+        {gen({X, Y}), 4},                   // wedge: itself, 2 rays, {0}
+        {gen({X, -X, Y}), 2},               // half-plane: itself, its line
+        {gen({X, Y, -X - Y}), 1},           // plane
+        {gen({X, Y, Z, Vec3(1, 1, -1)}), 10},  // 4 rays: itself, 4 facets, 4 rays, {0}
+        {gen({X, -X, Y, Z}), 4},            // wedge x line: itself, 2 facets, the line
+        {gen({X, -X, Y, -Y, Z}), 2},        // half-space: itself, its plane
+        {Cone::whole_space(), 1},
+    };
+    for (const Case& c : cases) {
+        const auto faces = c.cone.faces();
+        EXPECT_EQ(faces.size(), c.faces) << c.cone.kind();
+        EXPECT_EQ(faces.front().dimension, c.cone.dimension());
+        EXPECT_EQ(faces.back().dimension, c.faces == 1 ? c.cone.dimension() : c.cone.lineality_dimension());
+    }
+}
+
 TEST(Cone, HalfSpaceAndWedgeTimesLineHaveTheirHandNormals) {
     const Cone h = gen({X, -X, Y, -Y, 3 * Z + X});
     ASSERT_EQ(h.facets().size(), 1u);

@@ -2,10 +2,12 @@
 // every result checked against cddlib in exact rational mode.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 #include "../common/random_inputs.hpp"
 #include "cone_checks.hpp"
+#include "geometry/cone_build.hpp"
 #include "momentlab/geometry/labels.hpp"
 
 namespace momentlab {
@@ -135,6 +137,78 @@ TEST(ConeLaws, AgreeWithExactOracleOnRandomAndDegenerateCones) {
                           "wedge x line", "half-space", "R^3"}) {
         EXPECT_GT(kinds[k], 0) << "no random cone of kind " << k;
     }
+}
+
+// Every face: its cone has the stated dimension, and a point of its relative interior (the sum
+// of its rays) lies exactly on the facets the face lists and strictly inside the others.
+TEST(ConeLaws, FacesAreConsistentWithExactIncidence) {
+    testing::Random rnd(11);
+    int checked = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const auto g = testing::random_generators(rnd, family_of(i), 8);
+        const Cone c = Cone::from_generators(g);
+        for (const Face& face : c.faces()) {
+            const Cone fc = c.face_cone(face);
+            ASSERT_EQ(fc.dimension(), face.dimension) << testing::describe(g);
+            ASSERT_TRUE(subset(fc, c)) << testing::describe(g);
+            Vec3 x = Vec3::Zero();
+            for (int r : face.rays) x += c.rays()[static_cast<std::size_t>(r)].value();
+            for (std::size_t j = 0; j < c.facets().size(); ++j) {
+                const bool listed = std::find(face.facets.begin(), face.facets.end(), static_cast<int>(j)) != face.facets.end();
+                const Sign s = c.facets()[j].dot_sign(x);
+                // x is exact only for small integers (a sum of doubles rounds otherwise).
+                if (!testing::is_integral(family_of(i))) continue;
+                EXPECT_EQ(s == Sign::Zero, listed) << "facet " << j << " of " << testing::describe(g);
+                EXPECT_NE(s, Sign::Negative) << testing::describe(g);
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 5000);
+}
+
+// More than 64 generators: the construction then starts from a floating-point guess of an
+// extreme ray, and its other paths (retries, the exact dual clip) are taken.
+TEST(ConeLaws, ManyGeneratorsAgreeWithExactOracle) {
+    testing::Random rnd(7);
+    ConeBuilder::stats() = {};
+    int failures = 0;
+    std::map<std::string, int> kinds;
+    for (int i = 0; i < 600; ++i) {
+        const Family family = family_of(i);
+        std::vector<Vec3> g;
+        const int target = rnd.integer(65, 160);
+        while (static_cast<int>(g.size()) < target) {
+            const auto more = testing::random_generators(rnd, family, 12);
+            g.insert(g.end(), more.begin(), more.end());
+        }
+        if (i % 5 == 0) {  // a pointed cone of many generators with one far outlier
+            for (Vec3& v : g) v = Vec3(v.x(), v.y(), std::fabs(v.z()) + 1.0);
+            g.push_back(Vec3(rnd.integer(-3, 3), rnd.integer(-3, 3), 1));
+        }
+        if (i % 5 == 1) {  // generators in z >= 0 with a line on z = 0: wedge x line or half-space
+            for (Vec3& v : g) v = Vec3(v.x(), v.y(), std::fabs(v.z()));
+            const Vec3 line(rnd.integer(-2, 2), rnd.integer(1, 2), 0);
+            g.push_back(line);
+            g.push_back(-line);
+        }
+        const Cone f = Cone::from_generators(g);
+        ++kinds[f.kind()];
+        const std::string why = testing::compare_with_oracle(f, oracle::from_generators(g), g,
+                                                             Representation::Generators);
+        if (!why.empty()) {
+            ++failures;
+            ADD_FAILURE() << why << " for " << testing::family_name(family) << " " << testing::describe(g);
+        }
+        if (failures > 5) break;
+    }
+    const ConePathStats paths = ConeBuilder::stats();
+    std::cout << "[ConeLaws] many generators, kinds:";
+    for (const auto& [k, n] : kinds) std::cout << " " << k << "=" << n;
+    std::cout << "; rank-3 paths: by pivot " << paths.by_pivot << ", retries " << paths.retries
+              << ", dual clip " << paths.dual_clip << "\n";
+    EXPECT_GE(kinds["pointed cone"], 50);
+    EXPECT_GE(kinds["wedge x line"] + kinds["half-space"], 20);
 }
 
 }  // namespace
