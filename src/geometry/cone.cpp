@@ -217,25 +217,25 @@ Cone Cone::linear_image(const Mat3& m) const {
     return from_generators(gens);
 }
 
-bool Cone::has(const Vec3& w) const {
-    for (const ExactVector& e : equations_) {
+namespace {
+
+// w satisfies every equation and facet inequality (w a Vec3 or an ExactVector).
+template <class W>
+bool satisfies(const std::vector<ExactVector>& equations, const std::vector<ExactVector>& facets, const W& w) {
+    for (const ExactVector& e : equations) {
         if (e.dot_sign(w) != Sign::Zero) return false;
     }
-    for (const ExactVector& f : facets_) {
+    for (const ExactVector& f : facets) {
         if (f.dot_sign(w) == Sign::Negative) return false;
     }
     return true;
 }
 
-bool Cone::has(const ExactVector& w) const {
-    for (const ExactVector& e : equations_) {
-        if (e.dot_sign(w) != Sign::Zero) return false;
-    }
-    for (const ExactVector& f : facets_) {
-        if (f.dot_sign(w) == Sign::Negative) return false;
-    }
-    return true;
-}
+}  // namespace
+
+bool Cone::has(const Vec3& w) const { return satisfies(equations_, facets_, w); }
+
+bool Cone::has(const ExactVector& w) const { return satisfies(equations_, facets_, w); }
 
 bool Cone::in_relative_interior(const Vec3& w) const {
     if (!has(w)) return false;

@@ -42,48 +42,54 @@ QVec row(dd_MatrixPtr m, long r) {
 
 bool is_zero(const QVec& v) { return sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0; }
 
-void canonicalize(dd_MatrixPtr* m) {
-    dd_rowset impl_lin = nullptr, redset = nullptr;
-    dd_rowindex newpos = nullptr;
-    dd_ErrorType err = dd_NoError;
-    dd_MatrixCanonicalize(m, &impl_lin, &redset, &newpos, &err);
-    if (err != dd_NoError) throw std::runtime_error("cdd canonicalize failed");
-    set_free(impl_lin);
-    set_free(redset);
-    free(newpos);
-}
-
-OracleCone convert(dd_PolyhedraPtr poly) {
-    OracleCone out;
-    dd_MatrixPtr h = dd_CopyInequalities(poly);
-    dd_MatrixPtr g = dd_CopyGenerators(poly);
-    canonicalize(&h);
-    canonicalize(&g);
+// Reads the computed side of a conversion: the inequalities of a V-input, or the generators
+// of an H-input (the other side of dd_Copy* is the input itself, redundancy and all).
+void read_inequalities(dd_MatrixPtr h, OracleCone& out) {
     for (long r = 0; r < h->rowsize; ++r) {
         const QVec v = row(h, r);
         if (is_zero(v)) continue;  // the trivial row 1 >= 0
         (set_member(r + 1, h->linset) ? out.equations : out.facets).push_back(v);
     }
+    out.dimension = 3 - static_cast<int>(out.equations.size());
+}
+
+void read_generators(dd_MatrixPtr g, OracleCone& out) {
     for (long r = 0; r < g->rowsize; ++r) {
         if (mpq_sgn(g->matrix[r][0]) != 0) continue;  // the origin
         const QVec v = row(g, r);
         if (is_zero(v)) continue;
         (set_member(r + 1, g->linset) ? out.lineality : out.rays).push_back(v);
     }
-    out.dimension = 3 - static_cast<int>(out.equations.size());
     out.lineality_dimension = static_cast<int>(out.lineality.size());
-    dd_FreeMatrix(h);
-    dd_FreeMatrix(g);
-    return out;
 }
 
-OracleCone run(dd_MatrixPtr m) {
+dd_PolyhedraPtr convert(dd_MatrixPtr m) {
     dd_ErrorType err = dd_NoError;
     dd_PolyhedraPtr poly = dd_DDMatrix2Poly(m, &err);
     if (err != dd_NoError) throw std::runtime_error("cdd DDMatrix2Poly failed");
-    OracleCone out = convert(poly);
-    dd_FreePolyhedra(poly);
-    dd_FreeMatrix(m);
+    return poly;
+}
+
+// The double description method outputs each extreme ray or facet once, and a basis of the
+// linearity, on the side it computes: converting twice gives both sides minimal.
+OracleCone run(dd_MatrixPtr input, bool input_is_generators) {
+    OracleCone out;
+    dd_PolyhedraPtr first = convert(input);
+    dd_MatrixPtr computed = input_is_generators ? dd_CopyInequalities(first) : dd_CopyGenerators(first);
+    dd_PolyhedraPtr second = convert(computed);
+    dd_MatrixPtr back = input_is_generators ? dd_CopyGenerators(second) : dd_CopyInequalities(second);
+    if (input_is_generators) {
+        read_inequalities(computed, out);
+        read_generators(back, out);
+    } else {
+        read_generators(computed, out);
+        read_inequalities(back, out);
+    }
+    dd_FreeMatrix(back);
+    dd_FreePolyhedra(second);
+    dd_FreeMatrix(computed);
+    dd_FreePolyhedra(first);
+    dd_FreeMatrix(input);
     return out;
 }
 
@@ -91,17 +97,16 @@ OracleCone run(dd_MatrixPtr m) {
 
 OracleCone from_generators(const std::vector<Vec3>& generators) {
     init();
-    return run(make(generators, dd_Generator, true));
+    return run(make(generators, dd_Generator, true), true);
 }
 
 OracleCone from_halfspaces(const std::vector<Vec3>& normals) {
     init();
     if (normals.empty()) {
         // cdd needs at least one row: the trivial inequality 1 >= 0.
-        dd_MatrixPtr m = make({}, dd_Inequality, true);
-        return run(m);
+        return run(make({}, dd_Inequality, true), false);
     }
-    return run(make(normals, dd_Inequality, false));
+    return run(make(normals, dd_Inequality, false), false);
 }
 
 QVec exact(const Vec3& v) { return {mpq_class(v.x()), mpq_class(v.y()), mpq_class(v.z())}; }
