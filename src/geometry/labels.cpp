@@ -94,14 +94,12 @@ std::vector<Vec2> Region::clipped(const Box& box) const {
         if (e.x() == 0.0 && e.y() == 0.0) continue;
         poly = clip(clip(poly, e), -e);
     }
-    // Collapse repeated points left by degenerate cuts.
+    // Drop the repeated points that cuts through a vertex leave behind.
     std::vector<Vec2> out;
     for (const Vec2& p : poly) {
-        if (out.empty() || (p - out.back()).norm() > 1e-12 * (1.0 + p.norm())) out.push_back(p);
+        if (out.empty() || p != out.back()) out.push_back(p);
     }
-    while (out.size() > 1 && (out.front() - out.back()).norm() <= 1e-12 * (1.0 + out.front().norm())) {
-        out.pop_back();
-    }
+    while (out.size() > 1 && out.front() == out.back()) out.pop_back();
     return out;
 }
 
