@@ -6,11 +6,13 @@
 //  2. rank 1 and 2: an angular sort inside the line or plane, then the largest angular gap;
 //  3. rank 3: pick a pivot generator p that a floating-point guess says is extreme, sort the
 //     others by angle around p (the quotient R^3 / p, exact via det(p, u, v)), and look at the
-//     largest gap. If it exceeds pi and -p is not a generator, p is an extreme ray of a pointed
-//     cone and Graham's scan around p (on the sphere) gives the extreme rays in O(n log n).
-//     Otherwise the dual cone {h : h . g >= 0} is cut out of the simplicial cone of three
-//     independent generators by the remaining half-spaces (a spherical polygon clip), which
-//     handles every non-pointed case (R^3, half-space, wedge x line) exactly.
+//     largest gap (see PivotAnalysis). If it exceeds pi and -p is not a generator, p is an
+//     extreme ray of a pointed cone and Graham's scan around p (on the sphere) gives the
+//     extreme rays in O(n log n); the other boundary cases (span(p) + wedge, a half-space, a
+//     retry from an extreme generator of the face holding p) are decided from the same order.
+//     When no pivot decides (R^3, or p interior), the dual cone {h : h . g >= 0} is cut out of
+//     the simplicial cone of three independent generators by the remaining half-spaces (a
+//     spherical polygon clip), exact in every case.
 #include "cone_build.hpp"
 
 #include <algorithm>
