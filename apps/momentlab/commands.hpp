@@ -8,6 +8,9 @@ namespace momentlab::cli {
 /// Adds the `label` subcommand; the returned function runs it after parsing.
 std::function<int()> add_label_command(CLI::App& app);
 
+/// Adds the `modes` subcommand.
+std::function<int()> add_modes_command(CLI::App& app);
+
 /// Reads a whole file; throws InputError at "$" if it cannot be read.
 std::string read_file(const std::string& path);
 

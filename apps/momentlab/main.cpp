@@ -2,6 +2,7 @@
 // calls the library and prints; bad input gives one line on stderr and exit status 2.
 #include <iostream>
 #include <stdexcept>
+#include <string>
 
 #include "commands.hpp"
 
@@ -9,6 +10,7 @@ int main(int argc, char** argv) {
     CLI::App app{"momentlab: moment labels and planar contact mechanics (Mason 1991)"};
     app.require_subcommand(1);
     const auto run_label = momentlab::cli::add_label_command(app);
+    const auto run_modes = momentlab::cli::add_modes_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -16,6 +18,7 @@ int main(int argc, char** argv) {
     }
     try {
         if (app.got_subcommand("label")) return run_label();
+        if (app.got_subcommand("modes")) return run_modes();
     } catch (const std::invalid_argument& e) {
         std::cerr << "momentlab: " << e.what() << "\n";
         return 2;

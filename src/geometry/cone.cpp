@@ -45,6 +45,15 @@ Vec3 readable(const Vec3& v) {
 
 }  // namespace
 
+Rational3 to_rational(const Vec3& v) { return {mpq_class(v.x()), mpq_class(v.y()), mpq_class(v.z())}; }
+
+Rational3 ExactVector::rational() const {
+    if (!constructed_) return to_rational(value_);
+    const Rational3 a = to_rational(u_), b = to_rational(v_);
+    const mpq_class s(sign_);
+    return {s * (a[1] * b[2] - a[2] * b[1]), s * (a[2] * b[0] - a[0] * b[2]), s * (a[0] * b[1] - a[1] * b[0])};
+}
+
 ExactVector ExactVector::input(const Vec3& v) {
     ExactVector e;
     e.value_ = v;

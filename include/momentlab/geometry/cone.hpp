@@ -4,6 +4,9 @@
 /// Closed polyhedral convex cones of R^3 (planar wrenches, twists, covectors), kept in both
 /// representations at once, each minimal (DESIGN, "The mathematics in one page").
 
+#include <gmpxx.h>
+
+#include <array>
 #include <initializer_list>
 #include <span>
 #include <string>
@@ -14,6 +17,12 @@
 #include "momentlab/core/vec.hpp"
 
 namespace momentlab {
+
+/// An exact rational vector of R^3 (GMP), for predicates of degree above three.
+using Rational3 = std::array<mpq_class, 3>;
+
+/// The doubles of v as exact rationals.
+[[nodiscard]] Rational3 to_rational(const Vec3& v);
 
 /// A vector known exactly: either stored doubles (an input of some construction), or
 /// `sign * (u x v)` for two stored vectors u, v (a construction, such as a facet normal through
@@ -37,6 +46,8 @@ public:
     [[nodiscard]] Sign dot_sign(const ExactVector& other) const;
     /// The vector -v, with the same exactness.
     [[nodiscard]] ExactVector negated() const;
+    /// The exact value as rationals (the cross product computed exactly for constructions).
+    [[nodiscard]] Rational3 rational() const;
     /// The image under a signed permutation matrix P (exact): P v.
     [[nodiscard]] ExactVector signed_permuted(const Mat3& p) const;
 

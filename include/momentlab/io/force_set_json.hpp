@@ -15,23 +15,12 @@
 ///   {"type": "sum" | "intersection", "sets": [...]}                     (nesting)
 
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 #include <string>
 
 #include "momentlab/geometry/cone.hpp"
+#include "momentlab/io/input_error.hpp"
 
 namespace momentlab {
-
-/// Bad user input, with the JSON path of the offending field (e.g. "$.sets[2].mu").
-class InputError : public std::invalid_argument {
-public:
-    InputError(const std::string& path, const std::string& message)
-        : std::invalid_argument(path + ": " + message), path_(path) {}
-    [[nodiscard]] const std::string& path() const { return path_; }
-
-private:
-    std::string path_;
-};
 
 /// The force set described by `doc`. Throws InputError naming the field on bad input.
 [[nodiscard]] Cone read_force_set(const nlohmann::json& doc);

@@ -1,0 +1,59 @@
+// `momentlab modes SCENE [--json]`: every kinematically feasible contact mode.
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+#include "momentlab/io/scene_json.hpp"
+#include "momentlab/mechanics/modes.hpp"
+
+namespace momentlab::cli {
+namespace {
+
+const char* in_words(char letter) {
+    switch (letter) {
+        case 's': return "separates";
+        case 'f': return "fixed";
+        case 'r': return "slides right (+t)";
+        default: return "slides left (-t)";
+    }
+}
+
+struct ModesOptions {
+    std::string file;
+    bool json = false;
+};
+
+int run(const ModesOptions& o) {
+    const Scene scene = read_scene_text(read_file(o.file));
+    const ModeSet set = enumerate_modes(scene.contacts);
+    if (o.json) {
+        nlohmann::json modes = nlohmann::json::array();
+        for (const Mode& m : set.modes) modes.push_back(m.letters);
+        std::cout << nlohmann::json{{"modes", modes}}.dump() << "\n";
+        return 0;
+    }
+    std::cout << set.modes.size() << " contact modes; feasible twists: " << set.feasible_twists.kind() << "\n";
+    for (const Mode& m : set.modes) {
+        std::cout << "  " << std::left << std::setw(static_cast<int>(scene.contacts.size()) + 2) << m.letters;
+        for (std::size_t j = 0; j < m.letters.size(); ++j) {
+            const std::string& name = scene.contacts[j].name;
+            std::cout << (j ? ", " : "") << (name.empty() ? "contact " + std::to_string(j + 1) : name) << " "
+                      << in_words(m.letters[j]);
+        }
+        std::cout << "\n";
+    }
+    return 0;
+}
+
+}  // namespace
+
+std::function<int()> add_modes_command(CLI::App& app) {
+    auto opts = std::make_shared<ModesOptions>();
+    CLI::App* cmd = app.add_subcommand("modes", "List every contact mode of a scene (s, f, r, l per contact)");
+    cmd->add_option("scene", opts->file, "scene JSON (DESIGN.md)")->required();
+    cmd->add_flag("--json", opts->json, "machine-readable output: {\"modes\": [...]}");
+    return [opts] { return run(*opts); };
+}
+
+}  // namespace momentlab::cli

@@ -1,0 +1,23 @@
+#pragma once
+
+/// \file
+/// Scene files (DESIGN, "Interfaces"):
+/// {"body": {"mass", "com", "inertia" | "radius_of_gyration", "polygon"},
+///  "contacts": [{"point", "normal", "mu", "mu_kinetic", "name"}], "obstacles": [{"polygon"}]}.
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "momentlab/io/input_error.hpp"
+#include "momentlab/mechanics/scene.hpp"
+
+namespace momentlab {
+
+/// The scene described by `doc`. Throws InputError naming the field on bad input. Contacts
+/// found from the polygons' geometry are not implemented yet: a scene needs "contacts".
+[[nodiscard]] Scene read_scene(const nlohmann::json& doc);
+
+/// Parses `text` as JSON and reads the scene.
+[[nodiscard]] Scene read_scene_text(const std::string& text);
+
+}  // namespace momentlab

@@ -1,0 +1,38 @@
+#pragma once
+
+/// \file
+/// Contact modes of a body at rest (DESIGN, "Contact modes"): the relatively open faces of the
+/// cone A of feasible twists, refined by the sign of the tangential velocity at the contacts
+/// that stay closed. Letters per contact, in input order: s separating, f fixed, r sliding
+/// with t . v > 0, l sliding with t . v < 0.
+
+#include <string>
+#include <vector>
+
+#include "momentlab/geometry/cone.hpp"
+#include "momentlab/mechanics/scene.hpp"
+
+namespace momentlab {
+
+/// One contact mode.
+struct Mode {
+    /// One letter per contact: 's', 'f', 'r' or 'l'.
+    std::string letters;
+    /// The closure of the mode's twists (velocities, or accelerations at rest). Its generators
+    /// are exact rational directions rounded to doubles (exact for small integer scenes).
+    Cone twists;
+};
+
+/// Every kinematically feasible mode of a scene.
+struct ModeSet {
+    /// A = {xi : N_j . xi >= 0 for every contact j}.
+    Cone feasible_twists;
+    /// The all-f mode first (always feasible), then the others; each exactly once.
+    std::vector<Mode> modes;
+};
+
+/// Enumerates the contact modes exactly: every decision is the exact sign of a polynomial in
+/// the stored N_j = (n_j, p_j x n_j) and T_j = (t_j, p_j x t_j). O(n log n) for n contacts.
+[[nodiscard]] ModeSet enumerate_modes(const std::vector<Contact>& contacts);
+
+}  // namespace momentlab

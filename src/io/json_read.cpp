@@ -1,0 +1,60 @@
+#include "json_read.hpp"
+
+#include <cmath>
+
+namespace momentlab::json_read {
+
+const json& field(const json& obj, const std::string& path, const char* name) {
+    if (!obj.contains(name)) throw InputError(path, std::string("missing field \"") + name + "\"");
+    return obj.at(name);
+}
+
+double number(const json& v, const std::string& path) {
+    if (!v.is_number()) throw InputError(path, "expected a number, got " + std::string(v.type_name()));
+    const double x = v.get<double>();
+    if (!std::isfinite(x)) throw InputError(path, "expected a finite number");
+    return x;
+}
+
+Vec2 vec2(const json& v, const std::string& path) {
+    if (!v.is_array() || v.size() != 2) throw InputError(path, "expected [x, y]");
+    return Vec2(number(v[0], path + "[0]"), number(v[1], path + "[1]"));
+}
+
+Vec3 vec3(const json& v, const std::string& path) {
+    if (!v.is_array() || v.size() != 3) throw InputError(path, "expected [a, b, c]");
+    return Vec3(number(v[0], path + "[0]"), number(v[1], path + "[1]"), number(v[2], path + "[2]"));
+}
+
+std::vector<Vec3> vec3_list(const json& v, const std::string& path) {
+    if (!v.is_array()) throw InputError(path, "expected a list of [a, b, c]");
+    std::vector<Vec3> out;
+    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(vec3(v[i], path + "[" + std::to_string(i) + "]"));
+    return out;
+}
+
+Vec2 nonzero2(const json& obj, const std::string& path, const char* name) {
+    const std::string p = path + "." + name;
+    const Vec2 v = vec2(field(obj, path, name), p);
+    if (v.x() == 0.0 && v.y() == 0.0) throw InputError(p, "expected a non-zero vector");
+    return v;
+}
+
+std::vector<Vec2> vec2_list(const json& v, const std::string& path) {
+    if (!v.is_array()) throw InputError(path, "expected a list of [x, y]");
+    std::vector<Vec2> out;
+    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(vec2(v[i], at(path, i)));
+    return out;
+}
+
+std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+json parse(const std::string& text) {
+    try {
+        return json::parse(text);
+    } catch (const json::parse_error& e) {
+        throw InputError("$", std::string("malformed JSON: ") + e.what());
+    }
+}
+
+}  // namespace momentlab::json_read

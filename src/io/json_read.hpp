@@ -1,0 +1,29 @@
+#pragma once
+
+// Typed access to JSON fields; every failure is an InputError naming the field's path.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "momentlab/core/vec.hpp"
+#include "momentlab/io/input_error.hpp"
+
+namespace momentlab::json_read {
+
+using nlohmann::json;
+
+const json& field(const json& obj, const std::string& path, const char* name);
+double number(const json& v, const std::string& path);
+Vec2 vec2(const json& v, const std::string& path);
+Vec3 vec3(const json& v, const std::string& path);
+std::vector<Vec3> vec3_list(const json& v, const std::string& path);
+std::vector<Vec2> vec2_list(const json& v, const std::string& path);
+/// A non-zero [x, y] in field `name` of `obj`.
+Vec2 nonzero2(const json& obj, const std::string& path, const char* name);
+/// `path[i]`.
+std::string at(const std::string& path, std::size_t i);
+/// Parses text; malformed JSON is an InputError at "$".
+json parse(const std::string& text);
+
+}  // namespace momentlab::json_read

@@ -1,0 +1,83 @@
+#include "momentlab/io/scene_json.hpp"
+
+#include "json_read.hpp"
+
+namespace momentlab {
+namespace {
+
+using nlohmann::json;
+using namespace json_read;
+
+double positive(const json& obj, const std::string& path, const char* name) {
+    const double x = number(field(obj, path, name), path + "." + name);
+    if (!(x > 0.0)) throw InputError(path + "." + name, "expected a number > 0");
+    return x;
+}
+
+Body read_body(const json& b, const std::string& path) {
+    if (!b.is_object()) throw InputError(path, "expected an object");
+    Body body;
+    body.mass = positive(b, path, "mass");
+    body.com = vec2(field(b, path, "com"), path + ".com");
+    if (b.contains("inertia")) {
+        body.inertia = positive(b, path, "inertia");
+    } else if (b.contains("radius_of_gyration")) {
+        const double rho = positive(b, path, "radius_of_gyration");
+        body.inertia = body.mass * rho * rho;
+    } else {
+        throw InputError(path, "missing field \"inertia\" (or \"radius_of_gyration\")");
+    }
+    if (b.contains("polygon")) body.polygon = vec2_list(b.at("polygon"), path + ".polygon");
+    return body;
+}
+
+Contact read_contact(const json& c, const std::string& path) {
+    if (!c.is_object()) throw InputError(path, "expected an object with \"point\" and \"normal\"");
+    const Vec2 point = vec2(field(c, path, "point"), path + ".point");
+    const Vec2 normal = nonzero2(c, path, "normal");
+    double mu = 0.0;
+    if (c.contains("mu")) {
+        mu = number(c.at("mu"), path + ".mu");
+        if (mu < 0.0) throw InputError(path + ".mu", "expected mu >= 0");
+    }
+    std::optional<double> mu_kinetic;
+    if (c.contains("mu_kinetic")) {
+        mu_kinetic = number(c.at("mu_kinetic"), path + ".mu_kinetic");
+        if (*mu_kinetic < 0.0) throw InputError(path + ".mu_kinetic", "expected mu_kinetic >= 0");
+    }
+    std::string name;
+    if (c.contains("name")) {
+        if (!c.at("name").is_string()) throw InputError(path + ".name", "expected a string");
+        name = c.at("name").get<std::string>();
+    }
+    return Contact::make(point, normal, mu, mu_kinetic, name);
+}
+
+}  // namespace
+
+Scene read_scene(const json& doc) {
+    if (!doc.is_object()) throw InputError("$", "expected a scene object");
+    Scene scene;
+    if (doc.contains("body")) scene.body = read_body(doc.at("body"), "$.body");
+    if (!doc.contains("contacts")) {
+        throw InputError("$", "missing field \"contacts\" (finding contacts from the polygons is not implemented yet)");
+    }
+    const json& contacts = doc.at("contacts");
+    if (!contacts.is_array()) throw InputError("$.contacts", "expected a list of contacts");
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+        scene.contacts.push_back(read_contact(contacts[i], at("$.contacts", i)));
+    }
+    if (doc.contains("obstacles")) {
+        const json& obstacles = doc.at("obstacles");
+        if (!obstacles.is_array()) throw InputError("$.obstacles", "expected a list of obstacles");
+        for (std::size_t i = 0; i < obstacles.size(); ++i) {
+            const std::string p = at("$.obstacles", i);
+            scene.obstacles.push_back(vec2_list(field(obstacles[i], p, "polygon"), p + ".polygon"));
+        }
+    }
+    return scene;
+}
+
+Scene read_scene_text(const std::string& text) { return read_scene(parse(text)); }
+
+}  // namespace momentlab

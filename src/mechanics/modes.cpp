@@ -1,0 +1,215 @@
+// Contact modes from the face lattice of A = {xi : N_j . xi >= 0}, refined by the signs of
+// T_j . xi for the contacts that are closed (N_j . xi = 0) on each face.
+//
+// A face F of A, relatively open, has a set J of closed contacts; every other contact
+// separates. Inside F the signs of T_j . xi (j in J) change only across the lines
+// {T_j . xi = 0}: a 2-D face is cut into rays and open sectors (sorted by angle), a 1-D face
+// and the 3-D interior are single cells (no contact is closed on the interior of a
+// full-dimensional A). Cells with the same letters are one mode: the twists with given
+// letters form a relatively open convex cone, so the closure of a mode is the sum of the
+// closures of its cells. All arithmetic here is exact rational (degree up to 6 in the input).
+#include "momentlab/mechanics/modes.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <map>
+
+namespace momentlab {
+namespace {
+
+using Q = mpq_class;
+using Q3 = Rational3;
+
+Q dot(const Q3& a, const Q3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Q3 cross(const Q3& a, const Q3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Q3 plus(const Q3& a, const Q3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+Q3 minus(const Q3& a) { return {-a[0], -a[1], -a[2]}; }
+int sign(const Q& q) { return sgn(q); }
+int orient(const Q3& x, const Q3& y, const Q3& e) { return sign(dot(cross(x, y), e)); }
+bool is_zero(const Q3& a) { return sgn(a[0]) == 0 && sgn(a[1]) == 0 && sgn(a[2]) == 0; }
+
+// A direction as doubles: divided by its largest coordinate first (exact), then rounded.
+Vec3 to_double(const Q3& a) {
+    Q m = 0;
+    for (const Q& c : a) m = std::max(m, Q(abs(c)));
+    if (sgn(m) == 0) return Vec3::Zero();
+    return Vec3(Q(a[0] / m).get_d(), Q(a[1] / m).get_d(), Q(a[2] / m).get_d());
+}
+
+struct Cell {
+    Q3 representative;             // a twist in the relative interior of the cell
+    std::vector<Q3> closure;       // generators of the cell's closure (rays; lines as +-)
+};
+
+class Enumerator {
+public:
+    explicit Enumerator(const std::vector<Contact>& contacts) {
+        for (const Contact& c : contacts) {
+            normals_.push_back(c.normal_wrench());
+            n_.push_back(to_rational(c.normal_wrench()));
+            t_.push_back(to_rational(c.tangent_wrench()));
+        }
+    }
+
+    ModeSet run() {
+        ModeSet out;
+        out.feasible_twists = Cone::from_halfspaces(normals_);
+        const Cone& a = out.feasible_twists;
+        std::vector<Q3> lineality;
+        for (const ExactVector& l : a.lineality()) lineality.push_back(l.rational());
+        add(std::string(n_.size(), 'f'), {});  // xi = 0: every contact fixed
+        for (const Face& face : a.faces()) {
+            std::vector<Q3> rays;
+            for (int i : face.rays) rays.push_back(a.rays()[static_cast<std::size_t>(i)].rational());
+            if (face.dimension == 0) continue;
+            std::vector<bool> closed(n_.size());
+            for (std::size_t j = 0; j < n_.size(); ++j) {
+                bool all = true;
+                for (const Q3& g : rays) all = all && sign(dot(n_[j], g)) == 0;
+                for (const Q3& g : lineality) all = all && sign(dot(n_[j], g)) == 0;
+                closed[j] = all;
+            }
+            for (const Cell& cell : cells(face.dimension, rays, lineality, closed)) {
+                add(letters(cell.representative, closed), cell.closure);
+            }
+        }
+        out.modes.resize(order_.size());
+        for (const auto& [letters, index] : order_) {
+            std::vector<Vec3> gens;
+            for (const Q3& g : closures_[index]) gens.push_back(to_double(g));
+            out.modes[index] = Mode{letters, Cone::from_generators(gens)};
+        }
+        return out;
+    }
+
+private:
+    std::string letters(const Q3& xi, const std::vector<bool>& closed) const {
+        std::string s(n_.size(), 's');
+        for (std::size_t j = 0; j < n_.size(); ++j) {
+            if (!closed[j]) continue;
+            const int v = sign(dot(t_[j], xi));
+            s[j] = v > 0 ? 'r' : (v < 0 ? 'l' : 'f');
+        }
+        return s;
+    }
+
+    void add(const std::string& letters, const std::vector<Q3>& closure) {
+        auto [it, inserted] = order_.emplace(letters, closures_.size());
+        if (inserted) closures_.emplace_back();
+        auto& gens = closures_[it->second];
+        gens.insert(gens.end(), closure.begin(), closure.end());
+    }
+
+    // The cells of the relatively open face spanned by `rays` and `lineality`.
+    std::vector<Cell> cells(int dimension, const std::vector<Q3>& rays, const std::vector<Q3>& lineality,
+                            const std::vector<bool>& closed) const {
+        std::vector<Cell> out;
+        auto with_lines = [&](std::vector<Q3> gens) {
+            for (const Q3& l : lineality) {
+                gens.push_back(l);
+                gens.push_back(minus(l));
+            }
+            return gens;
+        };
+        if (dimension == 3) {
+            // The interior of a full-dimensional A: no contact is closed there. The sum of the
+            // rays is interior (pointed cone, wedge x line, half-space); for R^3 any vector.
+            assert(std::none_of(closed.begin(), closed.end(), [](bool c) { return c; }));
+            Q3 inside = rays.empty() ? lineality.front() : rays.front();
+            for (std::size_t i = 1; i < rays.size(); ++i) inside = plus(inside, rays[i]);
+            return {{inside, with_lines(rays)}};
+        }
+        if (dimension == 1) {
+            if (!rays.empty()) return {{rays.front(), {rays.front()}}};
+            return {{lineality.front(), {lineality.front()}}, {minus(lineality.front()), {minus(lineality.front())}}};
+        }
+        // Dimension 2: a wedge (two rays), a half-plane (a line and a ray) or a plane.
+        Q3 start, finish, e;
+        enum class Shape { Wedge, HalfPlane, Plane } shape;
+        if (lineality.empty()) {
+            shape = Shape::Wedge;
+            start = rays[0];
+            finish = rays[1];
+            e = cross(start, finish);
+            if (orient(start, finish, e) < 0) std::swap(start, finish);
+            e = cross(start, finish);
+        } else if (lineality.size() == 1) {
+            shape = Shape::HalfPlane;
+            start = lineality[0];
+            finish = minus(start);
+            e = cross(start, rays[0]);
+        } else {
+            shape = Shape::Plane;
+            start = lineality[0];
+            e = cross(lineality[0], lineality[1]);
+        }
+        auto inside = [&](const Q3& x) {
+            if (shape == Shape::Wedge) return orient(start, x, e) > 0 && orient(x, finish, e) > 0;
+            if (shape == Shape::HalfPlane) return orient(start, x, e) > 0;
+            return true;
+        };
+        std::vector<Q3> critical;
+        for (std::size_t j = 0; j < n_.size(); ++j) {
+            if (!closed[j]) continue;
+            const Q3 u = cross(e, t_[j]);
+            if (is_zero(u)) continue;  // T_j vanishes on the whole face
+            for (const Q3& x : {u, minus(u)}) {
+                if (inside(x)) critical.push_back(x);
+            }
+        }
+        // Angular order counter-clockwise about e, from `start` (full turn for the plane).
+        auto half = [&](const Q3& x) {
+            const int o = orient(start, x, e);
+            if (o > 0) return 1;
+            if (o < 0) return 3;
+            return sign(dot(start, x)) > 0 ? 0 : 2;
+        };
+        std::sort(critical.begin(), critical.end(), [&](const Q3& x, const Q3& y) {
+            const int hx = half(x), hy = half(y);
+            if (hx != hy) return hx < hy;
+            return orient(x, y, e) > 0;
+        });
+        critical.erase(std::unique(critical.begin(), critical.end(),
+                                   [&](const Q3& x, const Q3& y) {
+                                       return half(x) == half(y) && orient(x, y, e) == 0;
+                                   }),
+                       critical.end());
+        for (const Q3& c : critical) out.push_back({c, {c}});
+        auto sector = [&](const Q3& a, const Q3& b) -> Cell {
+            if (orient(a, b, e) > 0) return {plus(a, b), {a, b}};
+            const Q3 perpendicular = cross(e, a);  // a turned by a quarter counter-clockwise
+            return {perpendicular, {a, minus(a), perpendicular}};
+        };
+        if (shape == Shape::Plane) {
+            if (critical.empty()) return {{start, with_lines({})}};
+            for (std::size_t i = 0; i < critical.size(); ++i) {
+                out.push_back(sector(critical[i], critical[(i + 1) % critical.size()]));
+            }
+            return out;
+        }
+        std::vector<Q3> sequence = {start};
+        sequence.insert(sequence.end(), critical.begin(), critical.end());
+        sequence.push_back(finish);
+        for (std::size_t i = 0; i + 1 < sequence.size(); ++i) {
+            if (shape == Shape::HalfPlane && critical.empty()) {
+                out.push_back({rays[0], {start, finish, rays[0]}});
+            } else {
+                out.push_back(sector(sequence[i], sequence[i + 1]));
+            }
+        }
+        return out;
+    }
+
+    std::vector<Vec3> normals_;
+    std::vector<Q3> n_, t_;
+    std::map<std::string, std::size_t> order_;
+    std::vector<std::vector<Q3>> closures_;
+};
+
+}  // namespace
+
+ModeSet enumerate_modes(const std::vector<Contact>& contacts) { return Enumerator(contacts).run(); }
+
+}  // namespace momentlab

@@ -1,0 +1,90 @@
+#include "lp_oracle.hpp"
+
+#include <setoper.h>
+#include <cdd.h>
+
+#include <mutex>
+#include <stdexcept>
+
+namespace momentlab::oracle {
+namespace {
+
+void init() {
+    static std::once_flag once;
+    std::call_once(once, [] { dd_set_global_constants(); });
+}
+
+// Row r of the LP in the variables (xi_1, xi_2, xi_3, t): b + a . x >= 0 (or = 0 if `equal`).
+void set_row(dd_MatrixPtr m, long r, const Vec3& a, double slack, double b, bool equal) {
+    mpq_set_d(m->matrix[r][0], b);
+    for (int i = 0; i < 3; ++i) mpq_set_d(m->matrix[r][i + 1], a[i]);
+    mpq_set_d(m->matrix[r][4], slack);
+    if (equal) set_addelem(m->linset, r + 1);
+}
+
+}  // namespace
+
+bool realisable(const std::vector<Vec3>& n, const std::vector<Vec3>& t, const std::string& labels) {
+    init();
+    long rows = 1;  // t <= 1
+    bool strict = false;
+    for (char c : labels) {
+        rows += c == 's' ? 1 : 2;
+        strict = strict || c != 'f';
+    }
+    if (!strict) return true;  // xi = 0
+    dd_MatrixPtr m = dd_CreateMatrix(rows, 5);
+    m->representation = dd_Inequality;
+    m->numbtype = dd_Rational;
+    long r = 0;
+    set_row(m, r++, Vec3::Zero(), -1.0, 1.0, false);
+    for (std::size_t j = 0; j < labels.size(); ++j) {
+        switch (labels[j]) {
+            case 's': set_row(m, r++, n[j], -1.0, 0.0, false); break;
+            case 'f':
+                set_row(m, r++, n[j], 0.0, 0.0, true);
+                set_row(m, r++, t[j], 0.0, 0.0, true);
+                break;
+            case 'r':
+                set_row(m, r++, n[j], 0.0, 0.0, true);
+                set_row(m, r++, t[j], -1.0, 0.0, false);
+                break;
+            default:
+                set_row(m, r++, n[j], 0.0, 0.0, true);
+                set_row(m, r++, -t[j], -1.0, 0.0, false);
+                break;
+        }
+    }
+    m->objective = dd_LPmax;
+    for (int i = 0; i < 5; ++i) dd_set_si(m->rowvec[i], i == 4 ? 1 : 0);
+    dd_ErrorType err = dd_NoError;
+    dd_LPPtr lp = dd_Matrix2LP(m, &err);
+    if (err != dd_NoError) throw std::runtime_error("cdd Matrix2LP failed");
+    dd_LPSolve(lp, dd_DualSimplex, &err);
+    if (err != dd_NoError) throw std::runtime_error("cdd LPSolve failed");
+    const bool ok = lp->LPS == dd_Optimal && mpq_sgn(lp->optvalue) > 0;
+    dd_FreeLPData(lp);
+    dd_FreeMatrix(m);
+    return ok;
+}
+
+std::set<std::string> all_modes(const std::vector<Vec3>& n, const std::vector<Vec3>& t) {
+    std::set<std::string> out;
+    std::vector<std::string> stack = {""};
+    while (!stack.empty()) {
+        const std::string prefix = stack.back();
+        stack.pop_back();
+        if (prefix.size() == n.size()) {
+            out.insert(prefix);
+            continue;
+        }
+        for (char c : {'s', 'f', 'r', 'l'}) {
+            std::string next = prefix;
+            next.push_back(c);  // (prefix + c trips GCC 12's -Wrestrict false positive)
+            if (realisable(n, t, next)) stack.push_back(next);
+        }
+    }
+    return out;
+}
+
+}  // namespace momentlab::oracle

@@ -1,0 +1,24 @@
+#pragma once
+
+// A brute-force oracle for contact modes, sharing no code with momentlab's enumeration: for
+// each labelling in {s, f, r, l}^n, one exact rational LP (cddlib, GMP) decides whether some
+// twist realises it, maximising a slack t <= 1 on the strict inequalities.
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "momentlab/core/vec.hpp"
+
+namespace momentlab::oracle {
+
+/// True when some twist xi has, for each contact j with letter labels[j]:
+/// s: N_j . xi > 0; f: N_j . xi = 0 = T_j . xi; r: N_j . xi = 0 < T_j . xi; l: ... T_j . xi < 0.
+/// `labels` may be shorter than the contact list (a prefix).
+bool realisable(const std::vector<Vec3>& n, const std::vector<Vec3>& t, const std::string& labels);
+
+/// Every realisable full labelling, by depth-first search over prefixes (a prefix that is not
+/// realisable has no realisable extension).
+std::set<std::string> all_modes(const std::vector<Vec3>& n, const std::vector<Vec3>& t);
+
+}  // namespace momentlab::oracle
