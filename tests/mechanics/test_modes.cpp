@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <sstream>
 
 #include "../common/random_inputs.hpp"
 #include "../oracle/lp_oracle.hpp"
@@ -101,12 +102,12 @@ TEST(Modes, AgreeWithExactLpOracle) {
             std::string a, b;
             for (const auto& m : ours) a += m + " ";
             for (const auto& m : expected) b += m + " ";
-            std::string where;
+            std::ostringstream where;
+            where.precision(17);
             for (const Contact& c : contacts) {
-                where += "(" + std::to_string(c.point.x()) + "," + std::to_string(c.point.y()) + " n " +
-                         std::to_string(c.normal.x()) + "," + std::to_string(c.normal.y()) + ") ";
+                where << "(" << c.point.transpose() << " n " << c.normal.transpose() << ") ";
             }
-            ADD_FAILURE() << "ours: " << a << "\noracle: " << b << "\nscene: " << where;
+            ADD_FAILURE() << "ours: " << a << "\noracle: " << b << "\nscene: " << where.str();
         }
     }
     std::cout << "[Modes] " << scenes << " scenes, " << total_modes << " modes, " << failures << " disagreements\n";

@@ -68,6 +68,56 @@ bool realisable(const std::vector<Vec3>& n, const std::vector<Vec3>& t, const st
     return ok;
 }
 
+bool applied_in_mode(const Mat3& m, const std::vector<Vec3>& n, const std::vector<Vec3>& t,
+                     const std::vector<std::vector<Vec3>>& contact_generators,
+                     const std::string& labels, const Vec3& e) {
+    init();
+    std::vector<Vec3> gens;
+    for (const auto& list : contact_generators) gens.insert(gens.end(), list.begin(), list.end());
+    const long k = static_cast<long>(gens.size());
+    long rows = 3 + k;
+    for (char c : labels) rows += c == 's' ? 1 : 2;
+    const long cols = 1 + 3 + k;
+    dd_MatrixPtr a = dd_CreateMatrix(rows, cols);
+    a->representation = dd_Inequality;
+    a->numbtype = dd_Rational;
+    for (long r = 0; r < rows; ++r) {
+        for (long c = 0; c < cols; ++c) dd_set_si(a->matrix[r][c], 0);
+    }
+    long r = 0;
+    for (int i = 0; i < 3; ++i, ++r) {  // (M xi)_i - sum alpha g_i - e_i = 0
+        mpq_set_d(a->matrix[r][0], -e[i]);
+        for (int j = 0; j < 3; ++j) mpq_set_d(a->matrix[r][1 + j], m(i, j));
+        for (long q = 0; q < k; ++q) mpq_set_d(a->matrix[r][4 + q], -gens[static_cast<std::size_t>(q)][i]);
+        set_addelem(a->linset, r + 1);
+    }
+    for (long q = 0; q < k; ++q, ++r) dd_set_si(a->matrix[r][4 + q], 1);  // alpha >= 0
+    auto twist_row = [&](const Vec3& v, double s, bool equal) {
+        for (int j = 0; j < 3; ++j) mpq_set_d(a->matrix[r][1 + j], s * v[j]);
+        if (equal) set_addelem(a->linset, r + 1);
+        ++r;
+    };
+    for (std::size_t j = 0; j < labels.size(); ++j) {
+        switch (labels[j]) {
+            case 's': twist_row(n[j], 1.0, false); break;
+            case 'f': twist_row(n[j], 1.0, true); twist_row(t[j], 1.0, true); break;
+            case 'r': twist_row(n[j], 1.0, true); twist_row(t[j], 1.0, false); break;
+            default: twist_row(n[j], 1.0, true); twist_row(t[j], -1.0, false); break;
+        }
+    }
+    a->objective = dd_LPmax;
+    for (long c = 0; c < cols; ++c) dd_set_si(a->rowvec[c], 0);
+    dd_ErrorType err = dd_NoError;
+    dd_LPPtr lp = dd_Matrix2LP(a, &err);
+    if (err != dd_NoError) throw std::runtime_error("cdd Matrix2LP failed");
+    dd_LPSolve(lp, dd_DualSimplex, &err);
+    if (err != dd_NoError) throw std::runtime_error("cdd LPSolve failed");
+    const bool ok = lp->LPS == dd_Optimal;
+    dd_FreeLPData(lp);
+    dd_FreeMatrix(a);
+    return ok;
+}
+
 std::set<std::string> all_modes(const std::vector<Vec3>& n, const std::vector<Vec3>& t) {
     std::set<std::string> out;
     std::vector<std::string> stack = {""};

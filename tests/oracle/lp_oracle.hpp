@@ -21,4 +21,11 @@ bool realisable(const std::vector<Vec3>& n, const std::vector<Vec3>& t, const st
 /// realisable has no realisable extension).
 std::set<std::string> all_modes(const std::vector<Vec3>& n, const std::vector<Vec3>& t);
 
+/// True when the applied wrench e is in the closed set E of the mode `labels`: some twist xi
+/// in the closure of the mode's twists and contact forces c_j = sum_k alpha_jk g_jk
+/// (alpha >= 0, generators g_jk given per contact for its letter) with M xi = e + sum_j c_j.
+bool applied_in_mode(const Mat3& m, const std::vector<Vec3>& n, const std::vector<Vec3>& t,
+                     const std::vector<std::vector<Vec3>>& contact_generators,
+                     const std::string& labels, const Vec3& e);
+
 }  // namespace momentlab::oracle
