@@ -1,17 +1,25 @@
 #!/usr/bin/env bash
-# The main job on the bundled examples: the moment labels of the paper's Figure 1 and 2
-# force sets (Mason 1991), and the intersection that the paper's hull shorthand gets wrong.
+# The main job on the bundled examples: moment labels of the paper's Figure 1 and 2 force sets
+# (Mason 1991), then the contact problem: every mode of the bundled scenes with its sets, and
+# which mode an applied wrench produces.
 set -euo pipefail
 bin=${1:?usage: demo.sh path/to/momentlab}
 here=$(cd "$(dirname "$0")" && pwd)
 show() {
     echo
     echo "== $1"
-    echo "   momentlab label examples/$2 ${3:-}"
-    "$bin" label "$here/$2" ${3:-}
+    echo "   momentlab ${*:2}" | sed "s#$here/#examples/#g"
+    "$bin" "${@:2}"
 }
-show "Figure 1a: a force along +x through the origin" figure-1a-force.json "--at 0 1 --at 0 -1 --at 3 0"
-show "Figure 1b: all forces through the point (1, 2)" figure-1b-point.json "--at 1 2 --at 0 0"
-show "Figure 1c: friction cone at the origin, normal +y, mu = 0.5" figure-1c-friction-cone.json "--at -1 0 --at 1 0 --at 0 0"
-show "Figure 2: two friction cones combined (labels intersected)" figure-2-two-friction-cones.json "--at -1 0 --at 3 1"
-show "Intersection of two parallel forces on different lines: only the zero wrench (labels: the whole plane, twice; the paper's hull shorthand would give y >= 0)" parallel-rays-intersection.json "--at 0 -1"
+show "Figure 1a: a force along +x through the origin" label "$here/figure-1a-force.json" --at 0 1 --at 0 -1 --at 3 0
+show "Figure 1b: all forces through the point (1, 2)" label "$here/figure-1b-point.json" --at 1 2 --at 0 0
+show "Figure 1c: friction cone at the origin, normal +y, mu = 0.5" label "$here/figure-1c-friction-cone.json" --at -1 0 --at 1 0 --at 0 0
+show "Figure 2: two friction cones combined (labels intersected)" label "$here/figure-2-two-friction-cones.json" --at -1 0 --at 3 1
+show "Intersection of two parallel forces on different lines: only the zero wrench (the paper's hull shorthand would give y >= 0)" label "$here/parallel-rays-intersection.json" --at 0 -1
+show "Figure 3: the block along the wall, every mode (goal: rr)" analyze "$here/figure-3-block-along-wall.json"
+show "Figure 4: two-point peg insertion, every mode (goal: rl, down in two-point contact)" analyze "$here/figure-4-peg-in-hole.json"
+show "A block on a table: under its weight alone" query "$here/block-on-table.json" --wrench 0 -9.81 -4.905
+show "... pushed with 20 N along its base" query "$here/block-on-table.json" --wrench 20 -9.81 -5.105
+show "... pushed with 20 N near its top" query "$here/block-on-table.json" --wrench 20 -9.81 -14.705
+show "A rod wedged in a corner (mu = 2): every mode" modes "$here/rod-in-corner.json"
+show "... a wrench that can both jam it (ff) and throw it off (ss): Painleve-style ambiguity" query "$here/rod-in-corner.json" --wrench 19 16 -2

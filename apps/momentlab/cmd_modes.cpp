@@ -4,20 +4,12 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "describe.hpp"
 #include "momentlab/io/scene_json.hpp"
 #include "momentlab/mechanics/modes.hpp"
 
 namespace momentlab::cli {
 namespace {
-
-const char* in_words(char letter) {
-    switch (letter) {
-        case 's': return "separates";
-        case 'f': return "fixed";
-        case 'r': return "slides right (+t)";
-        default: return "slides left (-t)";
-    }
-}
 
 struct ModesOptions {
     std::string file;
@@ -35,13 +27,8 @@ int run(const ModesOptions& o) {
     }
     std::cout << set.modes.size() << " contact modes; feasible twists: " << set.feasible_twists.kind() << "\n";
     for (const Mode& m : set.modes) {
-        std::cout << "  " << std::left << std::setw(static_cast<int>(scene.contacts.size()) + 2) << m.letters;
-        for (std::size_t j = 0; j < m.letters.size(); ++j) {
-            const std::string& name = scene.contacts[j].name;
-            std::cout << (j ? ", " : "") << (name.empty() ? "contact " + std::to_string(j + 1) : name) << " "
-                      << in_words(m.letters[j]);
-        }
-        std::cout << "\n";
+        std::cout << "  " << std::left << std::setw(static_cast<int>(scene.contacts.size()) + 2) << m.letters
+                  << describe_mode(scene, m.letters) << "\n";
     }
     return 0;
 }

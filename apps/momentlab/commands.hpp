@@ -11,6 +11,10 @@ std::function<int()> add_label_command(CLI::App& app);
 /// Adds the `modes` subcommand.
 std::function<int()> add_modes_command(CLI::App& app);
 
+/// Adds the `query` and `analyze` subcommands.
+std::function<int()> add_query_command(CLI::App& app);
+std::function<int()> add_analyze_command(CLI::App& app);
+
 /// Reads a whole file; throws InputError at "$" if it cannot be read.
 std::string read_file(const std::string& path);
 

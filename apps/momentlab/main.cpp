@@ -11,6 +11,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     const auto run_label = momentlab::cli::add_label_command(app);
     const auto run_modes = momentlab::cli::add_modes_command(app);
+    const auto run_query = momentlab::cli::add_query_command(app);
+    const auto run_analyze = momentlab::cli::add_analyze_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -19,6 +21,8 @@ int main(int argc, char** argv) {
     try {
         if (app.got_subcommand("label")) return run_label();
         if (app.got_subcommand("modes")) return run_modes();
+        if (app.got_subcommand("query")) return run_query();
+        if (app.got_subcommand("analyze")) return run_analyze();
     } catch (const std::invalid_argument& e) {
         std::cerr << "momentlab: " << e.what() << "\n";
         return 2;

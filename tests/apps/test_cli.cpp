@@ -1,7 +1,10 @@
 // The command-line tool as a user runs it: output of `label`, exit codes, one-line errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <sstream>
+#include <vector>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -59,6 +62,63 @@ TEST(Cli, BadInputExitsTwoWithOneLineNamingTheField) {
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
     EXPECT_EQ(run("label /nonexistent.json").status, 2);
     EXPECT_EQ(run("label").status, 2);
+}
+
+TEST(Cli, ModesJsonForThreeFloorContacts) {
+    std::ofstream("/tmp/momentlab_floor.json") << R"({"contacts": [{"point": [0, 0], "normal": [0, 1]},
+        {"point": [1, 0], "normal": [0, 1]}, {"point": [2, 0], "normal": [0, 1]}]})";
+    const Result r = run("modes /tmp/momentlab_floor.json --json");
+    ASSERT_EQ(r.status, 0);
+    auto modes = nlohmann::json::parse(r.out)["modes"].get<std::vector<std::string>>();
+    std::vector<std::string> expected = {"fff", "sss", "fss", "ssf", "rss", "lss", "ssr", "ssl", "rrr", "lll"};
+    std::sort(modes.begin(), modes.end());
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(modes, expected);
+}
+
+TEST(Cli, QueryJsonAndJsonLines) {
+    const std::string scene = kExamples + "/block-on-table.json";
+    Result r = run("query " + scene + " --wrench 0 -9.81 -4.905 --json");
+    ASSERT_EQ(r.status, 0);
+    auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["verdict"], "unique");
+    EXPECT_EQ(j["modes"], nlohmann::json::array({"ff"}));
+    std::ofstream("/tmp/momentlab_wrenches.txt") << "[0, -9.81, -4.905]\n[20, -9.81, -5.105]\n\n[0, 9.81, 4.905]\n";
+    r = run("query " + scene + " --wrenches /tmp/momentlab_wrenches.txt");
+    ASSERT_EQ(r.status, 0);
+    std::istringstream lines(r.out);
+    std::vector<nlohmann::json> answers;
+    for (std::string line; std::getline(lines, line);) answers.push_back(nlohmann::json::parse(line));
+    ASSERT_EQ(answers.size(), 3u);
+    EXPECT_EQ(answers[0]["modes"], nlohmann::json::array({"ff"}));
+    EXPECT_EQ(answers[1]["modes"], nlohmann::json::array({"rr"}));  // 20 N along the base
+    EXPECT_EQ(answers[2]["modes"], nlohmann::json::array({"ss"}));  // net force up through the centre
+    std::ofstream("/tmp/momentlab_bad_wrenches.txt") << "[1, 2]\n";
+    EXPECT_EQ(run("query " + scene + " --wrenches /tmp/momentlab_bad_wrenches.txt").status, 2);
+    EXPECT_NE(stderr_text().find("momentlab_bad_wrenches.txt:1"), std::string::npos) << stderr_text();
+}
+
+TEST(Cli, AnalyzeJsonHasEveryModeWithItsCones) {
+    const Result r = run("analyze " + kExamples + "/figure-3-block-along-wall.json --json");
+    ASSERT_EQ(r.status, 0);
+    const auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["modes"].size(), 10u);
+    for (const auto& m : j["modes"]) {
+        for (const char* set : {"F", "T", "E"}) {
+            EXPECT_TRUE(m[set].contains("cone") && m[set].contains("labels")) << m["mode"];
+        }
+        EXPECT_TRUE(m["A"].contains("rays"));
+    }
+}
+
+TEST(Cli, SceneErrorsNameTheField) {
+    std::ofstream("/tmp/momentlab_bad_scene.json") << R"({"body": {"mass": -1, "com": [0, 0], "inertia": 1},
+        "contacts": [{"point": [0, 0], "normal": [0, 1]}]})";
+    EXPECT_EQ(run("modes /tmp/momentlab_bad_scene.json").status, 2);
+    EXPECT_NE(stderr_text().find("$.body.mass"), std::string::npos) << stderr_text();
+    std::ofstream("/tmp/momentlab_bad_scene.json") << R"({"contacts": [{"point": [0, 0], "normal": [0, 0]}]})";
+    EXPECT_EQ(run("modes /tmp/momentlab_bad_scene.json").status, 2);
+    EXPECT_NE(stderr_text().find("$.contacts[0].normal"), std::string::npos) << stderr_text();
 }
 
 }  // namespace
