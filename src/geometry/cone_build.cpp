@@ -149,24 +149,30 @@ Groups angular_sort(std::vector<Item>& items, const AngularOrder& ord, Closer cl
         return -ord.orient(a.v, b.v);
     };
     // One exact comparison per neighbouring pair; an item found out of order is moved back
-    // (insertion), which is rare when the keys are good. `same[i]`: items i-1, i share an angle.
+    // (insertion), which is rare when the keys are good. When they are not (generators almost
+    // in one plane through the pivot, where the floating-point angles are noise), the moves
+    // are bounded and a plain exact sort takes over, so the whole stays O(n log n).
+    // `same[i]`: items i-1 and i share an angle.
     std::vector<char> same(items.size(), 0);
-    for (std::size_t i = 1; i < items.size(); ++i) {
-        Sign s = compare(items[i - 1], items[i]);
-        if (s == Sign::Positive) {
-            std::size_t j = i;
-            do {
-                std::swap(items[j], items[j - 1]);
-                --j;
-            } while (j > 0 && compare(items[j - 1], items[j]) == Sign::Positive);
-            for (std::size_t k = std::max<std::size_t>(j, 1); k <= i; ++k) {
-                same[k] = compare(items[k - 1], items[k]) == Sign::Zero;
+    std::size_t moves = 0;
+    const std::size_t budget = 8 * items.size() + 1024;
+    bool sorted = true;
+    for (std::size_t i = 1; i < items.size() && sorted; ++i) {
+        std::size_t j = i;
+        while (j > 0 && compare(items[j - 1], items[j]) == Sign::Positive) {
+            std::swap(items[j], items[j - 1]);
+            --j;
+            if (++moves > budget) {
+                sorted = false;
+                break;
             }
-            if (j == 0) same[0] = 0;
-            continue;
         }
-        same[i] = s == Sign::Zero;
     }
+    if (!sorted) {
+        std::sort(items.begin(), items.end(),
+                  [&](const Item& a, const Item& b) { return compare(a, b) == Sign::Negative; });
+    }
+    for (std::size_t i = 1; i < items.size(); ++i) same[i] = compare(items[i - 1], items[i]) == Sign::Zero;
     Groups groups;
     std::size_t start = 0;
     for (std::size_t i = 1; i <= items.size(); ++i) {
@@ -201,12 +207,13 @@ Parts build_planar(std::span<const Vec3> g, const Vec3& a, const Vec3& b) {
                      Vec3::Zero()};
     std::vector<Item> items;
     items.reserve(g.size());
+    // Keys in the coordinate plane across the axis, where the exact orientation is the
+    // sign of (u x v)[axis]: the same sense, so the keys increase with the exact order.
     const int ci = (ord.axis + 1) % 3, cj = (ord.axis + 2) % 3;
-    const double flip = a.cross(b)[ord.axis] < 0 ? -1.0 : 1.0;  // hint only
     for (std::size_t i = 0; i < g.size(); ++i) {
         const int half = ord.half(g[i]);
         const double along = a[ci] * g[i][ci] + a[cj] * g[i][cj];
-        const double across = flip * (a[ci] * g[i][cj] - a[cj] * g[i][ci]);
+        const double across = a[ci] * g[i][cj] - a[cj] * g[i][ci];
         items.push_back({g[i], pseudo_angle(along, across, half), static_cast<int>(i), half});
     }
     const Groups groups = angular_sort(items, ord, [](const Vec3&, const Vec3&) { return false; });
