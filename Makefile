@@ -7,7 +7,7 @@ JOBS ?= 2
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
 APT_PACKAGES := g++ cmake make libeigen3-dev libgmp-dev nlohmann-json3-dev libcli11-dev \
-                libgtest-dev libbenchmark-dev libcdd-dev
+                libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev
 
 .PHONY: all deps build demo test bench clean
 
@@ -37,6 +37,7 @@ test: build
 
 bench: build
 	$(BUILD)/bench/bench_cone
+	$(BUILD)/bench/bench_contact
 
 clean:
 	rm -rf build out
