@@ -1,6 +1,7 @@
 #include "momentlab/io/scene_json.hpp"
 
 #include "json_read.hpp"
+#include "momentlab/mechanics/find_contacts.hpp"
 
 namespace momentlab {
 namespace {
@@ -59,14 +60,6 @@ Scene read_scene(const json& doc) {
     if (!doc.is_object()) throw InputError("$", "expected a scene object");
     Scene scene;
     if (doc.contains("body")) scene.body = read_body(doc.at("body"), "$.body");
-    if (!doc.contains("contacts")) {
-        throw InputError("$", "missing field \"contacts\" (finding contacts from the polygons is not implemented yet)");
-    }
-    const json& contacts = doc.at("contacts");
-    if (!contacts.is_array()) throw InputError("$.contacts", "expected a list of contacts");
-    for (std::size_t i = 0; i < contacts.size(); ++i) {
-        scene.contacts.push_back(read_contact(contacts[i], at("$.contacts", i)));
-    }
     if (doc.contains("obstacles")) {
         const json& obstacles = doc.at("obstacles");
         if (!obstacles.is_array()) throw InputError("$.obstacles", "expected a list of obstacles");
@@ -74,6 +67,33 @@ Scene read_scene(const json& doc) {
             const std::string p = at("$.obstacles", i);
             scene.obstacles.push_back(vec2_list(field(obstacles[i], p, "polygon"), p + ".polygon"));
         }
+    }
+    if (doc.contains("contacts")) {
+        const json& contacts = doc.at("contacts");
+        if (!contacts.is_array()) throw InputError("$.contacts", "expected a list of contacts");
+        for (std::size_t i = 0; i < contacts.size(); ++i) {
+            scene.contacts.push_back(read_contact(contacts[i], at("$.contacts", i)));
+        }
+    } else {
+        if (!scene.body || scene.body->polygon.empty() || scene.obstacles.empty()) {
+            throw InputError("$", "missing field \"contacts\" (or a body polygon and obstacles to find them from)");
+        }
+        ContactFinding options;
+        if (doc.contains("contact_distance")) {
+            options.distance = number(doc.at("contact_distance"), "$.contact_distance");
+            if (options.distance < 0.0) throw InputError("$.contact_distance", "expected a distance >= 0");
+        }
+        if (doc.contains("mu")) {
+            options.mu = number(doc.at("mu"), "$.mu");
+            if (options.mu < 0.0) throw InputError("$.mu", "expected mu >= 0");
+            options.mu_kinetic = options.mu;
+        }
+        try {
+            scene.contacts = find_contacts(scene.body->polygon, scene.obstacles, options);
+        } catch (const std::invalid_argument& e) {
+            throw InputError("$", e.what());
+        }
+        if (scene.contacts.empty()) throw InputError("$", "the body polygon touches no obstacle (no contacts found)");
     }
     return scene;
 }

@@ -13,8 +13,9 @@
 
 namespace momentlab {
 
-/// The scene described by `doc`. Throws InputError naming the field on bad input. Contacts
-/// found from the polygons' geometry are not implemented yet: a scene needs "contacts".
+/// The scene described by `doc`. Throws InputError naming the field on bad input. Without
+/// "contacts", they are found from the body polygon and the obstacles (find_contacts), with
+/// the optional top-level "contact_distance" (default 1e-9) and "mu" (default 0).
 [[nodiscard]] Scene read_scene(const nlohmann::json& doc);
 
 /// Parses `text` as JSON and reads the scene.

@@ -1,0 +1,36 @@
+#pragma once
+
+/// \file
+/// Contacts from geometry: a body polygon touching fixed polygons.
+
+#include <vector>
+
+#include "momentlab/mechanics/scene.hpp"
+
+namespace momentlab {
+
+/// Options of find_contacts.
+struct ContactFinding {
+    /// How close (scene length units) a vertex must be to an edge to touch it. This is the
+    /// one tolerance of momentlab, and a modelling choice: real parts do not touch exactly,
+    /// and scene files round coordinates. Two contacts whose points and unit normals both
+    /// differ by less than it are one.
+    double distance = 1e-9;
+    /// Friction coefficients given to every contact found.
+    double mu = 0.0;
+    double mu_kinetic = 0.0;
+};
+
+/// The point contacts between `body` and the `obstacles` (polygons in either orientation):
+/// every body vertex lying on an obstacle edge (normal: the edge's outward normal) and every
+/// obstacle vertex lying on a body edge (normal: into the body), when the neighbouring
+/// vertices stay outside the touched edge's line (so a corner resting on a corner touches
+/// only the supporting edge; an obstacle vertex at a body vertex is left to the body vertex,
+/// which then gets one contact per obstacle edge ending there: corner on corner is degenerate,
+/// its non-penetrating motions are not convex, and this over-constrains it).
+/// An edge lying along another edge gives two contacts, at the ends of the overlap. Throws std::invalid_argument for polygons with fewer than 3 vertices
+/// or non-finite coordinates.
+[[nodiscard]] std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygon>& obstacles,
+                                                 const ContactFinding& options = {});
+
+}  // namespace momentlab

@@ -1,0 +1,85 @@
+#include "momentlab/mechanics/find_contacts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace momentlab {
+namespace {
+
+// The polygon counter-clockwise (reversed if its signed area is negative).
+Polygon counter_clockwise(const Polygon& p, const char* what) {
+    if (p.size() < 3) throw std::invalid_argument(std::string(what) + ": a polygon needs at least 3 vertices");
+    double area = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (!p[i].allFinite()) throw std::invalid_argument(std::string(what) + ": non-finite vertex");
+        area += cross2(p[i], p[(i + 1) % p.size()]);
+    }
+    Polygon q = p;
+    if (area < 0.0) std::reverse(q.begin(), q.end());
+    return q;
+}
+
+// Distance from x to the segment [a, b].
+double segment_distance(const Vec2& x, const Vec2& a, const Vec2& b) {
+    const Vec2 d = b - a;
+    const double len2 = d.squaredNorm();
+    const double s = len2 > 0.0 ? std::clamp((x - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+    return (x - (a + s * d)).norm();
+}
+
+// Outward unit normal of the counter-clockwise edge a -> b.
+Vec2 outward(const Vec2& a, const Vec2& b) {
+    const Vec2 d = b - a;
+    return Vec2(d.y(), -d.x()) / d.norm();
+}
+
+// Vertices of `touching` lying on edges of `touched`; `into_touching` gives the normal's sense.
+void vertex_on_edge(const Polygon& touching, const Polygon& touched, bool body_is_touching,
+                    const ContactFinding& o, std::vector<Contact>& out) {
+    const std::size_t n = touching.size(), m = touched.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec2& v = touching[i];
+        for (std::size_t k = 0; k < m; ++k) {
+            const Vec2& a = touched[k];
+            const Vec2& b = touched[(k + 1) % m];
+            if ((b - a).squaredNorm() == 0.0 || segment_distance(v, a, b) > o.distance) continue;
+            // Vertex on vertex: an obstacle vertex at a body vertex is left to that body
+            // vertex, whose contact takes the supporting obstacle edge's normal.
+            if (!body_is_touching && ((v - a).norm() <= o.distance || (v - b).norm() <= o.distance)) continue;
+            const Vec2 out_n = outward(a, b);
+            // The neighbours of v must stay outside the touched edge's line.
+            const Vec2& prev = touching[(i + n - 1) % n];
+            const Vec2& next = touching[(i + 1) % n];
+            if ((prev - a).dot(out_n) < -o.distance || (next - a).dot(out_n) < -o.distance) continue;
+            // Into the moving body: the obstacle's outward normal, or the body edge's inward one.
+            const Vec2 normal = body_is_touching ? out_n : Vec2(-out_n);
+            out.push_back(Contact::make(v, normal, o.mu, o.mu_kinetic));
+        }
+    }
+}
+
+}  // namespace
+
+std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygon>& obstacles,
+                                   const ContactFinding& options) {
+    if (!(options.distance >= 0.0)) throw std::invalid_argument("find_contacts: distance must be >= 0");
+    const Polygon b = counter_clockwise(body, "body");
+    std::vector<Contact> found;
+    for (const Polygon& raw : obstacles) {
+        const Polygon o = counter_clockwise(raw, "obstacle");
+        vertex_on_edge(b, o, true, options, found);
+        vertex_on_edge(o, b, false, options, found);
+    }
+    std::vector<Contact> out;
+    for (const Contact& c : found) {
+        const bool repeated = std::any_of(out.begin(), out.end(), [&](const Contact& d) {
+            return (c.point - d.point).norm() <= options.distance && (c.normal - d.normal).norm() <= options.distance;
+        });
+        if (!repeated) out.push_back(c);
+    }
+    return out;
+}
+
+}  // namespace momentlab
