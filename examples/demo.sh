@@ -18,8 +18,9 @@ show "Figure 2: two friction cones combined (labels intersected)" label "$here/f
 show "Intersection of two parallel forces on different lines: only the zero wrench (the paper's hull shorthand would give y >= 0)" label "$here/parallel-rays-intersection.json" --at 0 -1
 show "Figure 3: the block along the wall, every mode (goal: rr)" analyze "$here/figure-3-block-along-wall.json"
 show "Figure 4: two-point peg insertion, every mode (goal: rl, down in two-point contact)" analyze "$here/figure-4-peg-in-hole.json"
-show "A block on a table: under its weight alone" query "$here/block-on-table.json" --wrench 0 -9.81 -4.905
+show "A block on a table: every mode" analyze "$here/block-on-table.json"
+show "... under its weight alone" query "$here/block-on-table.json" --wrench 0 -9.81 -4.905
 show "... pushed with 20 N along its base" query "$here/block-on-table.json" --wrench 20 -9.81 -5.105
 show "... pushed with 20 N near its top" query "$here/block-on-table.json" --wrench 20 -9.81 -14.705
-show "A rod wedged in a corner (mu = 2): every mode" modes "$here/rod-in-corner.json"
+show "A rod wedged in a corner (mu = 2): every mode" analyze "$here/rod-in-corner.json"
 show "... a wrench that can both jam it (ff) and throw it off (ss): Painleve-style ambiguity" query "$here/rod-in-corner.json" --wrench 19 16 -2

@@ -90,7 +90,7 @@ int run_analyze(const AnalyzeOptions& o) {
     if (o.json) {
         nlohmann::json modes = nlohmann::json::array();
         for (const ModeForces& m : analysis) {
-            const Labels centres(m.mode.twists.dual());
+            const Labels centres = rotation_centres(m.mode);
             modes.push_back({{"mode", m.mode.letters},
                              {"A", to_json(m.mode.twists)},
                              {"rotation_centres", to_json(centres)},
@@ -103,7 +103,7 @@ int run_analyze(const AnalyzeOptions& o) {
     }
     std::cout << analysis.size() << " contact modes\n";
     for (const ModeForces& m : analysis) {
-        const Labels centres(m.mode.twists.dual());
+        const Labels centres = rotation_centres(m.mode);
         std::cout << "  " << std::left << std::setw(static_cast<int>(scene.contacts.size()) + 2) << m.mode.letters
                   << describe_mode(scene, m.mode.letters) << "\n"
                   << "      rotation centres  + " << region_text(centres.plus()) << ";  - "

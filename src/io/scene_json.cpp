@@ -100,4 +100,29 @@ Scene read_scene(const json& doc) {
 
 Scene read_scene_text(const std::string& text) { return read_scene(parse(text)); }
 
+json to_json(const Scene& scene) {
+    auto xy = [](const Vec2& v) { return json::array({v.x(), v.y()}); };
+    auto polygon = [&](const Polygon& p) {
+        json out = json::array();
+        for (const Vec2& v : p) out.push_back(xy(v));
+        return out;
+    };
+    json doc = json::object();
+    if (scene.body) {
+        doc["body"] = {{"mass", scene.body->mass}, {"com", xy(scene.body->com)}, {"inertia", scene.body->inertia}};
+        if (!scene.body->polygon.empty()) doc["body"]["polygon"] = polygon(scene.body->polygon);
+    }
+    doc["contacts"] = json::array();
+    for (const Contact& c : scene.contacts) {
+        json j = {{"point", xy(c.point)}, {"normal", xy(c.normal)}, {"mu", c.mu}, {"mu_kinetic", c.mu_kinetic}};
+        if (!c.name.empty()) j["name"] = c.name;
+        doc["contacts"].push_back(j);
+    }
+    if (!scene.obstacles.empty()) {
+        doc["obstacles"] = json::array();
+        for (const Polygon& p : scene.obstacles) doc["obstacles"].push_back({{"polygon", polygon(p)}});
+    }
+    return doc;
+}
+
 }  // namespace momentlab

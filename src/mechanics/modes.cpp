@@ -212,4 +212,6 @@ private:
 
 ModeSet enumerate_modes(const std::vector<Contact>& contacts) { return Enumerator(contacts).run(); }
 
+Labels rotation_centres(const Mode& mode) { return Labels(mode.twists.dual()); }
+
 }  // namespace momentlab

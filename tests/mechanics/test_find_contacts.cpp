@@ -86,5 +86,23 @@ TEST(FindContacts, SceneWithoutContactsFindsThem) {
     EXPECT_THROW((void)read_scene_text(R"({"body": {"mass": 1, "com": [0, 0], "inertia": 1}})"), InputError);
 }
 
+TEST(SceneJson, WrittenScenesReadBackUnchanged) {
+    std::ifstream in(std::string(MOMENTLAB_EXAMPLES) + "/figure-4-peg-in-hole.json");
+    std::ostringstream text;
+    text << in.rdbuf();
+    const Scene a = read_scene_text(text.str());
+    const Scene b = read_scene(to_json(a));
+    ASSERT_EQ(b.contacts.size(), a.contacts.size());
+    for (std::size_t j = 0; j < a.contacts.size(); ++j) {
+        EXPECT_EQ(b.contacts[j].point, a.contacts[j].point);
+        EXPECT_EQ(b.contacts[j].normal, a.contacts[j].normal);  // unit already: unchanged
+        EXPECT_EQ(b.contacts[j].mu_kinetic, a.contacts[j].mu_kinetic);
+        EXPECT_EQ(b.contacts[j].name, a.contacts[j].name);
+    }
+    EXPECT_EQ(b.body->inertia, a.body->inertia);
+    EXPECT_EQ(b.body->polygon, a.body->polygon);
+    EXPECT_EQ(b.obstacles.size(), a.obstacles.size());
+}
+
 }  // namespace
 }  // namespace momentlab

@@ -59,6 +59,9 @@ TEST(PaperFigures, Figure3BlockSlidingAlongTheWall) {
     EXPECT_TRUE(has_vertex(e.minus(), Vec3(-1, 2, 8)));
     EXPECT_TRUE(has_direction(e.minus().rays, Vec2(-1, 0)));
     EXPECT_TRUE(has_direction(e.minus().rays, Vec2(1, -2)));
+    // The mode translates to the right: its rotation centres are at infinity only.
+    const Labels centres = rotation_centres(rr.mode);
+    EXPECT_TRUE(centres.plus().is_empty && centres.minus().is_empty);
     // "Any effector force passing between these two regions will slide the block": a force
     // (1, -1/4) through (0.3, 0.25) passes between them (it has moment >= 0 about (7/8, 1/4)
     // and <= 0 about (-1/8, 1/4))...

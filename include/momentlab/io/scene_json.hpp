@@ -18,6 +18,9 @@ namespace momentlab {
 /// the optional top-level "contact_distance" (default 1e-9) and "mu" (default 0).
 [[nodiscard]] Scene read_scene(const nlohmann::json& doc);
 
+/// The scene as JSON, in the same format (contacts always written out, mu_kinetic included).
+[[nodiscard]] nlohmann::json to_json(const Scene& scene);
+
 /// Parses `text` as JSON and reads the scene.
 [[nodiscard]] Scene read_scene_text(const std::string& text);
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "momentlab/geometry/cone.hpp"
+#include "momentlab/geometry/labels.hpp"
 #include "momentlab/mechanics/scene.hpp"
 
 namespace momentlab {
@@ -30,6 +31,12 @@ struct ModeSet {
     /// The all-f mode first (always feasible), then the others; each exactly once.
     std::vector<Mode> modes;
 };
+
+/// The rotation centres of a mode, labelled as in Reuleaux's method: the + region holds the
+/// centres of its counter-clockwise twists, the - region those of its clockwise ones
+/// (a twist omega (y, -x, 1) rotates about (x, y)); translations are the directions at
+/// infinity. These are the moment labels of the dual of the twist cone.
+[[nodiscard]] Labels rotation_centres(const Mode& mode);
 
 /// Enumerates the contact modes exactly: every decision is the exact sign of a polynomial in
 /// the stored N_j = (n_j, p_j x n_j) and T_j = (t_j, p_j x t_j). O(n log n) for n contacts.
