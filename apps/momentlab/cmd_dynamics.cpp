@@ -104,13 +104,13 @@ int run_analyze(const AnalyzeOptions& o) {
     std::cout << analysis.size() << " contact modes\n";
     for (const ModeForces& m : analysis) {
         const Labels centres = rotation_centres(m.mode);
+        const Labels applied(m.applied);
         std::cout << "  " << std::left << std::setw(static_cast<int>(scene.contacts.size()) + 2) << m.mode.letters
                   << describe_mode(scene, m.mode.letters) << "\n"
                   << "      rotation centres  + " << region_text(centres.plus()) << ";  - "
                   << region_text(centres.minus()) << "\n"
                   << "      applied wrenches E: " << m.applied.kind() << "; labels + "
-                  << region_text(Labels(m.applied).plus()) << ";  - " << region_text(Labels(m.applied).minus())
-                  << "\n";
+                  << region_text(applied.plus()) << ";  - " << region_text(applied.minus()) << "\n";
     }
     return 0;
 }

@@ -4,24 +4,15 @@
 
 #include <algorithm>
 
+#include "../common/label_checks.hpp"
 #include "momentlab/geometry/force_sets.hpp"
 #include "momentlab/geometry/labels.hpp"
 
 namespace momentlab {
 namespace {
 
-bool has_direction(const std::vector<Vec2>& list, const Vec2& d) {
-    return std::any_of(list.begin(), list.end(), [&](const Vec2& v) {
-        return cross2_sign(v, d) == Sign::Zero && v.dot(d) > 0;
-    });
-}
-
-// True when one of the homogeneous vertices is a positive multiple of (x, y, s).
-bool has_vertex(const Region& r, const Vec3& xys) {
-    return std::any_of(r.vertices_h.begin(), r.vertices_h.end(), [&](const Vec3& v) {
-        return parallel(v, xys) && dot_sign(v, xys) == Sign::Positive;
-    });
-}
+using testing::has_direction;
+using testing::has_vertex;
 
 TEST(Labels, Figure1aLineOfForce) {
     // A force along +x through the origin: + to its left (y > 0), - to its right, both on it.

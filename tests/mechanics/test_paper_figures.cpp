@@ -7,12 +7,16 @@
 #include <fstream>
 #include <sstream>
 
+#include "../common/label_checks.hpp"
 #include "momentlab/geometry/labels.hpp"
 #include "momentlab/io/scene_json.hpp"
 #include "momentlab/mechanics/dynamics.hpp"
 
 namespace momentlab {
 namespace {
+
+using testing::has_direction;
+using testing::has_vertex;
 
 Scene load(const std::string& name) {
     std::ifstream in(std::string(MOMENTLAB_EXAMPLES) + "/" + name);
@@ -25,18 +29,6 @@ const ModeForces& mode(const std::vector<ModeForces>& a, const std::string& lett
     const auto it = std::find_if(a.begin(), a.end(), [&](const ModeForces& m) { return m.mode.letters == letters; });
     if (it == a.end()) throw std::runtime_error("no mode " + letters);
     return *it;
-}
-
-bool has_vertex(const Region& r, const Vec3& xys) {
-    return std::any_of(r.vertices_h.begin(), r.vertices_h.end(), [&](const Vec3& v) {
-        return parallel(v, xys) && dot_sign(v, xys) == Sign::Positive;
-    });
-}
-
-bool has_direction(const std::vector<Vec2>& list, const Vec2& d) {
-    return std::any_of(list.begin(), list.end(), [&](const Vec2& v) {
-        return cross2_sign(v, d) == Sign::Zero && v.dot(d) > 0;
-    });
 }
 
 TEST(PaperFigures, Figure3BlockSlidingAlongTheWall) {

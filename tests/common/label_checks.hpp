@@ -1,0 +1,26 @@
+#pragma once
+
+// Exact checks on label regions shared by the tests.
+
+#include <algorithm>
+#include <vector>
+
+#include "momentlab/geometry/labels.hpp"
+
+namespace momentlab::testing {
+
+/// True when one of the region's homogeneous vertices is a positive multiple of (x, y, s).
+inline bool has_vertex(const Region& r, const Vec3& xys) {
+    return std::any_of(r.vertices_h.begin(), r.vertices_h.end(), [&](const Vec3& v) {
+        return parallel(v, xys) && dot_sign(v, xys) == Sign::Positive;
+    });
+}
+
+/// True when one of the directions is a positive multiple of d (exactly).
+inline bool has_direction(const std::vector<Vec2>& list, const Vec2& d) {
+    return std::any_of(list.begin(), list.end(), [&](const Vec2& v) {
+        return cross2_sign(v, d) == Sign::Zero && v.dot(d) > 0;
+    });
+}
+
+}  // namespace momentlab::testing
