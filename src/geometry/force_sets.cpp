@@ -45,9 +45,8 @@ Cone friction_cone(const Vec2& point, const Vec2& normal, double mu) {
     require_finite(point, "point");
     require_nonzero(normal, "normal");
     if (!(mu >= 0.0) || !std::isfinite(mu)) throw std::invalid_argument("mu must be finite and >= 0");
-    const Vec2 t(normal.y(), -normal.x());
-    const Vec3 g[] = {wrench_at(point, normal + mu * t), wrench_at(point, normal - mu * t)};
-    return Cone::from_generators(g);
+    const auto edges = friction_cone_edges(point, normal, mu);
+    return Cone::from_generators(edges);
 }
 
 Cone pure_moments(int sign) {

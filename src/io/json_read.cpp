@@ -29,7 +29,7 @@ Vec3 vec3(const json& v, const std::string& path) {
 std::vector<Vec3> vec3_list(const json& v, const std::string& path) {
     if (!v.is_array()) throw InputError(path, "expected a list of [a, b, c]");
     std::vector<Vec3> out;
-    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(vec3(v[i], path + "[" + std::to_string(i) + "]"));
+    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(vec3(v[i], at(path, i)));
     return out;
 }
 

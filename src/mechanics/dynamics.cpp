@@ -23,17 +23,17 @@ std::vector<ModeForces> analyze(const Scene& scene) {
         std::vector<Vec3> contact_generators;
         for (std::size_t j = 0; j < scene.contacts.size(); ++j) {
             const Contact& c = scene.contacts[j];
-            const Vec2 n = c.normal, t = c.tangent();
             switch (mode.letters[j]) {
-                case 'f':  // anywhere in the friction cone
-                    contact_generators.push_back(wrench_at(c.point, n + c.mu * t));
-                    contact_generators.push_back(wrench_at(c.point, n - c.mu * t));
+                case 'f': {  // anywhere in the friction cone (static mu)
+                    const auto edges = friction_cone_edges(c.point, c.normal, c.mu);
+                    contact_generators.insert(contact_generators.end(), edges.begin(), edges.end());
                     break;
-                case 'r':  // friction opposes sliding along +t
-                    contact_generators.push_back(wrench_at(c.point, n - c.mu_kinetic * t));
+                }
+                case 'r':  // friction opposes sliding along +t: n - mu_k t
+                    contact_generators.push_back(friction_cone_edges(c.point, c.normal, c.mu_kinetic)[1]);
                     break;
-                case 'l':
-                    contact_generators.push_back(wrench_at(c.point, n + c.mu_kinetic * t));
+                case 'l':  // n + mu_k t
+                    contact_generators.push_back(friction_cone_edges(c.point, c.normal, c.mu_kinetic)[0]);
                     break;
                 default:
                     break;
