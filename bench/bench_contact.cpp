@@ -81,16 +81,33 @@ void BM_query(benchmark::State& state) {
     std::mt19937_64 rng(7 + static_cast<std::uint64_t>(state.range(0)));
     const Scene s = random_scene(static_cast<int>(state.range(0)), rng);
     const auto a = analyze(s);
+    const QueryIndex index(a);
     const auto w = random_wrenches(rng);
+    std::vector<std::size_t> modes;
     std::size_t i = 0, found = 0;
     for (auto _ : state) {
-        found += query(a, w[i++ & 1023]).modes.size();
+        index.query(w[i++ & 1023], modes);
+        found += modes.size();
     }
     benchmark::DoNotOptimize(found);
     state.SetItemsProcessed(state.iterations());
     state.counters["modes"] = static_cast<double>(a.size());
+    state.counters["planes"] = static_cast<double>(index.planes());
 }
 BENCHMARK(BM_query)->DenseRange(2, 8, 2);
+
+// The same questions by testing each E_i in turn (query(analysis, e)), for comparison.
+void BM_query_per_mode(benchmark::State& state) {
+    std::mt19937_64 rng(7 + static_cast<std::uint64_t>(state.range(0)));
+    const Scene s = random_scene(static_cast<int>(state.range(0)), rng);
+    const auto a = analyze(s);
+    const auto w = random_wrenches(rng);
+    std::size_t i = 0, found = 0;
+    for (auto _ : state) found += query(a, w[i++ & 1023]).modes.size();
+    benchmark::DoNotOptimize(found);
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_query_per_mode)->DenseRange(2, 8, 2);
 
 // The same question as an LCP: z = (lambda_n, lambda_+, lambda_-, sigma), size 4n,
 //   w_n = N' a >= 0 _|_ lambda_n,   w_+ = sigma + T' a >= 0 _|_ lambda_+,

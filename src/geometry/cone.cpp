@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -91,6 +92,28 @@ Sign ExactVector::dot_sign(const ExactVector& other) const {
     };
     const mpq_class value = q(u_, other.u_) * q(v_, other.v_) - q(u_, other.v_) * q(v_, other.u_);
     return sign_of_int(sgn(value) * sign_ * other.sign_);
+}
+
+ExactVector::Filter ExactVector::filter() const {
+    // With u = 2^-53: a cross-product coordinate c~ = fl(fl(p) - fl(q)) is within (2u + u^2)
+    // (|p| + |q|) of c = p - q, and a three-term dot product adds gamma_3 sum |c~_k| |w_k|, so
+    // the error is below 6u sum_k B_k |w_k| with B_k = |p_k| + |q_k| (B_k = |a_k| for inputs).
+    // 8u leaves room for the rounding of beta and of beta * max|w|; the range limits keep every
+    // product far from overflow and underflow (docs/robustness.md).
+    Filter f{Vec3::Zero(), std::numeric_limits<double>::infinity()};
+    double b = 0;
+    if (!constructed_) {
+        f.approx = value_;
+        b = value_.cwiseAbs().sum();
+    } else {
+        const Vec3& p = u_;
+        const Vec3& q = v_;
+        f.approx = p.cross(q) * static_cast<double>(sign_);
+        b = std::abs(p.y() * q.z()) + std::abs(p.z() * q.y()) + std::abs(p.z() * q.x()) + std::abs(p.x() * q.z()) +
+            std::abs(p.x() * q.y()) + std::abs(p.y() * q.x());
+    }
+    if (b >= 0x1p-400 && b <= 0x1p400 && f.approx.allFinite()) f.bound = 0x1p-50 * b;
+    return f;
 }
 
 ExactVector ExactVector::negated() const {

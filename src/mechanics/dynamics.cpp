@@ -1,10 +1,37 @@
 #include "momentlab/mechanics/dynamics.hpp"
 
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <map>
 #include <stdexcept>
 
 #include "momentlab/geometry/force_sets.hpp"
 
 namespace momentlab {
+
+namespace {
+
+// A plane up to sign: the exact normal divided by its first non-zero coordinate (so that
+// coordinate is 1), and the sign that division took off.
+std::pair<Rational3, int> plane_key(const ExactVector& v) {
+    Rational3 r = v.rational();
+    for (const mpq_class& x : r) {
+        if (sgn(x) == 0) continue;
+        const mpq_class first = x;
+        for (mpq_class& y : r) y /= first;
+        return {r, sgn(first)};
+    }
+    return {r, 0};
+}
+
+Verdict verdict_of(std::size_t count) {
+    return count == 0 ? Verdict::Inconsistent : (count == 1 ? Verdict::Unique : Verdict::Ambiguous);
+}
+
+}  // namespace
 
 Mat3 inertia_at_origin(const Body& body) {
     const double m = body.mass, cx = body.com.x(), cy = body.com.y();
@@ -60,7 +87,147 @@ QueryResult query(const std::vector<ModeForces>& analysis, const Vec3& e) {
     for (std::size_t i = 0; i < analysis.size(); ++i) {
         if (analysis[i].applied.has(e)) r.modes.push_back(i);
     }
-    r.verdict = r.modes.empty() ? Verdict::Inconsistent : (r.modes.size() == 1 ? Verdict::Unique : Verdict::Ambiguous);
+    r.verdict = verdict_of(r.modes.size());
+    return r;
+}
+
+
+QueryIndex::QueryIndex(const std::vector<ModeForces>& analysis) : mode_count_(analysis.size()) {
+    std::map<Rational3, std::pair<std::uint32_t, int>> seen;  // key -> (plane, orientation of the stored one)
+    std::vector<std::vector<std::pair<std::uint32_t, int>>> per_mode(analysis.size());
+    auto add = [&](std::size_t mode, const ExactVector& normal) {
+        auto [key, orientation] = plane_key(normal);
+        if (orientation == 0) return;  // 0 . e >= 0 holds everywhere
+        auto [it, inserted] = seen.try_emplace(std::move(key), static_cast<std::uint32_t>(exact_.size()), orientation);
+        if (inserted) exact_.push_back(normal);
+        per_mode[mode].emplace_back(it->second.first, orientation * it->second.second);
+    };
+    for (std::size_t i = 0; i < analysis.size(); ++i) {
+        const Cone& e = analysis[i].applied;
+        for (const ExactVector& f : e.facets()) add(i, f);
+        for (const ExactVector& q : e.equations()) {
+            add(i, q);
+            add(i, q.negated());
+        }
+    }
+    if (mode_count_ <= 32) build_filter(per_mode);
+    row_start_.push_back(0);
+    for (const auto& row : per_mode) {
+        halfspaces_.insert(halfspaces_.end(), row.begin(), row.end());
+        row_start_.push_back(static_cast<std::uint32_t>(halfspaces_.size()));
+    }
+}
+
+// The filter in single precision. Plane j is scaled by a power of two 2^k so that the sum B of
+// the magnitudes of its products (ExactVector::Filter, bound = 2^-50 B) lies in [1, 2); with
+// u = 2^-24 and max|e_k| = m, rounding the plane and e to floats and the dot product in floats
+// errs by less than 5.1 u B m < 2^-19 B m < 2^-18 m (docs/robustness.md). m is kept in
+// [2^-60, 2^60], so no float overflows, and underflow (below 2^-149 per operation) is far
+// inside the slack. Padding planes have a zero normal and a negative bound: always decided.
+void QueryIndex::build_filter(const Rows& per_mode) {
+    const std::size_t padded = (exact_.size() + kBlock - 1) / kBlock * kBlock;
+    ax_.assign(padded, 0.0F);
+    ay_.assign(padded, 0.0F);
+    az_.assign(padded, 0.0F);
+    bound_.assign(padded, -1.0F);
+    // Every plane allows at most the existing modes, so the AND over planes needs no final mask
+    // (the filter is only used when some plane, perhaps padding, is decided).
+    const std::uint32_t existing = mode_count_ == 32 ? ~std::uint32_t{0} : (std::uint32_t{1} << mode_count_) - 1;
+    if_positive_.assign(padded, existing);
+    if_negative_.assign(padded, existing);
+    for (std::size_t j = 0; j < exact_.size(); ++j) {
+        const ExactVector::Filter f = exact_[j].filter();
+        if (!std::isfinite(f.bound)) {
+            bound_[j] = std::numeric_limits<float>::infinity();  // never certain: always exact
+            continue;
+        }
+        const int k = -std::ilogb(std::ldexp(f.bound, 50));  // 2^k B in [1, 2)
+        const Vec3 a = f.approx * std::ldexp(1.0, k);
+        ax_[j] = static_cast<float>(a.x());
+        ay_[j] = static_cast<float>(a.y());
+        az_[j] = static_cast<float>(a.z());
+        bound_[j] = 0x1p-18F;
+    }
+    for (std::size_t i = 0; i < per_mode.size(); ++i) {
+        for (const auto& [plane, orientation] : per_mode[i]) {
+            // orientation +1: the mode needs plane . e >= 0, so a negative side excludes it.
+            (orientation > 0 ? if_negative_ : if_positive_)[plane] &= ~(std::uint32_t{1} << i);
+        }
+    }
+}
+
+namespace {
+
+constexpr std::size_t kLanes = 8;
+using Floats = float __attribute__((vector_size(kLanes * sizeof(float))));
+using Words = std::int32_t __attribute__((vector_size(kLanes * sizeof(std::int32_t))));
+
+template <class V>
+[[gnu::always_inline]] inline V load(const void* p) {
+    V v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
+}  // namespace
+
+// The filter runs over eight planes at a time (GCC/Clang vector extensions: AVX2 where the
+// machine has it, pairs of SSE2 registers otherwise); a wrench it cannot decide on some plane,
+// or one outside its range, takes the exact path.
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+Verdict QueryIndex::query(const Vec3& e, std::vector<std::size_t>& modes) const {
+    // A NaN or infinite coordinate fails the range test or leaves every plane undecided (NaN
+    // compares false), so the exact path, which checks, sees it.
+    modes.clear();
+    const double m = std::max({std::abs(e.x()), std::abs(e.y()), std::abs(e.z())});
+    if (!ax_.empty() && m >= 0x1p-60 && m <= 0x1p60) {
+        static_assert(kBlock == kLanes);
+        const auto x = static_cast<float>(e.x()), y = static_cast<float>(e.y()), z = static_cast<float>(e.z());
+        const auto mf = static_cast<float>(m);
+        const Floats ex = {x, x, x, x, x, x, x, x}, ey = {y, y, y, y, y, y, y, y}, ez = {z, z, z, z, z, z, z, z};
+        const Floats scale = {mf, mf, mf, mf, mf, mf, mf, mf};
+        Words allowed = ~Words{}, undecided = Words{};
+        for (std::size_t j = 0; j < ax_.size(); j += kBlock) {
+            const Floats d = load<Floats>(&ax_[j]) * ex + load<Floats>(&ay_[j]) * ey + load<Floats>(&az_[j]) * ez;
+            const Floats t = load<Floats>(&bound_[j]) * scale;
+            const Words positive = d > t, negative = d < -t, neither = ~(positive | negative);
+            allowed &= (positive & load<Words>(&if_positive_[j])) | (negative & load<Words>(&if_negative_[j])) | neither;
+            undecided |= neither;
+        }
+        std::int32_t all = ~std::int32_t{0}, any = 0;
+        for (std::size_t k = 0; k < kLanes; ++k) {
+            all &= allowed[k];
+            any |= undecided[k];
+        }
+        if (any == 0) {
+            auto in = static_cast<std::uint32_t>(all);
+            for (; in != 0; in &= in - 1) modes.push_back(static_cast<std::size_t>(std::countr_zero(in)));
+            return verdict_of(modes.size());
+        }
+    }
+    return exact_query(e, modes);
+}
+
+Verdict QueryIndex::exact_query(const Vec3& e, std::vector<std::size_t>& modes) const {
+    if (!e.allFinite()) throw std::invalid_argument("query: the wrench must be finite");
+    thread_local std::vector<signed char> sides;
+    sides.resize(exact_.size());
+    for (std::size_t j = 0; j < exact_.size(); ++j) sides[j] = static_cast<signed char>(exact_[j].dot_sign(e));
+    for (std::size_t i = 0; i < mode_count_; ++i) {
+        bool member = true;
+        for (std::uint32_t k = row_start_[i]; k < row_start_[i + 1] && member; ++k) {
+            member = sides[halfspaces_[k].first] * halfspaces_[k].second >= 0;
+        }
+        if (member) modes.push_back(i);
+    }
+    return verdict_of(modes.size());
+}
+
+QueryResult QueryIndex::query(const Vec3& e) const {
+    QueryResult r;
+    r.verdict = query(e, r.modes);
     return r;
 }
 

@@ -1,6 +1,8 @@
 // Per-mode force sets and queries: known answers, and agreement with an exact LP oracle.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -88,6 +90,10 @@ TEST(Dynamics, QueryAgreesWithExactLpOracle) {
                 if (oracle::applied_in_mode(m, nn, tt, gens, mf.mode.letters, e)) expected.insert(mf.mode.letters);
             }
             const auto ours = answer(a, e);
+            const QueryIndex index(a);
+            std::set<std::string> indexed;
+            for (std::size_t i : index.query(e).modes) indexed.insert(a[i].mode.letters);
+            EXPECT_EQ(indexed, expected) << "QueryIndex, scene " << s << " wrench " << e.transpose();
             ++wrenches;
             ++verdicts[to_string(query(a, e).verdict)];
             if (ours != expected) {
@@ -104,6 +110,77 @@ TEST(Dynamics, QueryAgreesWithExactLpOracle) {
     std::cout << "\n";
     EXPECT_EQ(failures, 0);
     EXPECT_GE(wrenches, 10000);
+}
+
+// QueryIndex against the per-mode test (query, checked against the oracle above) where its
+// filter is weakest: wrenches on and next to the planes of the E_i, at extreme magnitudes, and
+// scenes with more than the 32 modes of its filtered path.
+TEST(Dynamics, QueryIndexAgreesWithPerModeQueryOnHardWrenches) {
+    testing::Random rnd(31415);
+    int checked = 0, on_boundary = 0, exact_path_scenes = 0;
+    for (int s = 0; s < 80; ++s) {
+        Scene scene;
+        const bool integral = s % 2 == 0;
+        scene.body = Body{1.0, integral ? Vec2(rnd.integer(-1, 1), rnd.integer(0, 1)) : Vec2(rnd.uniform(-1, 1), rnd.uniform(0, 1)),
+                          integral ? 1.0 : rnd.uniform(0.1, 1), {}};
+        const int n = s % 10 == 9 ? rnd.integer(16, 20) : rnd.integer(1, 5);
+        for (int j = 0; j < n; ++j) {
+            if (n >= 16) {
+                // A twisted cradle: points on a half circle, normals turned 0.2 rad off its centre,
+                // so every normal wrench is extreme and there are 2n + 4 > 32 modes.
+                const double t = M_PI * (1.0 + (j + 0.5) / n);
+                const Vec2 p(std::cos(t), std::sin(t));
+                scene.contacts.push_back(Contact::make(p, -(Eigen::Rotation2Dd(0.2) * p), 0.3));
+                continue;
+            }
+            const Vec2 p = integral ? Vec2(rnd.integer(-2, 2), rnd.integer(-1, 1)) : Vec2(rnd.uniform(-2, 2), rnd.uniform(-1, 1));
+            const Vec2 nrm = integral ? Vec2(rnd.integer(-1, 1), 1) : Vec2(rnd.uniform(-1, 1), rnd.uniform(-1, 1));
+            scene.contacts.push_back(Contact::make(p, nrm.norm() > 0 ? nrm : Vec2(0, 1), rnd.integer(0, 4) * 0.25));
+        }
+        const auto a = analyze(scene);
+        const QueryIndex index(a);
+        exact_path_scenes += a.size() > 32;
+        std::vector<Vec3> wrenches = {Vec3::Zero()};
+        for (const ModeForces& mf : a) {
+            const std::vector<Vec3> g = mf.applied.generator_values();
+            for (std::size_t i = 0; i < g.size(); ++i) {
+                wrenches.push_back(g[i]);                          // on the boundary (exactly, for integral scenes)
+                wrenches.push_back(g[i] + g[(i + 1) % g.size()]);  // on a facet, or inside
+                Vec3 next = g[i];
+                next.x() = std::nextafter(next.x(), 1e300);  // one ulp off
+                wrenches.push_back(next);
+            }
+        }
+        for (int w = 0; w < 40; ++w) wrenches.push_back(rnd.vec3(10.0));
+        const std::size_t base = wrenches.size();
+        for (std::size_t i = 0; i < base; i += 3) {
+            for (double k : {0x1p-70, 0x1p-59, 0x1p59, 0x1p70, 0x1p-1040, 0x1p1000}) wrenches.push_back(wrenches[i] * k);
+        }
+        std::vector<std::size_t> modes;
+        for (const Vec3& e : wrenches) {
+            const QueryResult expected = query(a, e);
+            const Verdict v = index.query(e, modes);
+            ASSERT_EQ(modes, expected.modes) << "scene " << s << " wrench " << e.transpose();
+            ASSERT_EQ(v, expected.verdict);
+            on_boundary += expected.modes.size() > 1;
+            ++checked;
+        }
+    }
+    std::cout << "[Dynamics] QueryIndex: " << checked << " wrenches (" << on_boundary << " in several modes), "
+              << exact_path_scenes << " scenes with > 32 modes\n";
+    EXPECT_GE(exact_path_scenes, 5);
+    EXPECT_GE(on_boundary, 1000);
+}
+
+TEST(Dynamics, QueryIndexRejectsNonFiniteWrenches) {
+    Scene s;
+    s.body = Body{1.0, Vec2(0, 0.5), 0.1, {}};
+    s.contacts = {Contact::make(Vec2(0, 0), Vec2(0, 1), 0.5)};
+    const QueryIndex index(analyze(s));
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    for (const Vec3& e : {Vec3(nan, 0, 0), Vec3(1, nan, 1), Vec3(0, 0, inf), Vec3(-inf, 1, 1)}) {
+        EXPECT_THROW((void)index.query(e), std::invalid_argument) << e.transpose();
+    }
 }
 
 }  // namespace

@@ -51,6 +51,16 @@ public:
     /// The image under a signed permutation matrix P (exact): P v.
     [[nodiscard]] ExactVector signed_permuted(const Mat3& p) const;
 
+    /// A rounded copy of the exact vector for a certified float filter (docs/robustness.md).
+    struct Filter {
+        Vec3 approx;  ///< the exact vector rounded (unscaled: sign * (u x v) for constructions)
+        double bound; ///< beta: |a.w - fl(approx.w)| <= beta * max_k |w_k|, or +inf (see filter())
+    };
+    /// The filter of this vector. The bound holds for any finite w with max_k |w_k| in
+    /// [2^-300, 2^300] and any evaluation order of the three-term dot product; it is +inf
+    /// (never certain) when the vector's magnitude is outside [2^-400, 2^400].
+    [[nodiscard]] Filter filter() const;
+
 private:
     Vec3 value_ = Vec3::Zero();
     Vec3 u_ = Vec3::Zero();
