@@ -1,6 +1,7 @@
 // `momentlab query SCENE --wrench FX FY TAU | --wrenches FILE [--json]` and
 // `momentlab analyze SCENE [--json]`: which modes an applied wrench produces, and every
 // mode with its sets of twists, total, contact and applied wrenches.
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -24,6 +25,24 @@ struct QueryOptions {
     bool json = false;
 };
 
+// A wrench from the command line or a wrench file: finite, each coordinate 0 or of magnitude
+// 1e-60 .. 1e60 like every number read (docs/reliability.md).
+Vec3 checked_wrench(double fx, double fy, double tau, const std::string& where) {
+    for (double x : {fx, fy, tau}) {
+        if (!std::isfinite(x)) throw InputError(where, "expected finite numbers FX FY TAU");
+        if (x != 0.0 && !(std::abs(x) >= kSmallestMagnitude && std::abs(x) <= kLargestMagnitude)) {
+            throw InputError(where, "a coordinate's magnitude is out of range (expected 0 or 1e-60 .. 1e60)");
+        }
+    }
+    return Vec3(fx, fy, tau);
+}
+
+// query and analyze need the body's mass properties.
+const Scene& needs_body(const Scene& scene) {
+    if (!scene.body) throw InputError("$", "missing field \"body\" (query and analyze need its mass, com and inertia)");
+    return scene;
+}
+
 nlohmann::json answer_json(const std::vector<ModeForces>& a, const QueryResult& r) {
     nlohmann::json modes = nlohmann::json::array();
     for (std::size_t i : r.modes) modes.push_back(a[i].mode.letters);
@@ -31,8 +50,8 @@ nlohmann::json answer_json(const std::vector<ModeForces>& a, const QueryResult& 
 }
 
 int run_query(const QueryOptions& o) {
-    const Scene scene = read_scene_text(read_file(o.file));
-    const auto analysis = analyze(scene);
+    const Scene scene = read_scene_file(o.file);
+    const auto analysis = analyze(needs_body(scene));
     if (!o.wrenches.empty()) {  // one JSON array [fx, fy, tau] per line in, one JSON object per line out
         std::ifstream in(o.wrenches);
         if (!in) throw InputError("--wrenches", "cannot read file \"" + o.wrenches + "\"");
@@ -52,7 +71,7 @@ int run_query(const QueryOptions& o) {
             if (!w.is_array() || w.size() != 3 || !w[0].is_number() || !w[1].is_number() || !w[2].is_number()) {
                 throw InputError(where, "expected [fx, fy, tau]");
             }
-            const Vec3 e(w[0].get<double>(), w[1].get<double>(), w[2].get<double>());
+            const Vec3 e = checked_wrench(w[0].get<double>(), w[1].get<double>(), w[2].get<double>(), where);
             nlohmann::json out = answer_json(analysis, index.query(e));
             out["wrench"] = w;
             std::cout << out.dump() << "\n";
@@ -60,7 +79,7 @@ int run_query(const QueryOptions& o) {
         return 0;
     }
     if (o.wrench.size() != 3) throw InputError("--wrench", "expected three numbers FX FY TAU (or --wrenches FILE)");
-    const Vec3 e(o.wrench[0], o.wrench[1], o.wrench[2]);
+    const Vec3 e = checked_wrench(o.wrench[0], o.wrench[1], o.wrench[2], "--wrench");
     const QueryResult r = query(analysis, e);
     if (o.json) {
         std::cout << answer_json(analysis, r).dump() << "\n";
@@ -86,8 +105,8 @@ std::string region_text(const Region& r) {
 }
 
 int run_analyze(const AnalyzeOptions& o) {
-    const Scene scene = read_scene_text(read_file(o.file));
-    const auto analysis = analyze(scene);
+    const Scene scene = read_scene_file(o.file);
+    const auto analysis = analyze(needs_body(scene));
     if (o.json) {
         nlohmann::json modes = nlohmann::json::array();
         for (const ModeForces& m : analysis) {

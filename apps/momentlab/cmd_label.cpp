@@ -1,4 +1,5 @@
 // `momentlab label FILE [--json] [--at X Y]...`: the cone of a force set and its labels.
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -8,6 +9,7 @@
 #include "commands.hpp"
 #include "momentlab/geometry/labels.hpp"
 #include "momentlab/io/force_set_json.hpp"
+#include "momentlab/io/scene_json.hpp"
 #include "momentlab/io/json_output.hpp"
 
 namespace momentlab::cli {
@@ -50,7 +52,12 @@ void print_region(const char* name, const Region& r) {
 }
 
 int run(const LabelOptions& o) {
-    const Labels labels(read_force_set_text(read_file(o.file)));
+    for (double x : o.at) {
+        if (!std::isfinite(x) || (x != 0.0 && !(std::abs(x) >= kSmallestMagnitude && std::abs(x) <= kLargestMagnitude))) {
+            throw InputError("--at", "expected finite coordinates X Y, 0 or of magnitude 1e-60 .. 1e60");
+        }
+    }
+    const Labels labels(read_force_set_file(o.file));
     const Cone& f = labels.forces();
     if (o.json) {
         nlohmann::json out = {{"cone", to_json(f)}, {"labels", to_json(labels)}};
@@ -85,6 +92,28 @@ std::string read_file(const std::string& path) {
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
+}
+
+namespace {
+
+void print_warnings(const InputWarnings& warnings) {
+    for (const std::string& w : warnings) std::cerr << "momentlab: warning: " << w << "\n";
+}
+
+}  // namespace
+
+Scene read_scene_file(const std::string& path) {
+    InputWarnings warnings;
+    Scene scene = read_scene_text(read_file(path), &warnings);
+    print_warnings(warnings);
+    return scene;
+}
+
+Cone read_force_set_file(const std::string& path) {
+    InputWarnings warnings;
+    Cone cone = read_force_set_text(read_file(path), &warnings);
+    print_warnings(warnings);
+    return cone;
 }
 
 std::function<int()> add_label_command(CLI::App& app) {

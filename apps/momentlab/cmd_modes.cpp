@@ -17,7 +17,7 @@ struct ModesOptions {
 };
 
 int run(const ModesOptions& o) {
-    const Scene scene = read_scene_text(read_file(o.file));
+    const Scene scene = read_scene_file(o.file);
     const ModeSet set = enumerate_modes(scene.contacts);
     if (o.json) {
         nlohmann::json modes = nlohmann::json::array();

@@ -2,6 +2,10 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
+
+#include "momentlab/geometry/cone.hpp"
+#include "momentlab/mechanics/scene.hpp"
 
 namespace momentlab::cli {
 
@@ -17,5 +21,9 @@ std::function<int()> add_analyze_command(CLI::App& app);
 
 /// Reads a whole file; throws InputError at "$" if it cannot be read.
 std::string read_file(const std::string& path);
+
+/// The scene / force set in a file; warnings (unknown fields) go to stderr, one line each.
+Scene read_scene_file(const std::string& path);
+Cone read_force_set_file(const std::string& path);
 
 }  // namespace momentlab::cli

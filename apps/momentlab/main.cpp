@@ -15,8 +15,13 @@ int main(int argc, char** argv) {
     const auto run_analyze = momentlab::cli::add_analyze_command(app);
     try {
         app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {  // one line, like every other input error
+        std::cerr << "momentlab: " << e.what() << " (see momentlab --help)\n";
+        return 2;
     }
     try {
         if (app.got_subcommand("label")) return run_label();

@@ -12,23 +12,30 @@ namespace {
 using nlohmann::json;
 using namespace json_read;
 
-Cone read_set(const json& s, const std::string& path);
+Cone read_set(const json& s, const std::string& path, InputWarnings* w);
 
-Cone combine(const json& sets, const std::string& path, bool intersect) {
+Cone combine(const json& sets, const std::string& path, bool intersect, InputWarnings* w) {
     if (!sets.is_array()) throw InputError(path, "expected a list of force sets");
     std::vector<Cone> cones;
-    for (std::size_t i = 0; i < sets.size(); ++i) cones.push_back(read_set(sets[i], path + "[" + std::to_string(i) + "]"));
+    for (std::size_t i = 0; i < sets.size(); ++i) cones.push_back(read_set(sets[i], at(path, i), w));
     if (!intersect) return sum(cones);
     Cone result = Cone::whole_space();
     for (const Cone& c : cones) result = intersection(result, c);
     return result;
 }
 
-Cone read_set(const json& s, const std::string& path) {
+Cone read_set(const json& s, const std::string& path, InputWarnings* w) {
     if (!s.is_object()) throw InputError(path, "expected an object with a \"type\"");
     const json& type_field = field(s, path, "type");
     if (!type_field.is_string()) throw InputError(path + ".type", "expected a string");
     const std::string type = type_field.get<std::string>();
+    if (type == "force" || type == "line") known_fields(s, path, {"type", "point", "direction"}, w);
+    if (type == "point") known_fields(s, path, {"type", "point"}, w);
+    if (type == "friction_cone") known_fields(s, path, {"type", "point", "normal", "mu"}, w);
+    if (type == "moment") known_fields(s, path, {"type", "sign"}, w);
+    if (type == "wrenches") known_fields(s, path, {"type", "generators"}, w);
+    if (type == "halfspaces") known_fields(s, path, {"type", "normals"}, w);
+    if (type == "sum" || type == "intersection") known_fields(s, path, {"type", "sets"}, w);
     if (type == "force") {
         return force_ray(vec2(field(s, path, "point"), path + ".point"), nonzero2(s, path, "direction"));
     }
@@ -53,7 +60,7 @@ Cone read_set(const json& s, const std::string& path) {
         return Cone::from_halfspaces(vec3_list(field(s, path, "normals"), path + ".normals"));
     }
     if (type == "sum" || type == "intersection") {
-        return combine(field(s, path, "sets"), path + ".sets", type == "intersection");
+        return combine(field(s, path, "sets"), path + ".sets", type == "intersection", w);
     }
     throw InputError(path + ".type", "unknown type \"" + type +
                                          "\" (expected force, line, point, friction_cone, moment, "
@@ -62,9 +69,10 @@ Cone read_set(const json& s, const std::string& path) {
 
 }  // namespace
 
-Cone read_force_set(const json& doc) {
-    if (doc.is_array()) return combine(doc, "$", false);
+Cone read_force_set(const json& doc, InputWarnings* w) {
+    if (doc.is_array()) return combine(doc, "$", false, w);
     if (!doc.is_object()) throw InputError("$", "expected a list of force sets or an object with \"sets\"");
+    known_fields(doc, "$", {"combine", "sets"}, w);
     std::string how = "sum";
     if (doc.contains("combine")) {
         const json& c = doc.at("combine");
@@ -73,9 +81,9 @@ Cone read_force_set(const json& doc) {
         }
         how = c.get<std::string>();
     }
-    return combine(field(doc, "$", "sets"), "$.sets", how == "intersection");
+    return combine(field(doc, "$", "sets"), "$.sets", how == "intersection", w);
 }
 
-Cone read_force_set_text(const std::string& text) { return read_force_set(parse(text)); }
+Cone read_force_set_text(const std::string& text, InputWarnings* warnings) { return read_force_set(parse(text), warnings); }
 
 }  // namespace momentlab

@@ -13,6 +13,9 @@ double number(const json& v, const std::string& path) {
     if (!v.is_number()) throw InputError(path, "expected a number, got " + std::string(v.type_name()));
     const double x = v.get<double>();
     if (!std::isfinite(x)) throw InputError(path, "expected a finite number");
+    if (x != 0.0 && !(std::abs(x) >= kSmallestMagnitude && std::abs(x) <= kLargestMagnitude)) {
+        throw InputError(path, "the magnitude of " + v.dump() + " is out of range (expected 0 or 1e-60 .. 1e60)");
+    }
     return x;
 }
 
@@ -47,6 +50,19 @@ std::vector<Vec2> vec2_list(const json& v, const std::string& path) {
     return out;
 }
 
+void known_fields(const json& obj, const std::string& path, std::initializer_list<const char*> known,
+                  InputWarnings* warnings) {
+    if (warnings == nullptr || !obj.is_object()) return;
+    for (const auto& [key, value] : obj.items()) {
+        bool found = false;
+        for (const char* k : known) found = found || key == k;
+        if (found) continue;
+        std::string expected;
+        for (const char* k : known) expected += std::string(expected.empty() ? "" : ", ") + k;
+        warnings->push_back(path + "." + key + ": unknown field, ignored (expected " + expected + ")");
+    }
+}
+
 std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
 
 json parse(const std::string& text) {
@@ -54,6 +70,8 @@ json parse(const std::string& text) {
         return json::parse(text);
     } catch (const json::parse_error& e) {
         throw InputError("$", std::string("malformed JSON: ") + e.what());
+    } catch (const json::out_of_range& e) {  // e.g. 1e999: too large for a double
+        throw InputError("$", std::string("a number is out of range (expected 0 or 1e-60 .. 1e60): ") + e.what());
     }
 }
 

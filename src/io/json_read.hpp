@@ -3,6 +3,7 @@
 // Typed access to JSON fields; every failure is an InputError naming the field's path.
 
 #include <nlohmann/json.hpp>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@ namespace momentlab::json_read {
 using nlohmann::json;
 
 const json& field(const json& obj, const std::string& path, const char* name);
+/// A finite number of magnitude 0 or in [kSmallestMagnitude, kLargestMagnitude].
 double number(const json& v, const std::string& path);
 Vec2 vec2(const json& v, const std::string& path);
 Vec3 vec3(const json& v, const std::string& path);
@@ -21,6 +23,9 @@ std::vector<Vec3> vec3_list(const json& v, const std::string& path);
 std::vector<Vec2> vec2_list(const json& v, const std::string& path);
 /// A non-zero [x, y] in field `name` of `obj`.
 Vec2 nonzero2(const json& obj, const std::string& path, const char* name);
+/// Adds a warning for each field of `obj` not in `known` (when `warnings` is given).
+void known_fields(const json& obj, const std::string& path, std::initializer_list<const char*> known,
+                  InputWarnings* warnings);
 /// `path[i]`.
 std::string at(const std::string& path, std::size_t i);
 /// Parses text; malformed JSON is an InputError at "$".

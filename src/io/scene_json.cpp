@@ -1,6 +1,9 @@
 #include "momentlab/io/scene_json.hpp"
 
+#include <cstdio>
+
 #include "json_read.hpp"
+#include "momentlab/geometry/polygon.hpp"
 #include "momentlab/mechanics/find_contacts.hpp"
 
 namespace momentlab {
@@ -15,25 +18,37 @@ double positive(const json& obj, const std::string& path, const char* name) {
     return x;
 }
 
-Body read_body(const json& b, const std::string& path) {
-    if (!b.is_object()) throw InputError(path, "expected an object");
+Polygon polygon(const json& v, const std::string& path) {
+    Polygon p = vec2_list(v, path);
+    const std::string problem = polygon_problem(p);
+    if (!problem.empty()) throw InputError(path, problem);
+    return p;
+}
+
+Body read_body(const json& b, const std::string& path, InputWarnings* w) {
+    if (!b.is_object()) throw InputError(path, "expected an object with \"mass\", \"com\" and \"inertia\"");
+    known_fields(b, path, {"mass", "com", "inertia", "radius_of_gyration", "polygon"}, w);
     Body body;
     body.mass = positive(b, path, "mass");
     body.com = vec2(field(b, path, "com"), path + ".com");
     if (b.contains("inertia")) {
         body.inertia = positive(b, path, "inertia");
+        if (b.contains("radius_of_gyration")) {
+            throw InputError(path + ".radius_of_gyration", "give either \"inertia\" or \"radius_of_gyration\", not both");
+        }
     } else if (b.contains("radius_of_gyration")) {
         const double rho = positive(b, path, "radius_of_gyration");
         body.inertia = body.mass * rho * rho;
     } else {
         throw InputError(path, "missing field \"inertia\" (or \"radius_of_gyration\")");
     }
-    if (b.contains("polygon")) body.polygon = vec2_list(b.at("polygon"), path + ".polygon");
+    if (b.contains("polygon")) body.polygon = polygon(b.at("polygon"), path + ".polygon");
     return body;
 }
 
-Contact read_contact(const json& c, const std::string& path) {
+Contact read_contact(const json& c, const std::string& path, InputWarnings* w) {
     if (!c.is_object()) throw InputError(path, "expected an object with \"point\" and \"normal\"");
+    known_fields(c, path, {"point", "normal", "mu", "mu_kinetic", "name"}, w);
     const Vec2 point = vec2(field(c, path, "point"), path + ".point");
     const Vec2 normal = nonzero2(c, path, "normal");
     double mu = 0.0;
@@ -56,32 +71,51 @@ Contact read_contact(const json& c, const std::string& path) {
 
 }  // namespace
 
-Scene read_scene(const json& doc) {
-    if (!doc.is_object()) throw InputError("$", "expected a scene object");
+Scene read_scene(const json& doc, InputWarnings* w) {
+    if (!doc.is_object()) throw InputError("$", "expected a scene object with \"body\" and \"contacts\"");
+    known_fields(doc, "$", {"body", "contacts", "obstacles", "contact_distance", "mu"}, w);
     Scene scene;
-    if (doc.contains("body")) scene.body = read_body(doc.at("body"), "$.body");
+    if (doc.contains("body")) scene.body = read_body(doc.at("body"), "$.body", w);
     if (doc.contains("obstacles")) {
         const json& obstacles = doc.at("obstacles");
         if (!obstacles.is_array()) throw InputError("$.obstacles", "expected a list of obstacles");
         for (std::size_t i = 0; i < obstacles.size(); ++i) {
             const std::string p = at("$.obstacles", i);
-            scene.obstacles.push_back(vec2_list(field(obstacles[i], p, "polygon"), p + ".polygon"));
+            if (!obstacles[i].is_object()) throw InputError(p, "expected an object with \"polygon\"");
+            known_fields(obstacles[i], p, {"polygon"}, w);
+            scene.obstacles.push_back(polygon(field(obstacles[i], p, "polygon"), p + ".polygon"));
         }
+    }
+    ContactFinding options;
+    if (doc.contains("contact_distance")) {
+        options.distance = number(doc.at("contact_distance"), "$.contact_distance");
+        if (options.distance < 0.0) throw InputError("$.contact_distance", "expected a distance >= 0");
     }
     if (doc.contains("contacts")) {
         const json& contacts = doc.at("contacts");
         if (!contacts.is_array()) throw InputError("$.contacts", "expected a list of contacts");
-        for (std::size_t i = 0; i < contacts.size(); ++i) {
-            scene.contacts.push_back(read_contact(contacts[i], at("$.contacts", i)));
+        if (contacts.empty()) {
+            throw InputError("$.contacts", "expected at least one contact (omit the field to find them from the polygons)");
         }
+        for (std::size_t i = 0; i < contacts.size(); ++i) {
+            const std::string p = at("$.contacts", i);
+            scene.contacts.push_back(read_contact(contacts[i], p, w));
+            // A contact must be on the body's outline when the outline is given.
+            if (scene.body && !scene.body->polygon.empty()) {
+                const double d = distance_to_boundary(scene.body->polygon, scene.contacts.back().point);
+                if (d > options.distance) {
+                    char text[200];
+                    std::snprintf(text, sizeof text,
+                                  "is %.3g from the body polygon (expected on its boundary, within contact_distance = %g)",
+                                  d, options.distance);
+                    throw InputError(p + ".point", text);
+                }
+            }
+        }
+        if (doc.contains("mu") && w != nullptr) w->push_back("$.mu: ignored: it applies to contacts found from the polygons");
     } else {
         if (!scene.body || scene.body->polygon.empty() || scene.obstacles.empty()) {
             throw InputError("$", "missing field \"contacts\" (or a body polygon and obstacles to find them from)");
-        }
-        ContactFinding options;
-        if (doc.contains("contact_distance")) {
-            options.distance = number(doc.at("contact_distance"), "$.contact_distance");
-            if (options.distance < 0.0) throw InputError("$.contact_distance", "expected a distance >= 0");
         }
         if (doc.contains("mu")) {
             options.mu = number(doc.at("mu"), "$.mu");
@@ -98,7 +132,7 @@ Scene read_scene(const json& doc) {
     return scene;
 }
 
-Scene read_scene_text(const std::string& text) { return read_scene(parse(text)); }
+Scene read_scene_text(const std::string& text, InputWarnings* warnings) { return read_scene(parse(text), warnings); }
 
 json to_json(const Scene& scene) {
     auto xy = [](const Vec2& v) { return json::array({v.x(), v.y()}); };

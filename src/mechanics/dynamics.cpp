@@ -42,6 +42,10 @@ Mat3 inertia_at_origin(const Body& body) {
 
 std::vector<ModeForces> analyze(const Scene& scene) {
     if (!scene.body) throw std::invalid_argument("analyze: the scene needs a body (mass, com, inertia)");
+    const Body& b = *scene.body;
+    if (!b.com.allFinite() || !(b.mass > 0.0) || !(b.inertia > 0.0) || !std::isfinite(b.mass) || !std::isfinite(b.inertia)) {
+        throw std::invalid_argument("analyze: the body needs a finite com, 0 < mass < inf and 0 < inertia < inf");
+    }
     const Mat3 m = inertia_at_origin(*scene.body);
     const ModeSet modes = enumerate_modes(scene.contacts);
     std::vector<ModeForces> out;

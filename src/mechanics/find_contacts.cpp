@@ -1,5 +1,7 @@
 #include "momentlab/mechanics/find_contacts.hpp"
 
+#include "momentlab/geometry/polygon.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -65,6 +67,13 @@ void vertex_on_edge(const Polygon& touching, const Polygon& touched, bool body_i
 std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygon>& obstacles,
                                    const ContactFinding& options) {
     if (!(options.distance >= 0.0)) throw std::invalid_argument("find_contacts: distance must be >= 0");
+    for (std::size_t i = 0; i <= obstacles.size(); ++i) {
+        const Polygon& p = i == 0 ? body : obstacles[i - 1];
+        const std::string problem = polygon_problem(p);
+        if (!problem.empty()) {
+            throw std::invalid_argument("find_contacts: " + (i == 0 ? std::string("the body polygon: ") : "obstacle " + std::to_string(i - 1) + ": ") + problem);
+        }
+    }
     const Polygon b = counter_clockwise(body, "body");
     std::vector<Contact> found;
     for (const Polygon& raw : obstacles) {

@@ -12,7 +12,9 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <map>
+#include <stdexcept>
 
 namespace momentlab {
 namespace {
@@ -210,7 +212,15 @@ private:
 
 }  // namespace
 
-ModeSet enumerate_modes(const std::vector<Contact>& contacts) { return Enumerator(contacts).run(); }
+ModeSet enumerate_modes(const std::vector<Contact>& contacts) {
+    for (const Contact& c : contacts) {
+        if (!c.point.allFinite() || !c.normal.allFinite() || (c.normal.x() == 0.0 && c.normal.y() == 0.0) ||
+            !(c.mu >= 0.0) || !(c.mu_kinetic >= 0.0) || !std::isfinite(c.mu) || !std::isfinite(c.mu_kinetic)) {
+            throw std::invalid_argument("enumerate_modes: every contact needs a finite point, a finite non-zero normal and finite mu, mu_kinetic >= 0 (Contact::make)");
+        }
+    }
+    return Enumerator(contacts).run();
+}
 
 Labels rotation_centres(const Mode& mode) { return Labels(mode.twists.dual()); }
 

@@ -22,10 +22,12 @@
 
 namespace momentlab {
 
-/// The force set described by `doc`. Throws InputError naming the field on bad input.
-[[nodiscard]] Cone read_force_set(const nlohmann::json& doc);
+/// The force set described by `doc`. Throws InputError naming the field on bad input (numbers
+/// finite, 0 or of magnitude 1e-60 .. 1e60; docs/reliability.md). Unknown fields are ignored
+/// with a warning in `warnings`, when given.
+[[nodiscard]] Cone read_force_set(const nlohmann::json& doc, InputWarnings* warnings = nullptr);
 
 /// Parses `text` as JSON and reads the force set; malformed JSON is an InputError at "$".
-[[nodiscard]] Cone read_force_set_text(const std::string& text);
+[[nodiscard]] Cone read_force_set_text(const std::string& text, InputWarnings* warnings = nullptr);
 
 }  // namespace momentlab

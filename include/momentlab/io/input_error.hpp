@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace momentlab {
 
@@ -18,5 +19,13 @@ public:
 private:
     std::string path_;
 };
+
+/// Warnings about input that is accepted but probably not meant (e.g. an unknown field, which
+/// is ignored), each "path: message".
+using InputWarnings = std::vector<std::string>;
+
+/// The accepted magnitudes of numbers in input files: 0, or between these.
+inline constexpr double kSmallestMagnitude = 1e-60;
+inline constexpr double kLargestMagnitude = 1e60;
 
 }  // namespace momentlab

@@ -13,15 +13,19 @@
 
 namespace momentlab {
 
-/// The scene described by `doc`. Throws InputError naming the field on bad input. Without
-/// "contacts", they are found from the body polygon and the obstacles (find_contacts), with
-/// the optional top-level "contact_distance" (default 1e-9) and "mu" (default 0).
-[[nodiscard]] Scene read_scene(const nlohmann::json& doc);
+/// The scene described by `doc`. Throws InputError naming the field on bad input
+/// (docs/reliability.md lists the checks): numbers must be finite, 0 or of magnitude 1e-60 ..
+/// 1e60; polygons simple (either orientation); given contacts on the body polygon's boundary
+/// within "contact_distance" (default 1e-9); at least one contact. Without "contacts", they are
+/// found from the body polygon and the obstacles (find_contacts), with the optional top-level
+/// "contact_distance" and "mu" (default 0). Unknown fields are ignored with a warning in
+/// `warnings`, when given.
+[[nodiscard]] Scene read_scene(const nlohmann::json& doc, InputWarnings* warnings = nullptr);
 
 /// The scene as JSON, in the same format (contacts always written out, mu_kinetic included).
 [[nodiscard]] nlohmann::json to_json(const Scene& scene);
 
 /// Parses `text` as JSON and reads the scene.
-[[nodiscard]] Scene read_scene_text(const std::string& text);
+[[nodiscard]] Scene read_scene_text(const std::string& text, InputWarnings* warnings = nullptr);
 
 }  // namespace momentlab

@@ -35,7 +35,7 @@ struct Contact {
     [[nodiscard]] Vec3 tangent_wrench() const { return wrench_at(point, tangent()); }
 };
 
-/// A simple polygon given by its vertices, counter-clockwise.
+/// A simple polygon given by its vertices, in either orientation (geometry/polygon.hpp checks).
 using Polygon = std::vector<Vec2>;
 
 /// The moving body: mass, centre of mass, inertia about the centre of mass, optional outline.

@@ -1,0 +1,78 @@
+#include "momentlab/geometry/polygon.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "momentlab/core/predicates.hpp"
+
+namespace momentlab {
+namespace {
+
+Vec3 lift(const Vec2& p) { return Vec3(p.x(), p.y(), 1.0); }
+
+// c lies on the closed segment ab, given that a, b, c are collinear (exact comparisons).
+bool within(const Vec2& a, const Vec2& b, const Vec2& c) {
+    return std::min(a.x(), b.x()) <= c.x() && c.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= c.y() &&
+           c.y() <= std::max(a.y(), b.y());
+}
+
+// The closed segments pq and rs share a point.
+bool segments_meet(const Vec2& p, const Vec2& q, const Vec2& r, const Vec2& s) {
+    const Sign o1 = orient2d(p, q, r), o2 = orient2d(p, q, s), o3 = orient2d(r, s, p), o4 = orient2d(r, s, q);
+    if (o1 != Sign::Zero && o2 != Sign::Zero && o3 != Sign::Zero && o4 != Sign::Zero) return o1 != o2 && o3 != o4;
+    return (o1 == Sign::Zero && within(p, q, r)) || (o2 == Sign::Zero && within(p, q, s)) ||
+           (o3 == Sign::Zero && within(r, s, p)) || (o4 == Sign::Zero && within(r, s, q));
+}
+
+double distance_to_segment(const Vec2& a, const Vec2& b, const Vec2& p) {
+    const Vec2 d = b - a;
+    const double len2 = d.squaredNorm();
+    const double t = len2 > 0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+    return (a + t * d - p).norm();
+}
+
+}  // namespace
+
+Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) { return det_sign(lift(a), lift(b), lift(c)); }
+
+std::string polygon_problem(std::span<const Vec2> polygon) {
+    const std::size_t n = polygon.size();
+    if (n < 3) return "expected a polygon of at least 3 vertices, got " + std::to_string(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!polygon[i].allFinite()) return "vertex " + std::to_string(i) + " is not finite";
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (polygon[i] == polygon[(i + 1) % n]) {
+            return "vertices " + std::to_string(i) + " and " + std::to_string((i + 1) % n) +
+                   " coincide (expected a simple polygon)";
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec2 &a = polygon[i], &b = polygon[(i + 1) % n];
+        // The next edge b c may only touch this one at b: not fold back along it.
+        const Vec2& c = polygon[(i + 2) % n];
+        if (orient2d(a, b, c) == Sign::Zero && (within(a, b, c) || within(b, c, a))) {
+            return "edges " + std::to_string(i) + " and " + std::to_string((i + 1) % n) +
+                   " fold back along each other (expected a simple polygon of non-zero area)";
+        }
+        for (std::size_t j = i + 2; j < n; ++j) {
+            if (i == 0 && j == n - 1) continue;  // adjacent through vertex 0
+            if (segments_meet(a, b, polygon[j], polygon[(j + 1) % n])) {
+                return "edges " + std::to_string(i) + " and " + std::to_string(j) +
+                       " cross or touch (expected a simple polygon, either orientation)";
+            }
+        }
+    }
+    return {};
+}
+
+double distance_to_boundary(std::span<const Vec2> polygon, const Vec2& p) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        best = std::min(best, distance_to_segment(polygon[i], polygon[(i + 1) % polygon.size()], p));
+    }
+    return best;
+}
+
+}  // namespace momentlab

@@ -1,0 +1,94 @@
+// polygon_problem against a brute-force oracle in integer arithmetic on small grids, where
+// degeneracies (collinear, touching, repeated vertices) are the rule.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <random>
+
+#include "momentlab/geometry/polygon.hpp"
+
+namespace momentlab {
+namespace {
+
+using P = std::array<long, 2>;
+
+long cross(const P& o, const P& a, const P& b) { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); }
+long dot(const P& o, const P& a, const P& b) { return (a[0] - o[0]) * (b[0] - o[0]) + (a[1] - o[1]) * (b[1] - o[1]); }
+
+// Closed segments ab and cd share a point: solve a + t (b - a) = c + u (d - c) for t, u in
+// [0, 1] by Cramer's rule; parallel segments share a point iff collinear and their projections
+// on the common line overlap.
+bool meet(const P& a, const P& b, const P& c, const P& d) {
+    const long den = (b[0] - a[0]) * (d[1] - c[1]) - (b[1] - a[1]) * (d[0] - c[0]);
+    const long tn = (c[0] - a[0]) * (d[1] - c[1]) - (c[1] - a[1]) * (d[0] - c[0]);
+    const long un = (c[0] - a[0]) * (b[1] - a[1]) - (c[1] - a[1]) * (b[0] - a[0]);
+    if (den != 0) {
+        auto in01 = [den](long num) { return den > 0 ? (num >= 0 && num <= den) : (num <= 0 && num >= den); };
+        return in01(tn) && in01(un);
+    }
+    if (cross(a, b, c) != 0) return false;  // parallel, not collinear
+    const long len = dot(a, b, b);             // project onto ab
+    const long pc = dot(a, b, c), pd = dot(a, b, d);
+    return std::max(std::min(pc, pd), 0L) <= std::min(std::max(pc, pd), len);
+}
+
+bool simple(const std::vector<P>& v) {
+    const std::size_t n = v.size();
+    if (n < 3) return false;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (v[i] == v[(i + 1) % n]) return false;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = i + 1; j < n; ++j) {
+            const P &a = v[i], &b = v[(i + 1) % n], &c = v[j], &d = v[(j + 1) % n];
+            if (j == i + 1 || (i == 0 && j == n - 1)) {
+                // Adjacent: only the shared vertex may be common, so the edges must not be
+                // collinear and pointing the same way from it.
+                const P& s = j == i + 1 ? b : a;
+                const P& x = j == i + 1 ? a : b;
+                const P& y = j == i + 1 ? d : c;
+                if (cross(s, x, y) == 0 && dot(s, x, y) > 0) return false;
+                continue;
+            }
+            if (meet(a, b, c, d)) return false;
+        }
+    }
+    return true;
+}
+
+TEST(Polygon, ProblemAgreesWithBruteForceOnSmallGrids) {
+    std::mt19937 rng(99);
+    int simple_count = 0, problem_count = 0;
+    for (int t = 0; t < 20000; ++t) {
+        const int n = 3 + static_cast<int>(rng() % 5);
+        const long grid = 2 + static_cast<long>(rng() % 3);
+        std::vector<P> v;
+        std::vector<Vec2> poly;
+        for (int i = 0; i < n; ++i) {
+            v.push_back({static_cast<long>(rng() % (grid + 1)), static_cast<long>(rng() % (grid + 1))});
+            poly.emplace_back(static_cast<double>(v.back()[0]) * 0.5 - 1.0, static_cast<double>(v.back()[1]) * 0.5 + 3.0);
+        }
+        const bool expected = simple(v);
+        const std::string problem = polygon_problem(poly);
+        ASSERT_EQ(problem.empty(), expected) << "polygon " << t << ": " << problem;
+        (expected ? simple_count : problem_count)++;
+    }
+    std::cout << "[Polygon] " << simple_count << " simple, " << problem_count << " not\n";
+    EXPECT_GE(simple_count, 1000);
+    EXPECT_GE(problem_count, 1000);
+}
+
+TEST(Polygon, NamesTheProblem) {
+    EXPECT_EQ(polygon_problem(std::vector<Vec2>{{0, 0}, {1, 0}, {0, 1}}), "");
+    EXPECT_EQ(polygon_problem(std::vector<Vec2>{{0, 0}, {0, 1}, {1, 0}}), "");  // clockwise
+    EXPECT_NE(polygon_problem(std::vector<Vec2>{{0, 0}, {1, 1}, {1, 0}, {0, 1}}).find("edges 0 and 2 cross"), std::string::npos);
+    EXPECT_NE(polygon_problem(std::vector<Vec2>{{0, 0}, {1, 0}}).find("at least 3"), std::string::npos);
+    EXPECT_NE(polygon_problem(std::vector<Vec2>{{0, 0}, {1, 0}, {2, 0}}).find("fold back"), std::string::npos);
+    // A vertex touching a non-adjacent edge 2^-60 inside it is found; 2^-60 outside is not.
+    const double h = 0x1p-60;
+    EXPECT_NE(polygon_problem(std::vector<Vec2>{{0, 0}, {2, 0}, {2, 2}, {1, -h}, {0, 2}}), "");
+    EXPECT_EQ(polygon_problem(std::vector<Vec2>{{0, 0}, {2, 0}, {2, 2}, {1, h}, {0, 2}}), "");
+}
+
+}  // namespace
+}  // namespace momentlab
