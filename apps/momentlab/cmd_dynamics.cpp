@@ -25,16 +25,16 @@ struct QueryOptions {
     bool json = false;
 };
 
-// A wrench from the command line or a wrench file: finite, each coordinate 0 or of magnitude
-// 1e-60 .. 1e60 like every number read (docs/reliability.md).
+// A wrench from the command line or a wrench file: finite, 0 or with its largest coordinate
+// of magnitude 1e-60 .. 1e60, like every vector read (docs/reliability.md).
 Vec3 checked_wrench(double fx, double fy, double tau, const std::string& where) {
-    for (double x : {fx, fy, tau}) {
-        if (!std::isfinite(x)) throw InputError(where, "expected finite numbers FX FY TAU");
-        if (x != 0.0 && !(std::abs(x) >= kSmallestMagnitude && std::abs(x) <= kLargestMagnitude)) {
-            throw InputError(where, "a coordinate's magnitude is out of range (expected 0 or 1e-60 .. 1e60)");
-        }
+    const Vec3 e(fx, fy, tau);
+    if (!e.allFinite()) throw InputError(where, "expected finite numbers FX FY TAU");
+    const double m = e.cwiseAbs().maxCoeff();
+    if (m > kLargestMagnitude || (m != 0.0 && m < kSmallestMagnitude)) {
+        throw InputError(where, "the wrench's magnitude is out of range (expected 0 or 1e-60 .. 1e60)");
     }
-    return Vec3(fx, fy, tau);
+    return e;
 }
 
 // query and analyze need the body's mass properties.

@@ -52,9 +52,11 @@ void print_region(const char* name, const Region& r) {
 }
 
 int run(const LabelOptions& o) {
-    for (double x : o.at) {
-        if (!std::isfinite(x) || (x != 0.0 && !(std::abs(x) >= kSmallestMagnitude && std::abs(x) <= kLargestMagnitude))) {
-            throw InputError("--at", "expected finite coordinates X Y, 0 or of magnitude 1e-60 .. 1e60");
+    for (std::size_t i = 0; i + 1 < o.at.size(); i += 2) {
+        const Vec2 p(o.at[i], o.at[i + 1]);
+        const double m = p.cwiseAbs().maxCoeff();
+        if (!p.allFinite() || m > kLargestMagnitude || (m != 0.0 && m < kSmallestMagnitude)) {
+            throw InputError("--at", "expected finite X Y, 0 or of magnitude 1e-60 .. 1e60");
         }
     }
     const Labels labels(read_force_set_file(o.file));

@@ -1,5 +1,7 @@
 #include "momentlab/geometry/polygon.hpp"
 
+#include <gmpxx.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -65,6 +67,31 @@ std::string polygon_problem(std::span<const Vec2> polygon) {
         }
     }
     return {};
+}
+
+bool within_distance_of_segment(const Vec2& p, const Vec2& a, const Vec2& b, double distance) {
+    // The float distance errs by a few units in the last place of the coordinates involved;
+    // far beyond that margin the answer is certain.
+    const double scale = p.cwiseAbs().maxCoeff() + a.cwiseAbs().maxCoeff() + b.cwiseAbs().maxCoeff();
+    if (distance_to_segment(a, b, p) > 2.0 * distance + 1e-6 * scale) return false;
+    const mpq_class ux = mpq_class(p.x()) - mpq_class(a.x()), uy = mpq_class(p.y()) - mpq_class(a.y());
+    const mpq_class vx = mpq_class(b.x()) - mpq_class(a.x()), vy = mpq_class(b.y()) - mpq_class(a.y());
+    const mpq_class d2 = mpq_class(distance) * mpq_class(distance);
+    const mpq_class uu = ux * ux + uy * uy, uv = ux * vx + uy * vy, vv = vx * vx + vy * vy;
+    if (sgn(uv) <= 0 || sgn(vv) == 0) return uu <= d2;  // closest to a
+    if (uv >= vv) {                                    // closest to b
+        const mpq_class wx = mpq_class(p.x()) - mpq_class(b.x()), wy = mpq_class(p.y()) - mpq_class(b.y());
+        return wx * wx + wy * wy <= d2;
+    }
+    const mpq_class cross = ux * vy - uy * vx;  // distance to the line: |cross| / |v|
+    return cross * cross <= d2 * vv;
+}
+
+bool within_distance_of_boundary(std::span<const Vec2> polygon, const Vec2& p, double distance) {
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        if (within_distance_of_segment(p, polygon[i], polygon[(i + 1) % polygon.size()], distance)) return true;
+    }
+    return false;
 }
 
 double distance_to_boundary(std::span<const Vec2> polygon, const Vec2& p) {

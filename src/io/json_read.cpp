@@ -9,11 +9,34 @@ const json& field(const json& obj, const std::string& path, const char* name) {
     return obj.at(name);
 }
 
-double number(const json& v, const std::string& path) {
+namespace {
+
+// A finite number of magnitude at most kLargestMagnitude.
+double coordinate(const json& v, const std::string& path) {
     if (!v.is_number()) throw InputError(path, "expected a number, got " + std::string(v.type_name()));
     const double x = v.get<double>();
     if (!std::isfinite(x)) throw InputError(path, "expected a finite number");
-    if (x != 0.0 && !(std::abs(x) >= kSmallestMagnitude && std::abs(x) <= kLargestMagnitude)) {
+    if (!(std::abs(x) <= kLargestMagnitude)) {
+        throw InputError(path, "the magnitude of " + v.dump() + " is out of range (expected 0 or 1e-60 .. 1e60)");
+    }
+    return x;
+}
+
+// A vector is 0 or has its largest coordinate in range; single coordinates may be tiny.
+template <class V>
+V checked(const V& v, const std::string& path) {
+    const double m = v.cwiseAbs().maxCoeff();
+    if (m != 0.0 && m < kSmallestMagnitude) {
+        throw InputError(path, "the vector's magnitude is out of range (expected 0 or 1e-60 .. 1e60)");
+    }
+    return v;
+}
+
+}  // namespace
+
+double number(const json& v, const std::string& path) {
+    const double x = coordinate(v, path);
+    if (x != 0.0 && !(std::abs(x) >= kSmallestMagnitude)) {
         throw InputError(path, "the magnitude of " + v.dump() + " is out of range (expected 0 or 1e-60 .. 1e60)");
     }
     return x;
@@ -21,12 +44,12 @@ double number(const json& v, const std::string& path) {
 
 Vec2 vec2(const json& v, const std::string& path) {
     if (!v.is_array() || v.size() != 2) throw InputError(path, "expected [x, y]");
-    return Vec2(number(v[0], path + "[0]"), number(v[1], path + "[1]"));
+    return checked(Vec2(coordinate(v[0], path + "[0]"), coordinate(v[1], path + "[1]")), path);
 }
 
 Vec3 vec3(const json& v, const std::string& path) {
     if (!v.is_array() || v.size() != 3) throw InputError(path, "expected [a, b, c]");
-    return Vec3(number(v[0], path + "[0]"), number(v[1], path + "[1]"), number(v[2], path + "[2]"));
+    return checked(Vec3(coordinate(v[0], path + "[0]"), coordinate(v[1], path + "[1]"), coordinate(v[2], path + "[2]")), path);
 }
 
 std::vector<Vec3> vec3_list(const json& v, const std::string& path) {

@@ -102,8 +102,9 @@ Scene read_scene(const json& doc, InputWarnings* w) {
             scene.contacts.push_back(read_contact(contacts[i], p, w));
             // A contact must be on the body's outline when the outline is given.
             if (scene.body && !scene.body->polygon.empty()) {
-                const double d = distance_to_boundary(scene.body->polygon, scene.contacts.back().point);
-                if (d > options.distance) {
+                const Vec2& point = scene.contacts.back().point;
+                if (!within_distance_of_boundary(scene.body->polygon, point, options.distance)) {
+                    const double d = distance_to_boundary(scene.body->polygon, point);
                     char text[200];
                     std::snprintf(text, sizeof text,
                                   "is %.3g from the body polygon (expected on its boundary, within contact_distance = %g)",

@@ -23,14 +23,6 @@ Polygon counter_clockwise(const Polygon& p, const char* what) {
     return q;
 }
 
-// Distance from x to the segment [a, b].
-double segment_distance(const Vec2& x, const Vec2& a, const Vec2& b) {
-    const Vec2 d = b - a;
-    const double len2 = d.squaredNorm();
-    const double s = len2 > 0.0 ? std::clamp((x - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-    return (x - (a + s * d)).norm();
-}
-
 // Outward unit normal of the counter-clockwise edge a -> b.
 Vec2 outward(const Vec2& a, const Vec2& b) {
     const Vec2 d = b - a;
@@ -46,7 +38,7 @@ void vertex_on_edge(const Polygon& touching, const Polygon& touched, bool body_i
         for (std::size_t k = 0; k < m; ++k) {
             const Vec2& a = touched[k];
             const Vec2& b = touched[(k + 1) % m];
-            if ((b - a).squaredNorm() == 0.0 || segment_distance(v, a, b) > o.distance) continue;
+            if (!within_distance_of_segment(v, a, b, o.distance)) continue;
             // Vertex on vertex: an obstacle vertex at a body vertex is left to that body
             // vertex, whose contact takes the supporting obstacle edge's normal.
             if (!body_is_touching && ((v - a).norm() <= o.distance || (v - b).norm() <= o.distance)) continue;

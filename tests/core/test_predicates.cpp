@@ -58,6 +58,35 @@ TEST(Predicates, DeterminantSignIsExactAtExtremeExponents) {
     EXPECT_EQ(det_sign(huge, tiny, mid), Sign::Negative);
 }
 
+// Each coordinate at its own scale, from denormal to 2^1000, some zero: the inline filter
+// must not trust a product that fell below the normal range (fuzz_cone found one).
+Vec3 mixed(testing::Random& r) {
+    Vec3 v;
+    for (int k = 0; k < 3; ++k) {
+        const int kind = r.integer(0, 5);
+        v[k] = kind == 0 ? 0.0 : kind == 1 ? r.uniform(-1, 1) * 0x1p-1040 : std::ldexp(r.uniform(-1, 1), r.integer(-1000, 1000));
+    }
+    return v;
+}
+
+TEST(Predicates, DeterminantSignIsExactWithMixedExponentsAndDenormals) {
+    testing::Random r(4);
+    int zero = 0;
+    for (int i = 0; i < 100000; ++i) {
+        const Vec3 a = mixed(r), b = mixed(r);
+        const Vec3 c = i % 3 == 0 ? a : (i % 3 == 1 ? b : mixed(r));
+        const int expected = exact_det(a, b, c);
+        zero += expected == 0;
+        ASSERT_EQ(to_int(det_sign(a, b, c)), expected) << i << ": " << a.transpose() << " | " << b.transpose() << " | " << c.transpose();
+        ASSERT_EQ(to_int(det_sign(c, a, b)), expected) << i;
+        ASSERT_EQ(to_int(dot_sign(a, c)), exact_dot(a, c)) << i;
+    }
+    EXPECT_GT(zero, 60000);
+    // The case fuzz_cone found: a repeated vector, so the determinant is exactly zero.
+    const Vec3 g0(1.000000000014552, 0.0, 2.27e-322), g1(2.635549485807631e-82, -3.152794309511059e+231, 3.1e-322);
+    EXPECT_EQ(det_sign(g1, g0, g1), Sign::Zero);
+}
+
 TEST(Predicates, DotSignIsExact) {
     testing::Random r(3);
     for (int i = 0; i < 100000; ++i) {

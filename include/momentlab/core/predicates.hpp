@@ -32,8 +32,9 @@ Sign minor_sign_exact(const Vec3& a, const Vec3& b, int i, int j);
 // Forward error bound of the straightforward evaluations relative to the sum of absolute
 // values of the terms. Shewchuk's orient3d bound (7 + 56 eps) eps covers the 3x3 determinant
 // (our inputs are exact, which only helps); dot products and 2x2 minors have smaller bounds and
-// use the same constant. The filter is trusted only far from underflow, so absolute errors
-// of denormal products are negligible, and only when nothing overflowed.
+// use the same constant. The filter is trusted only when the permanent is far above the
+// underflow range (so the absolute errors of denormal products of two factors are negligible;
+// det_sign adds an absolute term for the third factor) and when nothing overflowed.
 inline constexpr double kErrorBound = 8.0 * 0x1p-53;
 inline constexpr double kMinPermanent = 0x1p-600;
 
@@ -60,7 +61,13 @@ inline bool filter_decides(double value, double permanent) {
     const double permanent = std::fabs(a.x()) * (std::fabs(m0) + std::fabs(m1)) +
                              std::fabs(a.y()) * (std::fabs(m2) + std::fabs(m3)) +
                              std::fabs(a.z()) * (std::fabs(m4) + std::fabs(m5));
-    if (detail::filter_decides(value, permanent)) return sign_of(value);
+    // A product of b and c below the normal range errs by up to 2^-1075 absolutely, and a's
+    // coordinates scale that error: the bound needs an absolute term (found by fuzz_cone with
+    // coordinates near 1e231 and 1e-322).
+    const double underflow = (std::fabs(a.x()) + std::fabs(a.y()) + std::fabs(a.z())) * 0x1p-1072;
+    if (detail::filter_decides(value, permanent) && std::fabs(value) > detail::kErrorBound * permanent + underflow) {
+        return sign_of(value);
+    }
     return detail::det_sign_exact(a, b, c);
 }
 

@@ -21,8 +21,14 @@ namespace momentlab {
 /// polygon of zero area). Exact; O(n^2) in the number of vertices.
 [[nodiscard]] std::string polygon_problem(std::span<const Vec2> polygon);
 
-/// The distance from p to the boundary of the polygon (floating point: for messages and
-/// modelling checks, never for combinatorial decisions).
+/// True when the point p is within `distance` of the closed segment ab, exactly (squared
+/// distances compared in rationals, after a float filter with a wide margin).
+[[nodiscard]] bool within_distance_of_segment(const Vec2& p, const Vec2& a, const Vec2& b, double distance);
+
+/// True when p is within `distance` of some edge of the polygon (exactly).
+[[nodiscard]] bool within_distance_of_boundary(std::span<const Vec2> polygon, const Vec2& p, double distance);
+
+/// The distance from p to the boundary of the polygon (floating point: for messages only).
 [[nodiscard]] double distance_to_boundary(std::span<const Vec2> polygon, const Vec2& p);
 
 }  // namespace momentlab

@@ -1,0 +1,57 @@
+// Fuzz target: query. A small scene (1-5 contacts on a grid of eighths, so degenerate
+// configurations are common) and wrenches from raw doubles; the compiled QueryIndex must give
+// exactly the modes of the per-mode exact test, for every finite wrench and its scalings
+// (which cross the range of the index's float filter), and reject non-finite wrenches.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+
+#include "fuzz_check.hpp"
+#include "momentlab/mechanics/dynamics.hpp"
+
+using namespace momentlab;
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size < 4) return 0;
+    std::size_t at = 0;
+    auto byte = [&]() -> int { return at < size ? data[at++] : 0; };
+    auto small = [&]() { return static_cast<double>(static_cast<std::int8_t>(byte())) / 8.0; };
+    Scene scene;
+    scene.body = Body{1.0 + byte() % 4, Vec2(small(), small()), 0.125 * (1 + byte() % 8), {}};
+    const int n = 1 + byte() % 5;
+    for (int j = 0; j < n; ++j) {
+        const Vec2 p(small(), small());
+        Vec2 normal(small(), small());
+        if (normal.x() == 0.0 && normal.y() == 0.0) normal = Vec2(0, 1);
+        scene.contacts.push_back(Contact::make(p, normal, 0.25 * (byte() % 9)));
+    }
+    const auto analysis = analyze(scene);
+    const QueryIndex index(analysis);
+    std::vector<std::size_t> modes;
+    for (; at + 24 <= size; at += 24) {
+        double x[3];
+        std::memcpy(x, data + at, sizeof x);
+        const Vec3 e(x[0], x[1], x[2]);
+        if (!e.allFinite()) {
+            bool threw = false;
+            try {
+                (void)index.query(e, modes);
+            } catch (const std::invalid_argument&) {
+                threw = true;
+            }
+            FUZZ_REQUIRE(threw);
+            continue;
+        }
+        for (double k : {1.0, 0x1p-64, 0x1p64, 0x1p-700, 0x1p700}) {
+            const Vec3 w = e * k;
+            if (!w.allFinite()) continue;
+            const Verdict v = index.query(w, modes);
+            const QueryResult expected = query(analysis, w);
+            FUZZ_REQUIRE(modes == expected.modes);
+            FUZZ_REQUIRE(v == expected.verdict);
+        }
+    }
+    return 0;
+}

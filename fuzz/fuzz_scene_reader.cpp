@@ -1,0 +1,45 @@
+// Fuzz target: the scene reader. Any text is either rejected with an InputError or accepted;
+// an accepted scene (of at most 6 contacts, to keep runs short) must go through mode
+// enumeration, analysis and queries without any exception, and survive a JSON round trip.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "fuzz_check.hpp"
+#include "momentlab/io/scene_json.hpp"
+#include "momentlab/mechanics/dynamics.hpp"
+
+using namespace momentlab;
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    Scene scene;
+    InputWarnings warnings;
+    try {
+        scene = read_scene_text(text, &warnings);
+    } catch (const InputError&) {
+        return 0;
+    }
+    FUZZ_REQUIRE(!scene.contacts.empty());
+    if (scene.contacts.size() > 6) return 0;
+    const ModeSet modes = enumerate_modes(scene.contacts);
+    FUZZ_REQUIRE(!modes.modes.empty());
+    FUZZ_REQUIRE(modes.modes.front().letters == std::string(scene.contacts.size(), 'f'));
+    const Scene again = read_scene(to_json(scene));
+    FUZZ_REQUIRE(again.contacts.size() == scene.contacts.size());
+    for (std::size_t j = 0; j < scene.contacts.size(); ++j) {
+        FUZZ_REQUIRE(again.contacts[j].point == scene.contacts[j].point);
+        FUZZ_REQUIRE(again.contacts[j].mu == scene.contacts[j].mu);
+    }
+    if (!scene.body) return 0;
+    const auto analysis = analyze(scene);
+    FUZZ_REQUIRE(analysis.size() == modes.modes.size());
+    const QueryIndex index(analysis);
+    for (const ModeForces& m : analysis) {
+        for (const Vec3& e : m.applied.generator_values()) {
+            const QueryResult slow = query(analysis, e);
+            FUZZ_REQUIRE(index.query(e).modes == slow.modes);
+        }
+    }
+    return 0;
+}
