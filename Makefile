@@ -7,9 +7,15 @@ JOBS ?= 2
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
 APT_PACKAGES := g++ cmake make libeigen3-dev libgmp-dev nlohmann-json3-dev libcli11-dev \
-                libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev
+                libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev \
+                clang libclang-rt-14-dev
+SAN_BUILD := build/asan
+FUZZ_BUILD := build/fuzz
+FUZZ_TARGETS := fuzz_scene_reader fuzz_labels_reader fuzz_cone fuzz_query
+FUZZ_SECONDS ?= 600
+SMOKE_SECONDS ?= 5
 
-.PHONY: all deps build demo test bench clean
+.PHONY: all deps build demo test test-release test-sanitizers fuzz-build test-fuzz fuzz large-inputs bench clean
 
 all: build
 
@@ -32,8 +38,45 @@ build: deps $(BUILD)/CMakeCache.txt
 demo: build
 	@bash examples/demo.sh $(BUILD)/momentlab
 
-test: build
+# Every test: the suite in the release build, again under AddressSanitizer and
+# UndefinedBehaviorSanitizer (any report fails), and each fuzz target briefly on its corpus.
+test: test-release test-sanitizers test-fuzz
+
+test-release: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
+
+test-sanitizers: deps
+	cmake --preset asan-ubsan >/dev/null
+	cmake --build $(SAN_BUILD) -j$(JOBS)
+	cd $(SAN_BUILD) && ctest --output-on-failure -j$(JOBS)
+
+$(FUZZ_BUILD)/CMakeCache.txt: | deps
+	cmake --preset fuzz >/dev/null
+
+fuzz-build: deps $(FUZZ_BUILD)/CMakeCache.txt
+	cmake --build $(FUZZ_BUILD) -j$(JOBS)
+
+# The committed seed corpora are read, never written: new inputs go to a scratch directory.
+test-fuzz: fuzz-build
+	@for t in $(FUZZ_TARGETS); do \
+	    scratch=$$(mktemp -d); \
+	    echo "$$t: $(SMOKE_SECONDS) s on fuzz/corpus/$$t"; \
+	    $(FUZZ_BUILD)/fuzz/$$t -max_total_time=$(SMOKE_SECONDS) -max_len=4096 -artifact_prefix=$$scratch/ \
+	        $$scratch fuzz/corpus/$$t 2>$$scratch/log || { tail -40 $$scratch/log; exit 1; }; \
+	    grep -E '^Done' $$scratch/log; rm -rf $$scratch; \
+	done
+
+# Longer runs (FUZZ_SECONDS each, default 600), keeping what they find in build/fuzz/corpus.
+fuzz: fuzz-build
+	@for t in $(FUZZ_TARGETS); do \
+	    mkdir -p $(FUZZ_BUILD)/corpus/$$t; \
+	    $(FUZZ_BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=4096 -print_final_stats=1 \
+	        -artifact_prefix=$(FUZZ_BUILD)/ $(FUZZ_BUILD)/corpus/$$t fuzz/corpus/$$t || exit 1; \
+	done
+
+# 10^5 and 10^6 contacts / generators through the command line, with time and peak memory.
+large-inputs: build
+	bash tools/large_inputs.sh $(BUILD)/momentlab build/large
 
 bench: build
 	$(BUILD)/bench/bench_cone

@@ -16,7 +16,7 @@ using namespace momentlab;
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     std::vector<Vec3> vectors;
     bool finite = true;
-    for (std::size_t at = 0; at + 24 <= size && vectors.size() < 24; at += 24) {
+    for (std::size_t at = 0; at + 24 <= size && vectors.size() < 12; at += 24) {
         double x[3];
         std::memcpy(x, data + at, sizeof x);
         vectors.emplace_back(x[0], x[1], x[2]);

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Large inputs (docs/reliability.md): 10^5 and 10^6 contacts and generators through the real
+# command, with time and peak memory. Fails if a run fails or its peak exceeds LIMIT_KB
+# (default 2 GiB), or if memory grows more than 15x from 10^5 to 10^6 (not linear).
+set -euo pipefail
+bin=${1:-build/release/momentlab}
+dir=${2:-build/large}
+limit_kb=${LIMIT_KB:-2097152}
+mkdir -p "$dir"
+/usr/bin/python3 - "$dir" <<'PY'
+import json, math, random, sys, os
+d = sys.argv[1]
+random.seed(1)
+for n in (100000, 1000000):
+    if not os.path.exists(f"{d}/floor_{n}.json"):
+        cs = [{"point": [k / n * 10.0, 0.0], "normal": [0.0, 1.0], "mu": 0.3} for k in range(n)]
+        json.dump({"body": {"mass": 1.0, "com": [5.0, 0.5], "inertia": 10.0}, "contacts": cs}, open(f"{d}/floor_{n}.json", "w"))
+    if not os.path.exists(f"{d}/gens_{n}.json"):
+        g = [[random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(0.5, 1)] for _ in range(n)]
+        json.dump([{"type": "wrenches", "generators": g}], open(f"{d}/gens_{n}.json", "w"))
+PY
+declare -A peak
+run() {  # name, then the command
+    local name=$1; shift
+    local out
+    out=$( { /usr/bin/time -f "%e %M" "$@" > /dev/null; } 2>&1 | tail -1 )
+    local secs=${out% *} kb=${out#* }
+    printf "%-28s %8.2f s %10d KB peak\n" "$name" "$secs" "$kb"
+    peak[$name]=$kb
+    if (( kb > limit_kb )); then echo "FAIL: $name used more than $limit_kb KB"; exit 1; fi
+}
+for n in 100000 1000000; do
+    run "query, $n contacts" "$bin" query "$dir/floor_$n.json" --wrench 0 -9.81 -49.05
+    run "label, $n generators" "$bin" label "$dir/gens_$n.json"
+done
+for what in "query, %s contacts" "label, %s generators"; do
+    small=${peak[$(printf "$what" 100000)]} big=${peak[$(printf "$what" 1000000)]}
+    if (( big > 15 * small )); then echo "FAIL: $(printf "$what" N): $small KB -> $big KB is not linear"; exit 1; fi
+done
+echo "large inputs: ok"
