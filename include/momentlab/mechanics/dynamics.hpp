@@ -29,7 +29,8 @@ struct ModeForces {
 };
 
 /// Every mode with its force sets. Needs the body (mass, centre of mass, inertia).
-/// Throws std::invalid_argument if the scene has no body.
+/// Throws std::invalid_argument if the scene has no body, or its com is not finite, or its
+/// mass or inertia is not finite and > 0 (and, through enumerate_modes, for bad contacts).
 [[nodiscard]] std::vector<ModeForces> analyze(const Scene& scene);
 
 /// How many modes an applied wrench produces.
@@ -46,7 +47,8 @@ struct QueryResult {
     Verdict verdict = Verdict::Inconsistent;
 };
 
-/// Which modes the applied wrench e (fx, fy, tau about the origin) can produce.
+/// Which modes the applied wrench e (fx, fy, tau about the origin) can produce. Throws
+/// std::invalid_argument for a non-finite wrench.
 [[nodiscard]] QueryResult query(const std::vector<ModeForces>& analysis, const Vec3& e);
 
 /// The analysis compiled for many questions (planners, `query --wrenches`). Every distinct
@@ -60,7 +62,8 @@ public:
     explicit QueryIndex(const std::vector<ModeForces>& analysis);
 
     /// The modes (indices into the analysis, increasing) whose closed E_i holds e, written to
-    /// `modes` (cleared first; its capacity is reused), and the verdict.
+    /// `modes` (cleared first; its capacity is reused), and the verdict. Throws
+    /// std::invalid_argument for a wrench with a NaN or infinite coordinate.
     Verdict query(const Vec3& e, std::vector<std::size_t>& modes) const;
 
     /// The same, allocating the result.

@@ -28,8 +28,10 @@ struct ContactFinding {
 /// only the supporting edge; an obstacle vertex at a body vertex is left to the body vertex,
 /// which then gets one contact per obstacle edge ending there: corner on corner is degenerate,
 /// its non-penetrating motions are not convex, and this over-constrains it).
-/// An edge lying along another edge gives two contacts, at the ends of the overlap. Throws std::invalid_argument for polygons with fewer than 3 vertices
-/// or non-finite coordinates.
+/// An edge lying along another edge gives two contacts, at the ends of the overlap. "Lying
+/// on" is within `options.distance`, decided exactly (within_distance_of_segment). Throws
+/// std::invalid_argument for a polygon that is not simple (polygon_problem: fewer than 3
+/// vertices, non-finite or repeated vertices, crossing or folded edges) or a negative distance.
 [[nodiscard]] std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygon>& obstacles,
                                                  const ContactFinding& options = {});
 

@@ -40,6 +40,8 @@ struct ModeSet {
 
 /// Enumerates the contact modes exactly: every decision is the exact sign of a polynomial in
 /// the stored N_j = (n_j, p_j x n_j) and T_j = (t_j, p_j x t_j). O(n log n) for n contacts.
+/// Throws std::invalid_argument for a contact with a non-finite point, a zero or non-finite
+/// normal, or a negative or non-finite mu / mu_kinetic (as Contact::make would).
 [[nodiscard]] ModeSet enumerate_modes(const std::vector<Contact>& contacts);
 
 }  // namespace momentlab
