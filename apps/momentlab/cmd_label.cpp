@@ -1,5 +1,6 @@
 // `momentlab label FILE [--json] [--at X Y]...`: the cone of a force set and its labels.
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -89,6 +90,8 @@ int run(const LabelOptions& o) {
 }  // namespace
 
 std::string read_file(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw InputError("$", "cannot read file \"" + path + "\" (a directory)");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError("$", "cannot read file \"" + path + "\"");
     std::ostringstream s;

@@ -12,19 +12,24 @@ namespace {
 using nlohmann::json;
 using namespace json_read;
 
-Cone read_set(const json& s, const std::string& path, InputWarnings* w);
+// Sets nest through "sum" / "intersection"; deeper nesting than this is rejected rather than
+// recursed into (a stack overflow is a crash, not an error message).
+constexpr int kMaxDepth = 64;
 
-Cone combine(const json& sets, const std::string& path, bool intersect, InputWarnings* w) {
+Cone read_set(const json& s, const std::string& path, InputWarnings* w, int depth);
+
+Cone combine(const json& sets, const std::string& path, bool intersect, InputWarnings* w, int depth) {
+    if (depth > kMaxDepth) throw InputError(path, "sets nested more than 64 deep");
     if (!sets.is_array()) throw InputError(path, "expected a list of force sets");
     std::vector<Cone> cones;
-    for (std::size_t i = 0; i < sets.size(); ++i) cones.push_back(read_set(sets[i], at(path, i), w));
+    for (std::size_t i = 0; i < sets.size(); ++i) cones.push_back(read_set(sets[i], at(path, i), w, depth));
     if (!intersect) return sum(cones);
     Cone result = Cone::whole_space();
     for (const Cone& c : cones) result = intersection(result, c);
     return result;
 }
 
-Cone read_set(const json& s, const std::string& path, InputWarnings* w) {
+Cone read_set(const json& s, const std::string& path, InputWarnings* w, int depth) {
     if (!s.is_object()) throw InputError(path, "expected an object with a \"type\"");
     const json& type_field = field(s, path, "type");
     if (!type_field.is_string()) throw InputError(path + ".type", "expected a string");
@@ -60,7 +65,7 @@ Cone read_set(const json& s, const std::string& path, InputWarnings* w) {
         return Cone::from_halfspaces(vec3_list(field(s, path, "normals"), path + ".normals"));
     }
     if (type == "sum" || type == "intersection") {
-        return combine(field(s, path, "sets"), path + ".sets", type == "intersection", w);
+        return combine(field(s, path, "sets"), path + ".sets", type == "intersection", w, depth + 1);
     }
     throw InputError(path + ".type", "unknown type \"" + type +
                                          "\" (expected force, line, point, friction_cone, moment, "
@@ -70,7 +75,7 @@ Cone read_set(const json& s, const std::string& path, InputWarnings* w) {
 }  // namespace
 
 Cone read_force_set(const json& doc, InputWarnings* w) {
-    if (doc.is_array()) return combine(doc, "$", false, w);
+    if (doc.is_array()) return combine(doc, "$", false, w, 0);
     if (!doc.is_object()) throw InputError("$", "expected a list of force sets or an object with \"sets\"");
     known_fields(doc, "$", {"combine", "sets"}, w);
     std::string how = "sum";
@@ -81,7 +86,7 @@ Cone read_force_set(const json& doc, InputWarnings* w) {
         }
         how = c.get<std::string>();
     }
-    return combine(field(doc, "$", "sets"), "$.sets", how == "intersection", w);
+    return combine(field(doc, "$", "sets"), "$.sets", how == "intersection", w, 0);
 }
 
 Cone read_force_set_text(const std::string& text, InputWarnings* warnings) { return read_force_set(parse(text), warnings); }

@@ -43,5 +43,24 @@ TEST(ForceSetJson, ErrorsNameTheField) {
     EXPECT_EQ(error_path(R"([{"type": "wrenches", "generators": [[1, 2]]}])"), "$[0].generators[0]");
 }
 
+// Nesting by sum/intersection is read recursively: deep nesting must be an error, not a
+// stack overflow (100,000 levels crashed before the limit).
+TEST(ForceSetJson, DeepNestingIsAnErrorNotACrash) {
+    auto nested = [](int levels) {
+        std::string s;
+        for (int i = 0; i < levels; ++i) s += R"({"type": "sum", "sets": [)";
+        s += R"({"type": "point", "point": [1, 2]})";
+        for (int i = 0; i < levels; ++i) s += "]}";
+        return "[" + s + "]";
+    };
+    EXPECT_EQ(read_force_set_text(nested(64)).kind(), "plane");  // forces through (1, 2)
+    try {
+        (void)read_force_set_text(nested(100000));
+        ADD_FAILURE() << "expected an InputError";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("sets nested more than 64 deep"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace momentlab
