@@ -65,8 +65,8 @@ int run_query(const QueryOptions& o) {
             nlohmann::json w;
             try {
                 w = nlohmann::json::parse(line);
-            } catch (const nlohmann::json::parse_error&) {
-                throw InputError(where, "expected [fx, fy, tau]");
+            } catch (const nlohmann::json::exception&) {  // malformed, or a number like 1e999
+                throw InputError(where, "expected [fx, fy, tau] of finite numbers");
             }
             if (!w.is_array() || w.size() != 3 || !w[0].is_number() || !w[1].is_number() || !w[2].is_number()) {
                 throw InputError(where, "expected [fx, fy, tau]");
