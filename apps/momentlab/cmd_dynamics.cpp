@@ -30,8 +30,7 @@ struct QueryOptions {
 Vec3 checked_wrench(double fx, double fy, double tau, const std::string& where) {
     const Vec3 e(fx, fy, tau);
     if (!e.allFinite()) throw InputError(where, "expected finite numbers FX FY TAU");
-    const double m = e.cwiseAbs().maxCoeff();
-    if (m > kLargestMagnitude || (m != 0.0 && m < kSmallestMagnitude)) {
+    if (!magnitude_in_range(e.cwiseAbs().maxCoeff())) {
         throw InputError(where, "the wrench's magnitude is out of range (expected 0 or 1e-60 .. 1e60)");
     }
     return e;

@@ -55,8 +55,7 @@ void print_region(const char* name, const Region& r) {
 int run(const LabelOptions& o) {
     for (std::size_t i = 0; i + 1 < o.at.size(); i += 2) {
         const Vec2 p(o.at[i], o.at[i + 1]);
-        const double m = p.cwiseAbs().maxCoeff();
-        if (!p.allFinite() || m > kLargestMagnitude || (m != 0.0 && m < kSmallestMagnitude)) {
+        if (!p.allFinite() || !magnitude_in_range(p.cwiseAbs().maxCoeff())) {
             throw InputError("--at", "expected finite X Y, 0 or of magnitude 1e-60 .. 1e60");
         }
     }

@@ -25,8 +25,7 @@ double coordinate(const json& v, const std::string& path) {
 // A vector is 0 or has its largest coordinate in range; single coordinates may be tiny.
 template <class V>
 V checked(const V& v, const std::string& path) {
-    const double m = v.cwiseAbs().maxCoeff();
-    if (m != 0.0 && m < kSmallestMagnitude) {
+    if (!magnitude_in_range(v.cwiseAbs().maxCoeff())) {
         throw InputError(path, "the vector's magnitude is out of range (expected 0 or 1e-60 .. 1e60)");
     }
     return v;
@@ -36,7 +35,7 @@ V checked(const V& v, const std::string& path) {
 
 double number(const json& v, const std::string& path) {
     const double x = coordinate(v, path);
-    if (x != 0.0 && !(std::abs(x) >= kSmallestMagnitude)) {
+    if (!magnitude_in_range(std::abs(x))) {
         throw InputError(path, "the magnitude of " + v.dump() + " is out of range (expected 0 or 1e-60 .. 1e60)");
     }
     return x;

@@ -10,16 +10,16 @@
 namespace momentlab {
 namespace {
 
-// The polygon counter-clockwise (reversed if its signed area is negative).
-Polygon counter_clockwise(const Polygon& p, const char* what) {
-    if (p.size() < 3) throw std::invalid_argument(std::string(what) + ": a polygon needs at least 3 vertices");
-    double area = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        if (!p[i].allFinite()) throw std::invalid_argument(std::string(what) + ": non-finite vertex");
-        area += cross2(p[i], p[(i + 1) % p.size()]);
-    }
+// The polygon (simple, checked by the caller) counter-clockwise: reversed if it turns
+// clockwise at its leftmost (then lowest) vertex, where a simple polygon cannot be straight
+// (exact).
+Polygon counter_clockwise(const Polygon& p) {
+    const auto lowest = static_cast<std::size_t>(std::min_element(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
+                                                     return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+                                                 }) - p.begin());
+    const std::size_t n = p.size();
     Polygon q = p;
-    if (area < 0.0) std::reverse(q.begin(), q.end());
+    if (orient2d(p[(lowest + n - 1) % n], p[lowest], p[(lowest + 1) % n]) == Sign::Negative) std::reverse(q.begin(), q.end());
     return q;
 }
 
@@ -66,10 +66,10 @@ std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygo
             throw std::invalid_argument("find_contacts: " + (i == 0 ? std::string("the body polygon: ") : "obstacle " + std::to_string(i - 1) + ": ") + problem);
         }
     }
-    const Polygon b = counter_clockwise(body, "body");
+    const Polygon b = counter_clockwise(body);
     std::vector<Contact> found;
     for (const Polygon& raw : obstacles) {
-        const Polygon o = counter_clockwise(raw, "obstacle");
+        const Polygon o = counter_clockwise(raw);
         vertex_on_edge(b, o, true, options, found);
         vertex_on_edge(o, b, false, options, found);
     }

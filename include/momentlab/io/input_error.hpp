@@ -28,4 +28,10 @@ using InputWarnings = std::vector<std::string>;
 inline constexpr double kSmallestMagnitude = 1e-60;
 inline constexpr double kLargestMagnitude = 1e60;
 
+/// True for an accepted magnitude (of a number, or of a vector's largest coordinate): 0, or
+/// between kSmallestMagnitude and kLargestMagnitude. False for NaN and infinity.
+inline bool magnitude_in_range(double m) {
+    return m == 0.0 || (m >= kSmallestMagnitude && m <= kLargestMagnitude);
+}
+
 }  // namespace momentlab
