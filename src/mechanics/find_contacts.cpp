@@ -14,12 +14,12 @@ namespace {
 // clockwise at its leftmost (then lowest) vertex, where a simple polygon cannot be straight
 // (exact).
 Polygon counter_clockwise(const Polygon& p) {
-    const auto lowest = static_cast<std::size_t>(std::min_element(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
+    const auto leftmost = static_cast<std::size_t>(std::min_element(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
                                                      return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
                                                  }) - p.begin());
     const std::size_t n = p.size();
     Polygon q = p;
-    if (orient2d(p[(lowest + n - 1) % n], p[lowest], p[(lowest + 1) % n]) == Sign::Negative) std::reverse(q.begin(), q.end());
+    if (orient2d(p[(leftmost + n - 1) % n], p[leftmost], p[(leftmost + 1) % n]) == Sign::Negative) std::reverse(q.begin(), q.end());
     return q;
 }
 
