@@ -24,3 +24,21 @@ show "... pushed with 20 N along its base" query "$here/block-on-table.json" --w
 show "... pushed with 20 N near its top" query "$here/block-on-table.json" --wrench 20 -9.81 -14.705
 show "A rod wedged in a corner (mu = 2): every mode" analyze "$here/rod-in-corner.json"
 show "... a wrench that can both jam it (ff) and throw it off (ss): Painleve-style ambiguity" query "$here/rod-in-corner.json" --wrench 19 16 -2
+
+# Many questions at once (a planner's use): one wrench per line in, one JSON answer per line out.
+wrenches=$(mktemp)
+printf '%s\n' '[0, -9.81, -4.905]' '[20, -9.81, -5.105]' '[20, -9.81, -14.705]' '[0, 9.81, 4.905]' > "$wrenches"
+echo
+echo "== The block on the table, four wrenches at once (weight; pushed at the base; near the top; lifted)"
+echo "   momentlab query examples/block-on-table.json --wrenches wrenches.txt"
+"$bin" query "$here/block-on-table.json" --wrenches "$wrenches"
+rm -f "$wrenches"
+
+# Bad input: exit status 2 and one line naming the field (docs/reliability.md has the table).
+bad=$(mktemp)
+printf '%s' '{"contacts": [{"point": [0, 0], "normal": [0, 1], "mu": -0.3}]}' > "$bad"
+echo
+echo "== Bad input gets one line naming the field, exit status 2"
+echo "   momentlab modes bad.json   (mu = -0.3)"
+"$bin" modes "$bad" || echo "   (exit status $?)"
+rm -f "$bad"
