@@ -10,6 +10,12 @@
 
 #include "momentlab/geometry/force_sets.hpp"
 
+// The 256-bit vectors of QueryIndex::query never cross a call (load is always inlined), so
+// GCC's note that their ABI differs without AVX (-Wpsabi) does not apply to this file.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 namespace momentlab {
 
 namespace {
