@@ -11,8 +11,8 @@
 #include "momentlab/geometry/force_sets.hpp"
 
 // The 256-bit vectors of QueryIndex::query never cross a call (load is always inlined), so
-// GCC's note that their ABI differs without AVX (-Wpsabi) does not apply to this file.
-#if defined(__GNUC__) && !defined(__clang__)
+// the compiler's note that their ABI differs without AVX (-Wpsabi) does not apply here.
+#if defined(__GNUC__)  // GCC and Clang
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 
