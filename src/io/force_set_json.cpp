@@ -49,8 +49,7 @@ Cone read_set(const json& s, const std::string& path, InputWarnings* w, int dept
     }
     if (type == "point") return forces_through_point(vec2(field(s, path, "point"), path + ".point"));
     if (type == "friction_cone") {
-        const double mu = number(field(s, path, "mu"), path + ".mu");
-        if (mu < 0.0) throw InputError(path + ".mu", "expected mu >= 0");
+        const double mu = nonnegative(field(s, path, "mu"), path + ".mu", "mu");
         return friction_cone(vec2(field(s, path, "point"), path + ".point"), nonzero2(s, path, "normal"), mu);
     }
     if (type == "moment") {

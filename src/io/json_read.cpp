@@ -41,6 +41,12 @@ double number(const json& v, const std::string& path) {
     return x;
 }
 
+double nonnegative(const json& v, const std::string& path, const char* what) {
+    const double x = number(v, path);
+    if (x < 0.0) throw InputError(path, std::string("expected ") + what + " >= 0");
+    return x;
+}
+
 Vec2 vec2(const json& v, const std::string& path) {
     if (!v.is_array() || v.size() != 2) throw InputError(path, "expected [x, y]");
     return checked(Vec2(coordinate(v[0], path + "[0]"), coordinate(v[1], path + "[1]")), path);

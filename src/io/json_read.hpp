@@ -17,6 +17,8 @@ using nlohmann::json;
 const json& field(const json& obj, const std::string& path, const char* name);
 /// A finite number of magnitude 0 or in [kSmallestMagnitude, kLargestMagnitude].
 double number(const json& v, const std::string& path);
+/// A number (as above) that must be >= 0; the error says "expected <what> >= 0".
+double nonnegative(const json& v, const std::string& path, const char* what);
 /// A vector of finite coordinates of magnitude at most kLargestMagnitude, zero or with its
 /// largest coordinate at least kSmallestMagnitude (a direction like [1e-300, 1] is fine).
 Vec2 vec2(const json& v, const std::string& path);

@@ -53,13 +53,11 @@ Contact read_contact(const json& c, const std::string& path, InputWarnings* w) {
     const Vec2 normal = nonzero2(c, path, "normal");
     double mu = 0.0;
     if (c.contains("mu")) {
-        mu = number(c.at("mu"), path + ".mu");
-        if (mu < 0.0) throw InputError(path + ".mu", "expected mu >= 0");
+        mu = nonnegative(c.at("mu"), path + ".mu", "mu");
     }
     std::optional<double> mu_kinetic;
     if (c.contains("mu_kinetic")) {
-        mu_kinetic = number(c.at("mu_kinetic"), path + ".mu_kinetic");
-        if (*mu_kinetic < 0.0) throw InputError(path + ".mu_kinetic", "expected mu_kinetic >= 0");
+        mu_kinetic = nonnegative(c.at("mu_kinetic"), path + ".mu_kinetic", "mu_kinetic");
     }
     std::string name;
     if (c.contains("name")) {
@@ -88,8 +86,7 @@ Scene read_scene(const json& doc, InputWarnings* w) {
     }
     ContactFinding options;
     if (doc.contains("contact_distance")) {
-        options.distance = number(doc.at("contact_distance"), "$.contact_distance");
-        if (options.distance < 0.0) throw InputError("$.contact_distance", "expected a distance >= 0");
+        options.distance = nonnegative(doc.at("contact_distance"), "$.contact_distance", "a distance");
     }
     if (doc.contains("contacts")) {
         const json& contacts = doc.at("contacts");
@@ -119,8 +116,7 @@ Scene read_scene(const json& doc, InputWarnings* w) {
             throw InputError("$", "missing field \"contacts\" (or a body polygon and obstacles to find them from)");
         }
         if (doc.contains("mu")) {
-            options.mu = number(doc.at("mu"), "$.mu");
-            if (options.mu < 0.0) throw InputError("$.mu", "expected mu >= 0");
+            options.mu = nonnegative(doc.at("mu"), "$.mu", "mu");
             options.mu_kinetic = options.mu;
         }
         try {

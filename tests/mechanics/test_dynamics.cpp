@@ -29,6 +29,14 @@ Scene block_on_table(double mu) {
 
 Vec3 force_at(const Vec2& p, const Vec2& f) { return wrench_at(p, f); }
 
+// A contact on [-2, 2] x [-1, 1] with mu in {0, 0.25, .., 1}; integral scenes use small integers
+// (exact arithmetic end to end, many exact degeneracies).
+Contact random_contact(testing::Random& rnd, bool integral) {
+    const Vec2 p = integral ? Vec2(rnd.integer(-2, 2), rnd.integer(-1, 1)) : Vec2(rnd.uniform(-2, 2), rnd.uniform(-1, 1));
+    const Vec2 nrm = integral ? Vec2(rnd.integer(-1, 1), 1) : Vec2(rnd.uniform(-1, 1), rnd.uniform(-1, 1));
+    return Contact::make(p, nrm.norm() > 0 ? nrm : Vec2(0, 1), rnd.integer(0, 4) * 0.25);
+}
+
 TEST(Dynamics, BlockOnATable) {
     const auto a = analyze(block_on_table(0.5));
     const double g = 9.81;
@@ -63,9 +71,7 @@ TEST(Dynamics, QueryAgreesWithExactLpOracle) {
         const int n = rnd.integer(1, 4);
         for (int j = 0; j < n; ++j) {
             const bool integral = s % 2 == 1;
-            const Vec2 p = integral ? Vec2(rnd.integer(-2, 2), rnd.integer(-1, 1)) : Vec2(rnd.uniform(-2, 2), rnd.uniform(-1, 1));
-            const Vec2 nrm = integral ? Vec2(rnd.integer(-1, 1), 1) : Vec2(rnd.uniform(-1, 1), rnd.uniform(-1, 1));
-            scene.contacts.push_back(Contact::make(p, nrm.norm() > 0 ? nrm : Vec2(0, 1), rnd.integer(0, 4) * 0.25));
+            scene.contacts.push_back(random_contact(rnd, integral));
         }
         const auto a = analyze(scene);
         const Mat3 m = inertia_at_origin(*scene.body);
@@ -133,9 +139,7 @@ TEST(Dynamics, QueryIndexAgreesWithPerModeQueryOnHardWrenches) {
                 scene.contacts.push_back(Contact::make(p, -(Eigen::Rotation2Dd(0.2) * p), 0.3));
                 continue;
             }
-            const Vec2 p = integral ? Vec2(rnd.integer(-2, 2), rnd.integer(-1, 1)) : Vec2(rnd.uniform(-2, 2), rnd.uniform(-1, 1));
-            const Vec2 nrm = integral ? Vec2(rnd.integer(-1, 1), 1) : Vec2(rnd.uniform(-1, 1), rnd.uniform(-1, 1));
-            scene.contacts.push_back(Contact::make(p, nrm.norm() > 0 ? nrm : Vec2(0, 1), rnd.integer(0, 4) * 0.25));
+            scene.contacts.push_back(random_contact(rnd, integral));
         }
         const auto a = analyze(scene);
         const QueryIndex index(a);
