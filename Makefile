@@ -7,7 +7,7 @@ JOBS ?= 2
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
 APT_PACKAGES := g++ cmake make libeigen3-dev libgmp-dev nlohmann-json3-dev libcli11-dev \
-                libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev \
+                libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev libcairo2-dev pkg-config \
                 clang libclang-rt-14-dev
 SAN_BUILD := build/asan
 FUZZ_BUILD := build/fuzz
@@ -15,7 +15,7 @@ FUZZ_TARGETS := fuzz_scene_reader fuzz_labels_reader fuzz_cone fuzz_query
 FUZZ_SECONDS ?= 600
 SMOKE_SECONDS ?= 5
 
-.PHONY: all deps build demo test test-release test-sanitizers fuzz-build test-fuzz fuzz large-inputs bench clean
+.PHONY: all deps build demo figures test test-release test-sanitizers fuzz-build test-fuzz fuzz large-inputs bench clean
 
 all: build
 
@@ -36,7 +36,12 @@ build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j$(JOBS)
 
 demo: build
-	@bash examples/demo.sh $(BUILD)/momentlab
+	@bash examples/demo.sh $(BUILD)/momentlab out
+
+# The README's pictures (docs/figures/*.png), regenerated from the bundled examples.
+figures: build
+	@tmp=$$(mktemp -d); bash examples/demo.sh $(BUILD)/momentlab $$tmp >/dev/null; \
+	mkdir -p docs/figures; cp $$tmp/*.png docs/figures/; rm -rf $$tmp; ls docs/figures
 
 # Every test: the suite in the release build, again under AddressSanitizer and
 # UndefinedBehaviorSanitizer (any report fails), and each fuzz target briefly on its corpus.

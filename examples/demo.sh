@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The main job on the bundled examples: moment labels of the paper's Figure 1 and 2 force sets
 # (Mason 1991), then the contact problem: every mode of the bundled scenes with its sets, and
-# which mode an applied wrench produces.
+# which mode an applied wrench produces; last, the paper's figures drawn from these files into
+# OUT (default: out/).
 set -euo pipefail
-bin=${1:?usage: demo.sh path/to/momentlab}
+bin=${1:?usage: demo.sh path/to/momentlab [OUT]}
+out=${2:-out}
 here=$(cd "$(dirname "$0")" && pwd)
 show() {
     echo
@@ -42,3 +44,26 @@ echo "== Bad input gets one line naming the field, exit status 2"
 echo "   momentlab modes bad.json   (mu = -0.3)"
 "$bin" modes "$bad" || echo "   (exit status $?)"
 rm -f "$bad"
+
+# The paper's figures, drawn from the bundled files (SVG for reading, PNG for showing).
+mkdir -p "$out"
+echo
+echo "== The paper's Figures 1-4, drawn"
+figure() {  # figure NAME TITLE ARGS...
+    local name=$1 title=$2
+    shift 2
+    echo "   momentlab $* --title \"$title\" -o $out/$name.svg -o $out/$name.png" | sed "s#$here/#examples/#g"
+    "$bin" "$@" --title "$title" -o "$out/$name.svg" -o "$out/$name.png" >/dev/null
+}
+figure figure-1a "Figure 1a: a line of force" label "$here/figure-1a-force.json"
+figure figure-1b "Figure 1b: all forces through a point" label "$here/figure-1b-point.json"
+figure figure-1c "Figure 1c: a friction cone" label "$here/figure-1c-friction-cone.json"
+figure figure-2 "Figure 2: two friction cones and their resultants" label "$here/figure-2-two-friction-cones.json"
+figure figure-3 "Figure 3: sliding the block along the wall (mode rr)" \
+    draw "$here/figure-3-block-along-wall.json" --mode rr
+figure figure-3-modes "The block along the wall: every contact mode" \
+    draw "$here/figure-3-block-along-wall.json" --what modes
+figure figure-4 "Figure 4: two-point peg insertion (mode rl)" draw "$here/figure-4-peg-in-hole.json" --mode rl
+figure rod-in-corner-modes "A rod in a corner: every contact mode" draw "$here/rod-in-corner.json" --what modes
+echo "   pictures written to $out/:"
+ls "$out" | sed 's/^/     /'

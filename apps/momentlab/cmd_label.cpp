@@ -1,4 +1,5 @@
-// `momentlab label FILE [--json] [--at X Y]...`: the cone of a force set and its labels.
+// `momentlab label FILE [--json] [--at X Y]... [-o PICTURE]...`: the cone of a force set and its
+// labels, printed and drawn.
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include "momentlab/io/force_set_json.hpp"
 #include "momentlab/io/scene_json.hpp"
 #include "momentlab/io/json_output.hpp"
+#include "momentlab/render/pictures.hpp"
 
 namespace momentlab::cli {
 namespace {
@@ -20,6 +22,7 @@ struct LabelOptions {
     std::string file;
     bool json = false;
     std::vector<double> at;
+    PictureOptions picture;
 };
 
 std::string fmt(double x) {
@@ -59,8 +62,21 @@ int run(const LabelOptions& o) {
             throw InputError("--at", "expected finite X Y, 0 or of magnitude 1e-60 .. 1e60");
         }
     }
-    const Labels labels(read_force_set_file(o.file));
+    const std::optional<Box> view = checked_picture_options(o.picture);
+    InputWarnings warnings;
+    const ForceSetFile parts = read_force_set_parts_text(read_file(o.file), &warnings);
+    for (const std::string& w : warnings) std::cerr << "momentlab: warning: " << w << "\n";
+    const Labels labels(parts.result);
     const Cone& f = labels.forces();
+    if (!o.picture.files.empty()) {
+        std::vector<render::ForcePanel> panels;
+        for (std::size_t i = 0; i < parts.parts.size(); ++i) {
+            panels.push_back({parts.parts.size() == 1 ? "F" : "F" + std::to_string(i + 1), parts.parts[i], {}});
+        }
+        const std::string title =
+            o.picture.title.empty() ? std::filesystem::path(o.file).stem().string() + ": moment labels" : o.picture.title;
+        write_picture(render::labels_figure(title, panels, parts.intersect, parts.result, view), o.picture);
+    }
     if (o.json) {
         nlohmann::json out = {{"cone", to_json(f)}, {"labels", to_json(labels)}};
         for (std::size_t i = 0; i + 1 < o.at.size(); i += 2) {
@@ -127,6 +143,7 @@ std::function<int()> add_label_command(CLI::App& app) {
     cmd->add_flag("--json", opts->json, "machine-readable output on stdout");
     cmd->add_option("--at", opts->at, "X Y: also print the label of this point (repeatable)")
         ->expected(2)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    add_picture_options(cmd, opts->picture, false);
     return [opts] { return run(*opts); };
 }
 

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
     const auto run_modes = momentlab::cli::add_modes_command(app);
     const auto run_query = momentlab::cli::add_query_command(app);
     const auto run_analyze = momentlab::cli::add_analyze_command(app);
+    const auto run_draw = momentlab::cli::add_draw_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("modes")) return run_modes();
         if (app.got_subcommand("query")) return run_query();
         if (app.got_subcommand("analyze")) return run_analyze();
+        if (app.got_subcommand("draw")) return run_draw();
     } catch (const std::invalid_argument& e) {
         std::cerr << "momentlab: " << e.what() << "\n";
         return 2;

@@ -87,6 +87,35 @@ std::string Region::kind() const {
 
 std::vector<Vec2> Region::clipped(const Box& box) const {
     if (is_empty) return {};
+    const auto inside = [&](const Vec2& p) {
+        return p.x() >= box.min.x() && p.x() <= box.max.x() && p.y() >= box.min.y() && p.y() <= box.max.y();
+    };
+    // Points and 1-dimensional regions directly: cutting a polygon down to them by pairs of
+    // opposite half-planes loses them to rounding.
+    if (lines.size() + rays.size() == 0 && vertices.size() == 1) {
+        return inside(vertices[0]) ? std::vector<Vec2>{vertices[0]} : std::vector<Vec2>{};
+    }
+    const bool one_dimensional = lines.size() + rays.size() + vertices.size() == 2 ||
+                                 (lines.size() == 1 && rays.empty() && vertices.size() == 1);
+    if (one_dimensional) {
+        // q + t d with t in [lo, hi]: a segment (t in [0, 1]), a ray (t >= 0) or a line.
+        const Vec2 q = vertices[0];
+        const Vec2 d = vertices.size() == 2 ? Vec2(vertices[1] - q) : (rays.empty() ? lines[0] : rays[0]);
+        double lo = lines.empty() ? 0.0 : -INFINITY, hi = vertices.size() == 2 ? 1.0 : INFINITY;
+        for (int k = 0; k < 2; ++k) {
+            if (d[k] == 0.0) {
+                if (q[k] < box.min[k] || q[k] > box.max[k]) return {};
+                continue;
+            }
+            double a = (box.min[k] - q[k]) / d[k], b = (box.max[k] - q[k]) / d[k];
+            if (a > b) std::swap(a, b);
+            lo = std::max(lo, a);
+            hi = std::min(hi, b);
+        }
+        if (lo > hi) return {};
+        if (lo == hi) return {q + lo * d};
+        return {q + lo * d, q + hi * d};
+    }
     std::vector<Vec2> poly = {box.min, Vec2(box.max.x(), box.min.y()), box.max,
                               Vec2(box.min.x(), box.max.y())};
     for (const Vec3& h : halfplanes) poly = clip(poly, h);

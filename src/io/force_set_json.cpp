@@ -18,11 +18,15 @@ constexpr int kMaxDepth = 64;
 
 Cone read_set(const json& s, const std::string& path, InputWarnings* w, int depth);
 
-Cone combine(const json& sets, const std::string& path, bool intersect, InputWarnings* w, int depth) {
+std::vector<Cone> read_sets(const json& sets, const std::string& path, InputWarnings* w, int depth) {
     if (depth > kMaxDepth) throw InputError(path, "sets nested more than 64 deep");
     if (!sets.is_array()) throw InputError(path, "expected a list of force sets");
     std::vector<Cone> cones;
     for (std::size_t i = 0; i < sets.size(); ++i) cones.push_back(read_set(sets[i], at(path, i), w, depth));
+    return cones;
+}
+
+Cone combine(const std::vector<Cone>& cones, bool intersect) {
     if (!intersect) return sum(cones);
     Cone result = Cone::whole_space();
     for (const Cone& c : cones) result = intersection(result, c);
@@ -64,7 +68,7 @@ Cone read_set(const json& s, const std::string& path, InputWarnings* w, int dept
         return Cone::from_halfspaces(vec3_list(field(s, path, "normals"), path + ".normals"));
     }
     if (type == "sum" || type == "intersection") {
-        return combine(field(s, path, "sets"), path + ".sets", type == "intersection", w, depth + 1);
+        return combine(read_sets(field(s, path, "sets"), path + ".sets", w, depth + 1), type == "intersection");
     }
     throw InputError(path + ".type", "unknown type \"" + type +
                                          "\" (expected force, line, point, friction_cone, moment, "
@@ -73,19 +77,30 @@ Cone read_set(const json& s, const std::string& path, InputWarnings* w, int dept
 
 }  // namespace
 
-Cone read_force_set(const json& doc, InputWarnings* w) {
-    if (doc.is_array()) return combine(doc, "$", false, w, 0);
-    if (!doc.is_object()) throw InputError("$", "expected a list of force sets or an object with \"sets\"");
-    known_fields(doc, "$", {"combine", "sets"}, w);
-    std::string how = "sum";
-    if (doc.contains("combine")) {
-        const json& c = doc.at("combine");
-        if (!c.is_string() || (c != "sum" && c != "intersection")) {
-            throw InputError("$.combine", "expected \"sum\" or \"intersection\"");
+ForceSetFile read_force_set_parts(const json& doc, InputWarnings* w) {
+    ForceSetFile file;
+    if (doc.is_array()) {
+        file.parts = read_sets(doc, "$", w, 0);
+    } else {
+        if (!doc.is_object()) throw InputError("$", "expected a list of force sets or an object with \"sets\"");
+        known_fields(doc, "$", {"combine", "sets"}, w);
+        if (doc.contains("combine")) {
+            const json& c = doc.at("combine");
+            if (!c.is_string() || (c != "sum" && c != "intersection")) {
+                throw InputError("$.combine", "expected \"sum\" or \"intersection\"");
+            }
+            file.intersect = c == "intersection";
         }
-        how = c.get<std::string>();
+        file.parts = read_sets(field(doc, "$", "sets"), "$.sets", w, 0);
     }
-    return combine(field(doc, "$", "sets"), "$.sets", how == "intersection", w, 0);
+    file.result = combine(file.parts, file.intersect);
+    return file;
+}
+
+Cone read_force_set(const json& doc, InputWarnings* w) { return read_force_set_parts(doc, w).result; }
+
+ForceSetFile read_force_set_parts_text(const std::string& text, InputWarnings* warnings) {
+    return read_force_set_parts(parse(text), warnings);
 }
 
 Cone read_force_set_text(const std::string& text, InputWarnings* warnings) { return read_force_set(parse(text), warnings); }

@@ -7,7 +7,9 @@
 #include <vector>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -119,6 +121,81 @@ TEST(Cli, SceneErrorsNameTheField) {
     std::ofstream("/tmp/momentlab_bad_scene.json") << R"({"contacts": [{"point": [0, 0], "normal": [0, 0]}]})";
     EXPECT_EQ(run("modes /tmp/momentlab_bad_scene.json").status, 2);
     EXPECT_NE(stderr_text().find("$.contacts[0].normal"), std::string::npos) << stderr_text();
+}
+
+// Pictures: -o writes each file named, in the format its extension says; bad requests exit 2
+// with one line and leave nothing behind.
+class CliPictures : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = std::filesystem::temp_directory_path() / ("momentlab-cli-pictures-" + std::to_string(::getpid()));
+        std::filesystem::remove_all(dir_);
+        std::filesystem::create_directories(dir_);
+    }
+    void TearDown() override { std::filesystem::remove_all(dir_); }
+    [[nodiscard]] std::string at(const std::string& name) const { return (dir_ / name).string(); }
+    [[nodiscard]] std::size_t files() const {
+        return static_cast<std::size_t>(std::distance(std::filesystem::directory_iterator(dir_), {}));
+    }
+    std::filesystem::path dir_;
+};
+
+std::string contents(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST_F(CliPictures, DrawWritesEveryFormatAsked) {
+    const Result r = run("draw " + kExamples + "/figure-3-block-along-wall.json --mode rr -o " + at("f.svg") + " -o " +
+                         at("f.pdf") + " -o " + at("f.png"));
+    ASSERT_EQ(r.status, 0) << stderr_text();
+    EXPECT_EQ(r.out, "wrote " + at("f.svg") + "\nwrote " + at("f.pdf") + "\nwrote " + at("f.png") + "\n");
+    EXPECT_NE(contents(at("f.svg")).find(">E applied (rr)</text>"), std::string::npos);
+    EXPECT_EQ(contents(at("f.pdf")).substr(0, 5), "%PDF-");
+    EXPECT_EQ(contents(at("f.png")).substr(1, 3), "PNG");
+}
+
+TEST_F(CliPictures, LabelDrawsThePartsAndTheirCombination) {
+    const Result r = run("label " + kExamples + "/figure-2-two-friction-cones.json --title 'Figure 2' -o " + at("f.svg"));
+    ASSERT_EQ(r.status, 0) << stderr_text();
+    const std::string svg = contents(at("f.svg"));
+    for (const char* text : {">Figure 2</text>", ">F1</text>", ">F2</text>", ">sum: "}) {
+        EXPECT_NE(svg.find(text), std::string::npos) << text;
+    }
+}
+
+TEST_F(CliPictures, BadRequestsExitTwoAndWriteNothing) {
+    const std::string scene = kExamples + "/figure-3-block-along-wall.json";
+    struct Case {
+        std::string args;
+        std::string names;
+    };
+    const std::vector<Case> cases = {
+        {"draw " + scene + " --mode xx -o " + at("a.svg"), "--mode"},
+        {"draw " + scene + " -o " + at("a.svg") + " -o " + at("b.gif"), "-o"},
+        {"draw " + scene + " --view 1 0 0 1 -o " + at("a.svg"), "--view"},
+        {"draw " + scene + " --view 0 0 1 nan -o " + at("a.svg"), "--view"},
+        {"draw " + scene + " --what modes --mode rr -o " + at("a.svg"), "--mode"},
+        {"draw " + scene + " -o " + at("missing/a.svg"), "-o"},
+        {"label " + kExamples + "/figure-1a-force.json -o " + at("a.txt"), "-o"},
+        {"draw " + scene, "-o"},
+    };
+    for (const Case& c : cases) {
+        const Result r = run(c.args);
+        EXPECT_EQ(r.status, 2) << c.args;
+        const std::string err = stderr_text();
+        EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << c.args << ": " << err;
+        EXPECT_NE(err.find(c.names), std::string::npos) << c.args << ": " << err;
+        EXPECT_EQ(files(), 0u) << c.args;
+    }
+}
+
+TEST_F(CliPictures, ForcesNeedABody) {
+    std::ofstream(at("scene.json")) << R"({"contacts": [{"point": [0, 0], "normal": [0, 1], "mu": 0.5}]})";
+    EXPECT_EQ(run("draw " + at("scene.json") + " --what forces -o " + at("a.svg")).status, 2);
+    EXPECT_NE(stderr_text().find("body"), std::string::npos);
+    EXPECT_EQ(run("draw " + at("scene.json") + " -o " + at("a.svg")).status, 0) << stderr_text();
+    EXPECT_EQ(run("draw " + at("scene.json") + " --what labels -o " + at("b.svg")).status, 0) << stderr_text();
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 
 #include "../common/label_checks.hpp"
 #include "momentlab/geometry/force_sets.hpp"
@@ -152,6 +153,30 @@ TEST(Labels, RegionKindsBuiltFromMomentConditions) {
     for (const Labels* l : {&segment, &ray, &triangle, &strip}) {
         EXPECT_TRUE(Labels::forces_from_regions(l->plus(), l->minus()) == l->forces()) << l->plus().kind();
     }
+}
+
+// Regression: a point or a line was cut out of the box by two opposite half-planes, and a box
+// not symmetric about it rounded the cut to nothing (the apex of Figure 2's first cone vanished).
+TEST(Labels, ClippedPointsAndLinesSurviveAsymmetricBoxes) {
+    // The span of a friction cone at (0, 0) and of a slanted line of force through it: their
+    // labels are the point (0, 0) and the line y = 2 x, cut by boxes around them.
+    const std::vector<Vec3> cone_span = {Vec3(0.5, 1, 0), Vec3(-0.5, 1, 0)};
+    const Region point = Labels(Cone::from_generators(std::span<const Vec3>(), cone_span)).plus();
+    const Region line = Labels(line_of_force(Vec2(0, 0), Vec2(1, 2))).plus();
+    ASSERT_EQ(point.kind(), "point");
+    ASSERT_EQ(line.kind(), "line");
+    std::mt19937_64 rng(7);
+    auto coordinate = [&](double lo, double hi) { return lo + (hi - lo) * static_cast<double>(rng() >> 11) * 0x1p-53; };
+    for (int i = 0; i < 2000; ++i) {
+        const Box box{Vec2(coordinate(-9, -0.1), coordinate(-9, -0.1)), Vec2(coordinate(0.1, 9), coordinate(0.1, 9))};
+        const std::vector<Vec2> p = point.clipped(box);
+        ASSERT_EQ(p.size(), 1u) << i;
+        EXPECT_EQ(p[0], Vec2(0, 0));
+        const std::vector<Vec2> l = line.clipped(box);
+        ASSERT_EQ(l.size(), 2u) << i;
+        for (const Vec2& q : l) EXPECT_NEAR(q.y(), 2 * q.x(), 1e-12 * box.max.norm());
+    }
+    EXPECT_TRUE(point.clipped(Box{Vec2(1, 1), Vec2(2, 2)}).empty());
 }
 
 TEST(Labels, ClippedRegionsStayInTheBox) {

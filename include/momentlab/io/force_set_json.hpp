@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "momentlab/geometry/cone.hpp"
 #include "momentlab/io/input_error.hpp"
@@ -26,6 +27,19 @@ namespace momentlab {
 /// finite, 0 or of magnitude 1e-60 .. 1e60; docs/reliability.md). Unknown fields are ignored
 /// with a warning in `warnings`, when given.
 [[nodiscard]] Cone read_force_set(const nlohmann::json& doc, InputWarnings* warnings = nullptr);
+
+/// A force-set file with its top-level sets kept apart (for pictures of the combination).
+struct ForceSetFile {
+    std::vector<Cone> parts;  ///< the top-level sets, in file order
+    bool intersect = false;   ///< combined by intersection (else by sum)
+    Cone result;              ///< their sum or intersection
+};
+
+/// The file `doc` as its parts and their combination; errors as read_force_set.
+[[nodiscard]] ForceSetFile read_force_set_parts(const nlohmann::json& doc, InputWarnings* warnings = nullptr);
+
+/// Parses `text` as JSON and reads it as a ForceSetFile.
+[[nodiscard]] ForceSetFile read_force_set_parts_text(const std::string& text, InputWarnings* warnings = nullptr);
 
 /// Parses `text` as JSON and reads the force set; malformed JSON is an InputError at "$".
 [[nodiscard]] Cone read_force_set_text(const std::string& text, InputWarnings* warnings = nullptr);

@@ -1,0 +1,79 @@
+#pragma once
+
+/// \file
+/// The pictures of the method (Mason 1991, Figures 1-6): moment labels of force sets, contact
+/// modes as regions of rotation centres, and the per-mode sets F_i, T_i, E_i side by side.
+/// Each builder returns a Figure (render/figure.hpp); the mechanics are read, never changed.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "momentlab/geometry/cone.hpp"
+#include "momentlab/geometry/labels.hpp"
+#include "momentlab/mechanics/dynamics.hpp"
+#include "momentlab/mechanics/scene.hpp"
+#include "momentlab/render/figure.hpp"
+
+namespace momentlab::render {
+
+/// A force set to draw in one panel, with its title. `anchors` are points where its forces
+/// preferably start their arrows (a force is drawn from the first anchor on its line of action,
+/// else from the point of that line nearest the view's centre).
+struct ForcePanel {
+    std::string title;
+    Cone forces;
+    std::vector<Vec2> anchors;
+};
+
+/// The +- set of a force set: the points about which every force of F has zero moment, i.e. the
+/// common part of F+ and F- (a line, a point, the whole plane for F = {0}, else empty). Exact:
+/// it is the labels of span(F).
+[[nodiscard]] Region both_region(const Cone& forces);
+
+/// A view fitting the points (padded by `pad` of their extent on each side, never flatter than
+/// 1:2, and [-1, 1]^2 when there are none).
+[[nodiscard]] Box fit_view(const std::vector<Vec2>& points, double pad = 0.35);
+
+/// The panel of a force set's labels over `view`: + and - regions filled (palette::kPlus /
+/// kMinus) with a + or - mark, the +- set drawn in palette::kBoth with a "±" mark, unbounded
+/// regions cut at the view with outward arrows where they go on, and the forces (extreme
+/// rays and lines of the cone) as arrows along their lines of action.
+[[nodiscard]] Panel labels_panel(const ForcePanel& set, const Box& view);
+
+/// The legend of labels panels.
+[[nodiscard]] std::vector<LegendEntry> labels_legend();
+
+/// Figures 1 and 2: one panel per force set and, when there are several, a last panel with
+/// their sum (labels intersected) or intersection. `view` overrides the automatic view.
+[[nodiscard]] Figure labels_figure(const std::string& title, const std::vector<ForcePanel>& parts,
+                                   bool intersect, const Cone& combined, std::optional<Box> view = std::nullopt);
+
+/// How much of a scene to draw: everything, everything lighter (over force sets), or the
+/// outlines and contact points only (under the modes' regions).
+enum class SceneStyle { Full, Faint, Outline };
+
+/// The scene (obstacles, body, centre of mass, contacts with their friction cones and names)
+/// drawn into `panel`.
+void add_scene(Panel& panel, const Scene& scene, SceneStyle style);
+
+/// A view fitting the scene's body and contacts (or its obstacles when there is neither).
+[[nodiscard]] Box scene_view(const Scene& scene);
+
+/// The scene with each mode's rotation centres (Reuleaux's construction extended by Brost and
+/// Mason 1989): regions coloured per mode and marked with the mode string and its sense (↺
+/// counter-clockwise, ↻ clockwise); the contact normals and tangents as guides; translations
+/// and the mode at rest listed in the legend.
+[[nodiscard]] Figure modes_figure(const std::string& title, const Scene& scene, std::optional<Box> view = std::nullopt);
+
+/// Figures 3 and 4: for each chosen mode (indices into `analysis`), the panels F_i (total),
+/// T_i (contact) and E_i (applied) side by side over the scene.
+[[nodiscard]] Figure forces_figure(const std::string& title, const Scene& scene,
+                                   const std::vector<ModeForces>& analysis, const std::vector<std::size_t>& modes,
+                                   std::optional<Box> view = std::nullopt);
+
+/// The multi-contact friction cone of the scene (Figure 2 from a scene): one panel per
+/// contact's friction cone and their sum.
+[[nodiscard]] Figure friction_figure(const std::string& title, const Scene& scene, std::optional<Box> view = std::nullopt);
+
+}  // namespace momentlab::render

@@ -1,0 +1,377 @@
+#include "momentlab/render/figure.hpp"
+
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace momentlab::render {
+namespace {
+
+// Page geometry, in points.
+constexpr double kMargin = 16.0;
+constexpr double kTitleHeight = 28.0;
+constexpr double kPanelTitleHeight = 20.0;
+constexpr double kGap = 22.0;
+constexpr double kPanelSize = 320.0;  // the longer side of a panel's plot area
+constexpr double kMinPanelSide = 60.0;
+constexpr double kLegendLine = 17.0;
+constexpr double kLegendText = 10.5;
+constexpr double kTitleText = 15.0;
+constexpr double kPanelTitleText = 12.0;
+constexpr char kFont[] = "DejaVu Sans";
+
+double text_width_estimate(const std::string& s, double size) {
+    std::size_t chars = 0;
+    for (unsigned char c : s) chars += (c & 0xC0) != 0x80;  // UTF-8 code points
+    return 0.6 * size * static_cast<double>(chars);
+}
+
+struct FrameSize {
+    double width;
+    double height;
+};
+
+FrameSize frame_size(const Box& view) {
+    const double w = view.max.x() - view.min.x(), h = view.max.y() - view.min.y();
+    if (!(w > 0.0) || !(h > 0.0) || !std::isfinite(w) || !std::isfinite(h)) {
+        throw std::invalid_argument("render: a panel's view must have positive finite width and height");
+    }
+    if (w >= h) return {kPanelSize, std::max(kMinPanelSide, kPanelSize * h / w)};
+    return {std::max(kMinPanelSide, kPanelSize * w / h), kPanelSize};
+}
+
+std::string xml_escaped(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+// A text as painted: its baseline origin on the page, for the SVG text layer.
+struct PaintedText {
+    double x;
+    double y;
+    double size;
+    bool bold;
+    std::string text;
+};
+
+class Painter {
+public:
+    Painter(cairo_t* cr, const Layout& layout) : cr_(cr), layout_(layout) {}
+
+    void figure(const Figure& f) {
+        cairo_set_source_rgb(cr_, 1.0, 1.0, 1.0);
+        cairo_paint(cr_);
+        cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+        cairo_set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
+        if (!f.title.empty()) {
+            text_at(Vec2(layout_.width / 2.0, kMargin + kTitleHeight / 2.0), f.title, kTitleText, true,
+                    palette::kInk);
+        }
+        for (std::size_t i = 0; i < f.panels.size(); ++i) panel(i, f.panels[i]);
+        legend(f);
+    }
+
+    [[nodiscard]] const std::vector<PaintedText>& texts() const { return texts_; }
+
+private:
+    void set_colour(const Colour& c, double alpha) { cairo_set_source_rgba(cr_, c.r, c.g, c.b, alpha); }
+
+    void panel(std::size_t index, const Panel& p) {
+        const Layout::Frame& fr = layout_.panels[index];
+        if (!p.title.empty()) {
+            text_at(Vec2(fr.x + fr.width / 2.0, fr.y - kPanelTitleHeight / 2.0), p.title, kPanelTitleText, true,
+                    palette::kInk);
+        }
+        cairo_save(cr_);
+        cairo_rectangle(cr_, fr.x, fr.y, fr.width, fr.height);
+        cairo_clip(cr_);
+        for (const Shape& s : p.shapes) shape(index, s);
+        for (const Text& t : p.texts) {
+            const Vec2 at = layout_.to_page(index, t.at);
+            text_at(Vec2(at.x() + t.offset.x(), at.y() - t.offset.y()), t.text, t.size, t.bold, t.colour);
+        }
+        cairo_restore(cr_);
+        cairo_rectangle(cr_, fr.x, fr.y, fr.width, fr.height);
+        set_colour(palette::kGuide, 1.0);
+        cairo_set_line_width(cr_, 0.8);
+        cairo_stroke(cr_);
+    }
+
+    void shape(std::size_t panel_index, const Shape& s) {
+        if (s.points.empty()) return;
+        std::vector<Vec2> page;
+        page.reserve(s.points.size());
+        for (const Vec2& w : s.points) page.push_back(layout_.to_page(panel_index, w));
+        if (page.size() == 1) {
+            cairo_new_path(cr_);
+            cairo_arc(cr_, page[0].x(), page[0].y(), std::max(s.dot_radius, 0.5), 0.0, 2.0 * M_PI);
+            if (s.fill) {
+                set_colour(s.fill->colour, s.fill->alpha);
+                cairo_fill_preserve(cr_);
+            }
+            if (s.stroke) stroke(*s.stroke);
+            cairo_new_path(cr_);
+            return;
+        }
+        cairo_new_path(cr_);
+        cairo_move_to(cr_, page[0].x(), page[0].y());
+        for (std::size_t i = 1; i < page.size(); ++i) cairo_line_to(cr_, page[i].x(), page[i].y());
+        if (s.closed) cairo_close_path(cr_);
+        if (s.fill && s.closed) {
+            set_colour(s.fill->colour, s.fill->alpha);
+            cairo_fill_preserve(cr_);
+        }
+        if (s.stroke) stroke(*s.stroke);
+        cairo_new_path(cr_);
+        if (s.stroke && s.arrow_end) arrowhead(page[page.size() - 2], page.back(), *s.stroke);
+        if (s.stroke && s.arrow_start) arrowhead(page[1], page[0], *s.stroke);
+    }
+
+    void stroke(const Stroke& st) {
+        set_colour(st.colour, st.alpha);
+        cairo_set_line_width(cr_, st.width);
+        const double dashes[] = {5.0, 3.5};
+        cairo_set_dash(cr_, dashes, st.dashed ? 2 : 0, 0.0);
+        cairo_stroke_preserve(cr_);
+        cairo_set_dash(cr_, nullptr, 0, 0.0);
+    }
+
+    // A filled triangle with its tip at `tip`, pointing away from `from` (page coordinates).
+    void arrowhead(const Vec2& from, const Vec2& tip, const Stroke& st) {
+        const Vec2 d = tip - from;
+        const double length = d.norm();
+        if (!(length > 0.0)) return;
+        const Vec2 u = d / length, n(-u.y(), u.x());
+        const double l = 7.0 + 1.5 * st.width, w = 2.8 + 0.8 * st.width;
+        const Vec2 a = tip - l * u + w * n, b = tip - l * u - w * n;
+        cairo_new_path(cr_);
+        cairo_move_to(cr_, tip.x(), tip.y());
+        cairo_line_to(cr_, a.x(), a.y());
+        cairo_line_to(cr_, b.x(), b.y());
+        cairo_close_path(cr_);
+        set_colour(st.colour, st.alpha);
+        cairo_fill(cr_);
+    }
+
+    // Text centred at a page point.
+    void text_at(const Vec2& centre, const std::string& text, double size, bool bold, const Colour& colour) {
+        if (text.empty()) return;
+        cairo_select_font_face(cr_, kFont, CAIRO_FONT_SLANT_NORMAL,
+                               bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+        cairo_set_font_size(cr_, size);
+        cairo_text_extents_t e;
+        cairo_text_extents(cr_, text.c_str(), &e);
+        const double x = centre.x() - (e.x_bearing + e.width / 2.0);
+        const double y = centre.y() - (e.y_bearing + e.height / 2.0);
+        text_from(x, y, text, size, bold, colour);
+    }
+
+    // Text with its baseline starting at (x, y).
+    void text_from(double x, double y, const std::string& text, double size, bool bold, const Colour& colour) {
+        cairo_select_font_face(cr_, kFont, CAIRO_FONT_SLANT_NORMAL,
+                               bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+        cairo_set_font_size(cr_, size);
+        set_colour(colour, 1.0);
+        cairo_move_to(cr_, x, y);
+        cairo_show_text(cr_, text.c_str());
+        cairo_new_path(cr_);
+        texts_.push_back({x, y, size, bold, text});
+    }
+
+    void legend(const Figure& f) {
+        if (f.legend.empty()) return;
+        double y = layout_.height - kMargin - kLegendLine * static_cast<double>(f.legend.size());
+        for (const LegendEntry& e : f.legend) {
+            const double x = kMargin, mid = y + kLegendLine / 2.0;
+            if (e.fill) {
+                cairo_rectangle(cr_, x, mid - 6.0, 22.0, 12.0);
+                set_colour(e.fill->colour, e.fill->alpha);
+                cairo_fill_preserve(cr_);
+                if (e.stroke) {
+                    stroke(*e.stroke);
+                }
+                cairo_new_path(cr_);
+            } else if (e.stroke) {
+                cairo_move_to(cr_, x, mid);
+                cairo_line_to(cr_, x + 22.0, mid);
+                stroke(*e.stroke);
+                cairo_new_path(cr_);
+            }
+            text_from(x + 30.0, mid + kLegendText * 0.36, e.text, kLegendText, false, palette::kInk);
+            y += kLegendLine;
+        }
+    }
+
+    cairo_t* cr_;
+    const Layout& layout_;
+    std::vector<PaintedText> texts_;
+};
+
+cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
+    static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+    return CAIRO_STATUS_SUCCESS;
+}
+
+using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
+using ContextPtr = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
+
+void check(cairo_status_t status) {
+    if (status != CAIRO_STATUS_SUCCESS) {
+        throw std::runtime_error(std::string("render: cairo: ") + cairo_status_to_string(status));
+    }
+}
+
+// The SVG with a title and the figure's texts as transparent SVG text over the glyphs.
+std::string with_text_layer(std::string svg, const Figure& f, const std::vector<PaintedText>& texts) {
+    std::string layer = "<g id=\"momentlab-text\" fill=\"#000\" fill-opacity=\"0\" stroke=\"none\">\n";
+    for (const PaintedText& t : texts) {
+        char pos[96];
+        std::snprintf(pos, sizeof pos, "x=\"%.3f\" y=\"%.3f\" font-size=\"%.2f\"", t.x, t.y, t.size);
+        layer += std::string("<text ") + pos + " font-family=\"" + kFont + "\"" +
+                 (t.bold ? " font-weight=\"bold\"" : "") + ">" + xml_escaped(t.text) + "</text>\n";
+    }
+    layer += "</g>\n";
+    const std::size_t end = svg.rfind("</svg>");
+    if (end == std::string::npos) throw std::runtime_error("render: cairo wrote no SVG end tag");
+    svg.insert(end, layer);
+    const std::size_t open = svg.find("<svg");
+    const std::size_t open_end = open == std::string::npos ? open : svg.find('>', open);
+    if (open_end == std::string::npos) throw std::runtime_error("render: cairo wrote no SVG start tag");
+    svg.insert(open_end + 1, "\n<title>" + xml_escaped(f.title) + "</title>");
+    return svg;
+}
+
+}  // namespace
+
+Vec2 Layout::to_page(std::size_t panel, const Vec2& world) const {
+    const Frame& f = panels.at(panel);
+    return Vec2(f.x + (world.x() - f.view.min.x()) * f.scale, f.y + (f.view.max.y() - world.y()) * f.scale);
+}
+
+Layout layout(const Figure& figure) {
+    Layout out;
+    const std::size_t n = figure.panels.size();
+    const std::size_t columns = std::max<std::size_t>(1, std::min(figure.columns, std::max<std::size_t>(n, 1)));
+    const std::size_t rows = (n + columns - 1) / columns;
+    double cell_w = 0.0, cell_h = 0.0;
+    std::vector<FrameSize> sizes;
+    for (const Panel& p : figure.panels) {
+        sizes.push_back(frame_size(p.view));
+        cell_w = std::max(cell_w, sizes.back().width);
+        cell_h = std::max(cell_h, sizes.back().height);
+    }
+    const double top = kMargin + (figure.title.empty() ? 0.0 : kTitleHeight);
+    double legend_w = 0.0;
+    for (const LegendEntry& e : figure.legend) legend_w = std::max(legend_w, 30.0 + text_width_estimate(e.text, kLegendText));
+    const double grid_w = static_cast<double>(columns) * cell_w + static_cast<double>(columns - 1) * kGap;
+    const double title_w = text_width_estimate(figure.title, kTitleText);
+    out.width = 2.0 * kMargin + std::max({grid_w, legend_w, title_w, 120.0});
+    const double row_h = kPanelTitleHeight + cell_h;
+    const double grid_h = static_cast<double>(rows) * row_h + static_cast<double>(rows > 0 ? rows - 1 : 0) * kGap;
+    const double legend_h = figure.legend.empty() ? 0.0 : kGap / 2.0 + kLegendLine * static_cast<double>(figure.legend.size());
+    out.height = top + grid_h + legend_h + kMargin;
+    const double grid_x = (out.width - grid_w) / 2.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t r = i / columns, c = i % columns;
+        Layout::Frame f;
+        f.view = figure.panels[i].view;
+        f.width = sizes[i].width;
+        f.height = sizes[i].height;
+        f.scale = std::min(f.width / (f.view.max.x() - f.view.min.x()), f.height / (f.view.max.y() - f.view.min.y()));
+        f.x = grid_x + static_cast<double>(c) * (cell_w + kGap) + (cell_w - f.width) / 2.0;
+        f.y = top + static_cast<double>(r) * (row_h + kGap) + kPanelTitleHeight + (cell_h - f.height) / 2.0;
+        out.panels.push_back(f);
+    }
+    return out;
+}
+
+Format format_for(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".svg") return Format::Svg;
+    if (ext == ".pdf") return Format::Pdf;
+    if (ext == ".png") return Format::Png;
+    throw std::invalid_argument("cannot tell the format of \"" + path + "\": expected a name ending in .svg, .pdf or .png");
+}
+
+std::string render(const Figure& figure, Format format) {
+    const Layout page = layout(figure);
+    std::string bytes;
+    SurfacePtr surface(nullptr, cairo_surface_destroy);
+    switch (format) {
+        case Format::Svg:
+            surface.reset(cairo_svg_surface_create_for_stream(append_to_string, &bytes, page.width, page.height));
+            break;
+        case Format::Pdf:
+            surface.reset(cairo_pdf_surface_create_for_stream(append_to_string, &bytes, page.width, page.height));
+            cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, figure.title.c_str());
+            cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "momentlab");
+            break;
+        case Format::Png:
+            surface.reset(cairo_image_surface_create(CAIRO_FORMAT_ARGB32,
+                                                     static_cast<int>(std::ceil(page.width * kPngScale)),
+                                                     static_cast<int>(std::ceil(page.height * kPngScale))));
+            break;
+    }
+    check(cairo_surface_status(surface.get()));
+    std::vector<PaintedText> texts;
+    {
+        ContextPtr cr(cairo_create(surface.get()), cairo_destroy);
+        if (format == Format::Png) cairo_scale(cr.get(), kPngScale, kPngScale);
+        Painter painter(cr.get(), page);
+        painter.figure(figure);
+        check(cairo_status(cr.get()));
+        texts = painter.texts();
+    }
+    if (format == Format::Png) check(cairo_surface_write_to_png_stream(surface.get(), append_to_string, &bytes));
+    cairo_surface_finish(surface.get());
+    check(cairo_surface_status(surface.get()));
+    if (format == Format::Svg) return with_text_layer(std::move(bytes), figure, texts);
+    return bytes;
+}
+
+void write(const Figure& figure, const std::string& path) {
+    const std::string bytes = render(figure, format_for(path));
+    const std::filesystem::path target(path);
+    std::string temp_name = ".";  // (built in steps: GCC 12 misreports "." + string as -Wrestrict)
+    temp_name += target.filename().string();
+    temp_name += ".tmp" + std::to_string(::getpid());
+    const std::filesystem::path temp = target.parent_path() / temp_name;
+    {
+        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+        if (!out) throw std::runtime_error("cannot write \"" + path + "\"");
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        out.close();
+        if (!out) {
+            std::error_code ec;
+            std::filesystem::remove(temp, ec);
+            throw std::runtime_error("cannot write \"" + path + "\"");
+        }
+    }
+    std::error_code ec;
+    std::filesystem::rename(temp, target, ec);
+    if (ec) {
+        std::filesystem::remove(temp, ec);
+        throw std::runtime_error("cannot write \"" + path + "\"");
+    }
+}
+
+}  // namespace momentlab::render

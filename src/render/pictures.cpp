@@ -1,0 +1,540 @@
+#include "momentlab/render/pictures.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+#include "momentlab/geometry/force_sets.hpp"
+#include "momentlab/mechanics/modes.hpp"
+
+namespace momentlab::render {
+namespace {
+
+constexpr char kMinusSign[] = "\u2212";
+constexpr char kPlusMinus[] = "\u00B1";
+constexpr char kCounterClockwise[] = "\u21BA";
+constexpr char kClockwise[] = "\u21BB";
+
+// 0 for a point, 1 for a segment / ray / line, 2 for a region with interior, -1 when empty.
+int dimension(const Region& r) {
+    const std::string k = r.kind();
+    if (k == "empty") return -1;
+    if (k == "point") return 0;
+    if (k == "segment" || k == "ray" || k == "line") return 1;
+    return 2;
+}
+
+std::string fmt(double x) {
+    std::ostringstream s;
+    s.precision(4);
+    s << (x == 0.0 ? 0.0 : x);
+    return s.str();
+}
+
+Colour darker(const Colour& c, double f) { return {c.r * f, c.g * f, c.b * f}; }
+
+Vec2 centroid(const std::vector<Vec2>& poly) {
+    double area = 0.0;
+    Vec2 c = Vec2::Zero();
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Vec2& a = poly[i];
+        const Vec2& b = poly[(i + 1) % poly.size()];
+        const double w = cross2(a, b);
+        area += w;
+        c += w * (a + b);
+    }
+    if (std::abs(area) > 0.0 && std::isfinite(area)) return c / (3.0 * area);
+    Vec2 mean = Vec2::Zero();
+    for (const Vec2& p : poly) mean += p;
+    return mean / static_cast<double>(poly.size());
+}
+
+double view_width(const Box& v) { return v.max.x() - v.min.x(); }
+double view_height(const Box& v) { return v.max.y() - v.min.y(); }
+Vec2 view_centre(const Box& v) { return (v.min + v.max) / 2.0; }
+
+// The part of the line p + s u inside the box (Liang-Barsky), if any.
+std::optional<std::array<Vec2, 2>> clip_line(const Vec2& p, const Vec2& u, const Box& box) {
+    double lo = -INFINITY, hi = INFINITY;
+    for (int k = 0; k < 2; ++k) {
+        if (u[k] == 0.0) {
+            if (p[k] < box.min[k] || p[k] > box.max[k]) return std::nullopt;
+            continue;
+        }
+        double a = (box.min[k] - p[k]) / u[k], b = (box.max[k] - p[k]) / u[k];
+        if (a > b) std::swap(a, b);
+        lo = std::max(lo, a);
+        hi = std::min(hi, b);
+    }
+    if (!(lo < hi)) return std::nullopt;
+    return std::array<Vec2, 2>{p + lo * u, p + hi * u};
+}
+
+// The outward normal of the box side an edge lies on, or zero if it lies on none.
+Vec2 side_of(const Vec2& a, const Vec2& b, const Box& box) {
+    if (a.x() == box.min.x() && b.x() == box.min.x()) return Vec2(-1.0, 0.0);
+    if (a.x() == box.max.x() && b.x() == box.max.x()) return Vec2(1.0, 0.0);
+    if (a.y() == box.min.y() && b.y() == box.min.y()) return Vec2(0.0, -1.0);
+    if (a.y() == box.max.y() && b.y() == box.max.y()) return Vec2(0.0, 1.0);
+    return Vec2::Zero();
+}
+
+Shape polyline(std::vector<Vec2> points, const Stroke& stroke) {
+    Shape s;
+    s.points = std::move(points);
+    s.stroke = stroke;
+    return s;
+}
+
+Shape dot(const Vec2& p, const Colour& colour, double radius) {
+    Shape s;
+    s.points = {p};
+    s.fill = Fill{colour, 1.0};
+    s.dot_radius = radius;
+    return s;
+}
+
+// A region of labels: filled (interior), stroked (segment, ray, line) or a dot (point); edges cut
+// by the view are left open, with an arrow saying the region goes on.
+void draw_region(Panel& panel, const Region& region, const Colour& fill, const Colour& edge, double fill_alpha = 1.0) {
+    const std::vector<Vec2> poly = region.clipped(panel.view);
+    if (poly.empty()) return;
+    const int dim = dimension(region);
+    if (dim == 0 || poly.size() == 1) {
+        panel.shapes.push_back(dot(poly[0], edge, 4.0));
+        return;
+    }
+    if (dim == 1 || poly.size() == 2) {
+        panel.shapes.push_back(polyline({poly.front(), poly.back()}, Stroke{edge, 3.0}));
+        return;
+    }
+    Shape area;
+    area.points = poly;
+    area.closed = true;
+    area.fill = Fill{fill, fill_alpha};
+    panel.shapes.push_back(area);
+    const double w = std::max(view_width(panel.view), view_height(panel.view));
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Vec2& a = poly[i];
+        const Vec2& b = poly[(i + 1) % poly.size()];
+        const Vec2 out = side_of(a, b, panel.view);
+        if (out == Vec2::Zero()) {
+            panel.shapes.push_back(polyline({a, b}, Stroke{edge, 1.3}));
+            continue;
+        }
+        Shape cue = polyline({(a + b) / 2.0 - 0.085 * w * out, (a + b) / 2.0 - 0.02 * w * out}, Stroke{edge, 1.4});
+        cue.arrow_end = true;
+        panel.shapes.push_back(cue);
+    }
+}
+
+// Where a region's mark goes, with a page offset for regions without interior.
+Text mark_for(const Region& region, const Box& view, const std::string& text, const Colour& colour,
+             double along = 0.8) {
+    const std::vector<Vec2> poly = region.clipped(view);
+    Text t;
+    t.text = text;
+    t.colour = colour;
+    t.bold = true;
+    t.size = 17.0;
+    if (poly.size() >= 3) {
+        t.at = centroid(poly);
+    } else if (poly.size() == 2) {
+        t.at = poly[0] + along * (poly[1] - poly[0]);
+        const Vec2 d = (poly[1] - poly[0]).normalized();
+        t.offset = 11.0 * Vec2(-d.y(), d.x());
+    } else {
+        t.at = poly[0];
+        t.offset = Vec2(0.0, -16.0);
+    }
+    return t;
+}
+
+// A point of the line of action of the force w = (f, tau) nearest to c.
+Vec2 nearest_on_line(const Vec3& w, const Vec2& c) {
+    const Vec2 f(w.x(), w.y());
+    const Vec2 p0 = Vec2(f.y(), -f.x()) * (w.z() / f.squaredNorm());
+    const Vec2 u = f.normalized();
+    return p0 + (c - p0).dot(u) * u;
+}
+
+void draw_forces(Panel& panel, const ForcePanel& set, const Region& both) {
+    const Box& view = panel.view;
+    const double length = 0.22 * std::max(view_width(view), view_height(view));
+    std::vector<Vec2> anchors = set.anchors;
+    if (dimension(both) == 0) anchors.push_back(both.vertices.front());
+    std::vector<std::string> moments;
+    auto draw = [&](const ExactVector& g, bool both_senses) {
+        const Vec3& w = g.value();
+        if (w.x() == 0.0 && w.y() == 0.0) {
+            moments.push_back(both_senses ? std::string(kCounterClockwise) + kClockwise
+                                          : (w.z() > 0 ? kCounterClockwise : kClockwise));
+            return;
+        }
+        const Vec2 u = Vec2(w.x(), w.y()).normalized();
+        std::optional<Vec2> start;
+        for (const Vec2& a : anchors) {
+            if (g.dot_sign(moment_functional(a)) == Sign::Zero) {  // a is on the line of action
+                start = a;
+                break;
+            }
+        }
+        if (!start) {
+            start = nearest_on_line(w, view_centre(view));
+            // (A +- line is this line of action already.)
+            const auto seg = dimension(both) == 1 ? std::nullopt : clip_line(*start, u, view);
+            if (seg) {
+                panel.shapes.push_back(polyline({(*seg)[0], (*seg)[1]}, Stroke{palette::kInk, 0.8, true, 0.55}));
+            }
+        }
+        Shape arrow = polyline({both_senses ? Vec2(*start - 0.5 * length * u) : *start,
+                                both_senses ? Vec2(*start + 0.5 * length * u) : Vec2(*start + length * u)},
+                               Stroke{palette::kInk, 1.6});
+        arrow.arrow_end = true;
+        arrow.arrow_start = both_senses;
+        panel.shapes.push_back(arrow);
+    };
+    for (const ExactVector& r : set.forces.rays()) draw(r, false);
+    for (const ExactVector& l : set.forces.lineality()) draw(l, true);
+    if (!moments.empty()) {
+        std::string text = "pure moments:";
+        for (const std::string& m : moments) text += " " + m;
+        Text t;
+        t.at = Vec2(view.min.x(), view.max.y());
+        t.offset = Vec2(8.0 + 3.2 * static_cast<double>(text.size()), -12.0);
+        t.text = text;
+        t.size = 10.0;
+        panel.texts.push_back(t);
+    }
+}
+
+void add_points(std::vector<Vec2>& points, const Region& r) {
+    for (const Vec2& v : r.vertices) {
+        if (v.allFinite()) points.push_back(v);
+    }
+}
+
+std::vector<Vec2> points_of(const ForcePanel& set) {
+    const Labels labels(set.forces);
+    std::vector<Vec2> points = set.anchors;
+    add_points(points, labels.plus());
+    add_points(points, labels.minus());
+    const Region both = both_region(set.forces);
+    add_points(points, both);
+    if (dimension(both) == 1) points.push_back(both.vertices.front());
+    return points;
+}
+
+// Pastel colours for modes (12, repeated), chosen to stay apart from each other.
+const std::array<Colour, 12> kModeColours = {{{0.651, 0.808, 0.890}, {0.698, 0.875, 0.541}, {0.984, 0.604, 0.600},
+                                              {0.992, 0.749, 0.435}, {0.792, 0.698, 0.839}, {1.000, 1.000, 0.600},
+                                              {0.553, 0.827, 0.780}, {0.988, 0.804, 0.898}, {0.851, 0.851, 0.851},
+                                              {0.800, 0.922, 0.773}, {0.737, 0.502, 0.741}, {1.000, 0.929, 0.435}}};
+
+std::vector<LegendEntry> scene_legend() {
+    return {{Fill{palette::kBody, 0.15}, Stroke{palette::kBody, 1.5}, "body (dot: centre of mass)"},
+            {Fill{palette::kObstacle, 0.45}, Stroke{palette::kObstacle, 1.0}, "fixed polygons"},
+            {Fill{palette::kFriction, 0.25}, Stroke{palette::kFriction, 1.0},
+             "friction cone at each contact (arrow: the normal, into the body)"}};
+}
+
+}  // namespace
+
+Region both_region(const Cone& forces) {
+    std::vector<Vec3> span;
+    for (const ExactVector& r : forces.rays()) span.push_back(r.value());
+    for (const ExactVector& l : forces.lineality()) span.push_back(l.value());
+    return Labels(Cone::from_generators(std::span<const Vec3>(), span)).plus();
+}
+
+Box fit_view(const std::vector<Vec2>& points, double pad) {
+    if (points.empty()) return Box{};
+    Vec2 lo = points.front(), hi = points.front();
+    for (const Vec2& p : points) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    double s = (hi - lo).maxCoeff();
+    if (!(s > 0.0)) s = std::max(1.0, lo.cwiseAbs().maxCoeff());
+    const Vec2 c = (lo + hi) / 2.0;
+    const Vec2 half = (hi - lo).cwiseMax(Vec2(s / 2.0, s / 2.0)) / 2.0 + Vec2(pad * s, pad * s);
+    return Box{c - half, c + half};
+}
+
+std::vector<LegendEntry> labels_legend() {
+    return {{Fill{palette::kPlus, 1.0}, Stroke{palette::kPlusEdge, 1.3},
+             "+ : every force has moment \u2265 0 about the point (passes it on the right)"},
+            {Fill{palette::kMinus, 1.0}, Stroke{palette::kMinusEdge, 1.3},
+             "\u2212 : every force has moment \u2264 0 about the point (passes it on the left)"},
+            {std::nullopt, Stroke{palette::kBoth, 3.0}, "\u00B1 : every force has moment 0 (+ and \u2212 at once)"},
+            {Fill{palette::kPaper, 1.0}, Stroke{palette::kGuide, 0.8}, "unlabelled: forces turn both ways about it"},
+            {std::nullopt, Stroke{palette::kInk, 1.6}, "forces of the set (dashed: the line of action)"},
+            {std::nullopt, Stroke{palette::kPlusEdge, 1.4},
+             "arrow at the edge of the view: the region goes on beyond it"}};
+}
+
+Panel labels_panel(const ForcePanel& set, const Box& view) {
+    Panel panel;
+    panel.title = set.title;
+    panel.view = view;
+    const Labels labels(set.forces);
+    const Region both = both_region(set.forces);
+    const int both_dim = dimension(both);
+    if (both_dim == 2) {  // F = {0}: every point is + and -
+        draw_region(panel, both, palette::kBoth, palette::kBoth, 0.25);
+    } else {
+        draw_region(panel, labels.plus(), palette::kPlus, palette::kPlusEdge);
+        draw_region(panel, labels.minus(), palette::kMinus, palette::kMinusEdge);
+        if (both_dim >= 0) draw_region(panel, both, palette::kBoth, palette::kBoth);
+    }
+    draw_forces(panel, set, both);
+    // Marks: a region that is just the +- set gets the +- mark only.
+    const std::array<std::pair<const Region*, std::pair<std::string, Colour>>, 2> sheets = {
+        {{&labels.plus(), {"+", palette::kPlusEdge}}, {&labels.minus(), {kMinusSign, palette::kMinusEdge}}}};
+    for (const auto& [region, mark] : sheets) {
+        const int dim = dimension(*region);
+        if (dim < 0 || (dim == both_dim) || region->clipped(view).empty()) continue;
+        panel.texts.push_back(mark_for(*region, view, mark.first, mark.second));
+    }
+    if (both_dim >= 0 && !both.clipped(view).empty()) {
+        Text t = mark_for(both, view, kPlusMinus, palette::kBoth);
+        if (both_dim == 2) t.offset = Vec2(0.0, 0.0);
+        panel.texts.push_back(t);
+    }
+    return panel;
+}
+
+Figure labels_figure(const std::string& title, const std::vector<ForcePanel>& parts, bool intersect,
+                     const Cone& combined, std::optional<Box> view) {
+    std::vector<ForcePanel> panels = parts;
+    if (parts.size() > 1) {
+        std::vector<Vec2> anchors;
+        for (const ForcePanel& p : parts) anchors.insert(anchors.end(), p.anchors.begin(), p.anchors.end());
+        panels.push_back({intersect ? "intersection (hull of the labels)" : "sum: + \u2229 +, \u2212 \u2229 \u2212",
+                          combined, anchors});
+    }
+    if (!view) {
+        std::vector<Vec2> points;
+        for (const ForcePanel& p : panels) {
+            const std::vector<Vec2> more = points_of(p);
+            points.insert(points.end(), more.begin(), more.end());
+        }
+        view = fit_view(points, 0.6);
+    }
+    Figure figure;
+    figure.title = title;
+    figure.columns = 3;
+    for (const ForcePanel& p : panels) figure.panels.push_back(labels_panel(p, *view));
+    figure.legend = labels_legend();
+    return figure;
+}
+
+void add_scene(Panel& panel, const Scene& scene, SceneStyle style) {
+    const bool faint = style != SceneStyle::Full;
+    const Box v = scene_view(scene);
+    const double length = 0.16 * std::max(view_width(v), view_height(v));
+    for (const Polygon& o : scene.obstacles) {
+        Shape s;
+        s.points = o;
+        s.closed = true;
+        s.fill = Fill{palette::kObstacle, faint ? 0.2 : 0.45};
+        s.stroke = Stroke{palette::kObstacle, 1.0};
+        panel.shapes.push_back(s);
+    }
+    if (scene.body) {
+        if (!scene.body->polygon.empty()) {
+            Shape s;
+            s.points = scene.body->polygon;
+            s.closed = true;
+            s.fill = Fill{palette::kBody, faint ? 0.05 : 0.15};
+            s.stroke = Stroke{palette::kBody, faint ? 1.0 : 1.8, false, faint ? 0.7 : 1.0};
+            panel.shapes.push_back(s);
+        }
+        panel.shapes.push_back(dot(scene.body->com, palette::kInk, faint ? 2.0 : 3.0));
+    }
+    for (const Contact& c : scene.contacts) {
+        const Vec2 n = c.normal, t = c.tangent();
+        if (style == SceneStyle::Outline) {
+            panel.shapes.push_back(dot(c.point, palette::kFriction, 3.0));
+            continue;
+        }
+        if (c.mu > 0.0) {
+            Shape wedge;
+            wedge.points = {c.point, c.point + length * (n + c.mu * t).normalized(),
+                            c.point + length * (n - c.mu * t).normalized()};
+            wedge.closed = true;
+            wedge.fill = Fill{palette::kFriction, faint ? 0.12 : 0.25};
+            wedge.stroke = Stroke{palette::kFriction, 0.8, false, faint ? 0.6 : 1.0};
+            panel.shapes.push_back(wedge);
+        }
+        Shape normal = polyline({c.point, c.point + length * n}, Stroke{palette::kFriction, 1.2, false, faint ? 0.6 : 1.0});
+        normal.arrow_end = true;
+        panel.shapes.push_back(normal);
+        panel.shapes.push_back(dot(c.point, palette::kFriction, faint ? 2.0 : 2.8));
+        if (!faint && !c.name.empty()) {
+            Text name;
+            name.at = c.point;
+            name.offset = 14.0 * Vec2(-n.x(), n.y()) + Vec2(0.0, -2.0);
+            name.text = c.name;
+            name.size = 9.0;
+            name.colour = palette::kFriction;
+            panel.texts.push_back(name);
+        }
+    }
+}
+
+Box scene_view(const Scene& scene) {
+    std::vector<Vec2> points;
+    if (scene.body) {
+        points.insert(points.end(), scene.body->polygon.begin(), scene.body->polygon.end());
+        points.push_back(scene.body->com);
+    }
+    for (const Contact& c : scene.contacts) points.push_back(c.point);
+    if (points.empty()) {
+        for (const Polygon& o : scene.obstacles) points.insert(points.end(), o.begin(), o.end());
+    }
+    return fit_view(points, 0.6);
+}
+
+Figure modes_figure(const std::string& title, const Scene& scene, std::optional<Box> view) {
+    const ModeSet modes = enumerate_modes(scene.contacts);
+    Panel panel;
+    panel.title = "rotation centres of each mode";
+    panel.view = view ? *view : scene_view(scene);
+    for (const Contact& c : scene.contacts) {
+        for (const Vec2& d : {c.normal, c.tangent()}) {
+            if (const auto seg = clip_line(c.point, d, panel.view)) {
+                panel.shapes.push_back(polyline({(*seg)[0], (*seg)[1]}, Stroke{palette::kGuide, 0.8, true}));
+            }
+        }
+    }
+    Figure figure;
+    figure.title = title;
+    // Regions with interior first, then segments, then points, so nothing hides a smaller one.
+    std::vector<Text> marks;
+    std::vector<LegendEntry> still;
+    for (int pass = 2; pass >= 0; --pass) {
+        for (std::size_t k = 0; k < modes.modes.size(); ++k) {
+            const Mode& mode = modes.modes[k];
+            const Colour colour = kModeColours[k % kModeColours.size()];
+            const Labels centres = rotation_centres(mode);
+            for (const auto& [region, sense] : {std::pair{&centres.plus(), kCounterClockwise},
+                                                std::pair{&centres.minus(), kClockwise}}) {
+                if (dimension(*region) != pass || region->clipped(panel.view).empty()) continue;
+                draw_region(panel, *region, colour, darker(colour, pass == 2 ? 0.8 : 0.6));
+                Text t = mark_for(*region, panel.view, mode.letters + " " + sense, darker(colour, 0.45), 0.5);
+                t.size = 10.0;
+                // Two senses of rotation about one point: the marks go to either side of it.
+                if (pass == 0) t.offset = sense == kCounterClockwise ? Vec2(-20.0, -12.0) : Vec2(20.0, 12.0);
+                marks.push_back(t);
+            }
+        }
+    }
+    for (std::size_t k = 0; k < modes.modes.size(); ++k) {
+        const Mode& mode = modes.modes[k];
+        const Colour colour = kModeColours[k % kModeColours.size()];
+        const Labels centres = rotation_centres(mode);
+        const bool drawn = !centres.plus().clipped(panel.view).empty() || !centres.minus().clipped(panel.view).empty();
+        std::string text = mode.letters + ":";
+        if (mode.twists.is_zero()) {
+            text += " at rest (no contact moves)";
+        } else {
+            if (drawn) text += " rotation centres (" + std::string(kCounterClockwise) + " counter-clockwise, " + kClockwise + " clockwise)";
+            std::vector<std::string> translations;
+            for (const ExactVector& r : mode.twists.rays()) {
+                if (r.dot_sign(Vec3::UnitZ()) == Sign::Zero) {
+                    translations.push_back("(" + fmt(r.value().x()) + ", " + fmt(r.value().y()) + ")");
+                }
+            }
+            for (const ExactVector& l : mode.twists.lineality()) {
+                if (l.dot_sign(Vec3::UnitZ()) == Sign::Zero) {
+                    translations.push_back("\u00B1(" + fmt(l.value().x()) + ", " + fmt(l.value().y()) + ")");
+                }
+            }
+            if (!translations.empty()) {
+                text += drawn ? "; translations along" : " translation along";
+                for (const std::string& s : translations) text += " " + s;
+            }
+            if (!drawn && translations.empty()) text += " rotation centres outside the view";
+        }
+        if (drawn) {
+            figure.legend.push_back({Fill{colour, 1.0}, Stroke{darker(colour, 0.7), 0.8}, text});
+        } else {
+            figure.legend.push_back({std::nullopt, std::nullopt, text});
+        }
+    }
+    add_scene(panel, scene, SceneStyle::Outline);
+    panel.texts.insert(panel.texts.end(), marks.begin(), marks.end());
+    figure.panels.push_back(panel);
+    for (const LegendEntry& e : scene_legend()) figure.legend.push_back(e);
+    figure.legend.push_back({std::nullopt, Stroke{palette::kGuide, 0.8, true}, "contact normals and tangents"});
+    return figure;
+}
+
+Figure forces_figure(const std::string& title, const Scene& scene, const std::vector<ModeForces>& analysis,
+                     const std::vector<std::size_t>& modes, std::optional<Box> view) {
+    std::vector<Vec2> contact_points;
+    for (const Contact& c : scene.contacts) contact_points.push_back(c.point);
+    std::vector<ForcePanel> sets;
+    for (std::size_t k : modes) {
+        const ModeForces& m = analysis.at(k);
+        const std::string& letters = m.mode.letters;
+        std::vector<Vec2> com;
+        if (scene.body) com.push_back(scene.body->com);
+        sets.push_back({"F total (" + letters + ")", m.total, com});
+        sets.push_back({"T contact (" + letters + ")", m.contact, contact_points});
+        sets.push_back({"E applied (" + letters + ")", m.applied, {}});
+    }
+    if (!view) {
+        // The scene, and the sets' corners near it (far corners would shrink the scene away).
+        const Box sv = scene_view(scene);
+        const Vec2 c = view_centre(sv);
+        const double reach = 2.5 * std::max(view_width(sv), view_height(sv));
+        std::vector<Vec2> points = {sv.min, sv.max};
+        for (const ForcePanel& s : sets) {
+            for (const Vec2& p : points_of(s)) {
+                if ((p - c).cwiseAbs().maxCoeff() <= reach) points.push_back(p);
+            }
+        }
+        view = fit_view(points, 0.08);
+    }
+    Figure figure;
+    figure.title = title;
+    figure.columns = 3;
+    for (const ForcePanel& s : sets) {
+        Panel p = labels_panel(s, *view);
+        Panel scene_layer;
+        scene_layer.view = *view;
+        add_scene(scene_layer, scene, SceneStyle::Faint);
+        // The scene, faint, over the labels (the marks stay on top: they are texts).
+        p.shapes.insert(p.shapes.end(), scene_layer.shapes.begin(), scene_layer.shapes.end());
+        figure.panels.push_back(std::move(p));
+    }
+    figure.legend = labels_legend();
+    for (const LegendEntry& e : scene_legend()) figure.legend.push_back(e);
+    return figure;
+}
+
+Figure friction_figure(const std::string& title, const Scene& scene, std::optional<Box> view) {
+    std::vector<ForcePanel> parts;
+    std::vector<Cone> cones;
+    for (std::size_t i = 0; i < scene.contacts.size(); ++i) {
+        const Contact& c = scene.contacts[i];
+        cones.push_back(friction_cone(c.point, c.normal, c.mu));
+        const std::string name = c.name.empty() ? "contact " + std::to_string(i + 1) : c.name;
+        parts.push_back({name + ", \u03BC = " + fmt(c.mu), cones.back(), {c.point}});
+    }
+    if (!view) view = scene_view(scene);
+    Figure figure = labels_figure(title, parts, false, sum(cones), view);
+    for (Panel& p : figure.panels) {
+        Panel scene_layer;
+        scene_layer.view = p.view;
+        add_scene(scene_layer, scene, SceneStyle::Faint);
+        p.shapes.insert(p.shapes.end(), scene_layer.shapes.begin(), scene_layer.shapes.end());
+    }
+    for (const LegendEntry& e : scene_legend()) figure.legend.push_back(e);
+    return figure;
+}
+
+}  // namespace momentlab::render

@@ -1,0 +1,409 @@
+// The pictures: SVG parsed for what it must contain, PNG pixels sampled against the definition of
+// the labels (Mason 1991, section 2: + where every force has moment >= 0 about the point, - where
+// every force has moment <= 0), computed here from the forces by hand, not by the labels code.
+#include <cairo.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "momentlab/geometry/force_sets.hpp"
+#include "momentlab/io/scene_json.hpp"
+#include "momentlab/mechanics/dynamics.hpp"
+#include "momentlab/render/figure.hpp"
+#include "momentlab/render/pictures.hpp"
+
+namespace momentlab::render {
+namespace {
+
+// ---------------------------------------------------------------- the oracle: labels by definition
+
+// A force f acting at p; its moment about x is (p - x) x f.
+struct Force {
+    Vec2 p;
+    Vec2 f;
+    [[nodiscard]] double moment_about(const Vec2& x) const { return cross2(p - x, f); }
+    // Distance of x from the line of action.
+    [[nodiscard]] double distance(const Vec2& x) const { return std::abs(moment_about(x)) / f.norm(); }
+};
+
+enum class Expected { Plus, Minus, None };
+
+// The label of x for the positive combinations of `forces` (their extreme forces suffice).
+Expected label_by_definition(const std::vector<Force>& forces, const Vec2& x) {
+    bool all_pos = true, all_neg = true;
+    for (const Force& f : forces) {
+        const double m = f.moment_about(x);
+        all_pos = all_pos && m > 0;
+        all_neg = all_neg && m < 0;
+    }
+    return all_pos ? Expected::Plus : (all_neg ? Expected::Minus : Expected::None);
+}
+
+// Coulomb cone edges n +- mu t, t = (n.y, -n.x) (DESIGN, Conventions).
+std::vector<Force> cone_edges(const Vec2& p, const Vec2& n, double mu) {
+    const Vec2 t(n.y(), -n.x());
+    return {{p, n + mu * t}, {p, n - mu * t}};
+}
+
+// ---------------------------------------------------------------- PNG pixels
+
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint32_t> pixels;  // ARGB32, premultiplied (opaque here)
+
+    [[nodiscard]] std::array<int, 3> at(const Vec2& page_pt) const {
+        const int x = static_cast<int>(std::floor(page_pt.x() * kPngScale));
+        const int y = static_cast<int>(std::floor(page_pt.y() * kPngScale));
+        EXPECT_TRUE(x >= 0 && y >= 0 && x < width && y < height);
+        const std::uint32_t v = pixels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)];
+        return {static_cast<int>((v >> 16) & 0xFF), static_cast<int>((v >> 8) & 0xFF), static_cast<int>(v & 0xFF)};
+    }
+};
+
+struct Reader {
+    const std::string* bytes;
+    std::size_t offset = 0;
+};
+
+cairo_status_t read_bytes(void* closure, unsigned char* data, unsigned int length) {
+    auto* r = static_cast<Reader*>(closure);
+    if (r->offset + length > r->bytes->size()) return CAIRO_STATUS_READ_ERROR;
+    std::copy_n(r->bytes->data() + r->offset, length, data);
+    r->offset += length;
+    return CAIRO_STATUS_SUCCESS;
+}
+
+Image decode_png(const std::string& png) {
+    Reader reader{&png};
+    cairo_surface_t* s = cairo_image_surface_create_from_png_stream(read_bytes, &reader);
+    EXPECT_EQ(cairo_surface_status(s), CAIRO_STATUS_SUCCESS);
+    Image img;
+    img.width = cairo_image_surface_get_width(s);
+    img.height = cairo_image_surface_get_height(s);
+    const int stride = cairo_image_surface_get_stride(s);
+    const unsigned char* data = cairo_image_surface_get_data(s);
+    for (int y = 0; y < img.height; ++y) {
+        const auto* row = reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+        img.pixels.insert(img.pixels.end(), row, row + img.width);
+    }
+    cairo_surface_destroy(s);
+    return img;
+}
+
+std::array<int, 3> bytes_of(const Colour& c) {
+    return {static_cast<int>(std::lround(c.r * 255)), static_cast<int>(std::lround(c.g * 255)),
+            static_cast<int>(std::lround(c.b * 255))};
+}
+
+bool same(const std::array<int, 3>& a, const Colour& c) {
+    const auto b = bytes_of(c);
+    for (int k = 0; k < 3; ++k) {
+        if (std::abs(a[k] - b[k]) > 2) return false;
+    }
+    return true;
+}
+
+const Colour& colour_of(Expected e) {
+    return e == Expected::Plus ? palette::kPlus : (e == Expected::Minus ? palette::kMinus : palette::kPaper);
+}
+
+// What a grid of samples over one panel showed: points farther than 10 pt from every line of
+// action, how many show their label's fill, how many show another label's fill, and how many
+// of each label the grid met.
+struct FillCheck {
+    int sampled = 0;
+    int right = 0;
+    int wrong = 0;
+    std::array<int, 3> seen = {0, 0, 0};
+};
+
+std::vector<FillCheck> sample_fills(const Figure& figure, const std::vector<std::vector<Force>>& panel_forces) {
+    const Image img = decode_png(render(figure, Format::Png));
+    const Layout page = layout(figure);
+    const Colour* fills[] = {&palette::kPlus, &palette::kMinus, &palette::kPaper};
+    std::vector<FillCheck> out;
+    for (std::size_t k = 0; k < figure.panels.size(); ++k) {
+        const Box& v = figure.panels[k].view;
+        const double margin = 10.0 / page.panels[k].scale;  // 10 pt in world units
+        FillCheck c;
+        for (int i = 1; i < 30; ++i) {
+            for (int j = 1; j < 30; ++j) {
+                const Vec2 x(v.min.x() + (v.max.x() - v.min.x()) * i / 30.0, v.min.y() + (v.max.y() - v.min.y()) * j / 30.0);
+                bool near = false;
+                for (const Force& f : panel_forces.at(k)) near = near || f.distance(x) < margin;
+                if (near) continue;
+                const Expected e = label_by_definition(panel_forces[k], x);
+                const auto got = img.at(page.to_page(k, x));
+                ++c.sampled;
+                ++c.seen[static_cast<std::size_t>(e)];
+                if (same(got, colour_of(e))) ++c.right;
+                for (const Colour* other : fills) {
+                    if (other != &colour_of(e) && same(got, *other)) ++c.wrong;
+                }
+            }
+        }
+        out.push_back(c);
+    }
+    return out;
+}
+
+// No sample shows a wrong label's fill; nearly all show the right one (marks, arrows and the
+// cues at the view's edge cover a few); the grid meets +, - and unlabelled points.
+void check_fills(const Figure& figure, const std::vector<std::vector<Force>>& panel_forces) {
+    ASSERT_EQ(figure.panels.size(), panel_forces.size());
+    const std::vector<FillCheck> checks = sample_fills(figure, panel_forces);
+    for (std::size_t k = 0; k < checks.size(); ++k) {
+        const FillCheck& c = checks[k];
+        EXPECT_EQ(c.wrong, 0) << "panel " << k;
+        EXPECT_GT(c.sampled, 300) << "panel " << k;
+        EXPECT_GE(c.right, static_cast<int>(0.95 * c.sampled)) << "panel " << k;
+        for (int n : c.seen) EXPECT_GT(n, 10) << "panel " << k << ": the grid must meet +, - and unlabelled points";
+    }
+}
+
+ForcePanel panel_of(const std::string& title, Cone forces) { return {title, std::move(forces), {}}; }
+
+// ---------------------------------------------------------------- PNG: Figures 1 and 2
+
+TEST(Pictures, Figure1aFillsMatchTheDefinitionAndTheLineIsPlusMinus) {
+    const Cone f = force_ray(Vec2(0, 0), Vec2(1, 0));
+    const Box view{Vec2(-3, -3), Vec2(3, 3)};
+    const Figure fig = labels_figure("1a", {panel_of("F", f)}, false, f, view);
+    const Image img = decode_png(render(fig, Format::Png));
+    const Layout page = layout(fig);
+    // Left of the directed line is +, right is - (the paper's Figure 1a caption); on it, both.
+    EXPECT_TRUE(same(img.at(page.to_page(0, Vec2(-1.5, 1.0))), palette::kPlus));
+    EXPECT_TRUE(same(img.at(page.to_page(0, Vec2(1.5, -1.0))), palette::kMinus));
+    EXPECT_TRUE(same(img.at(page.to_page(0, Vec2(-0.9, 0.0))), palette::kBoth));
+    EXPECT_TRUE(same(img.at(page.to_page(0, Vec2(2.4, 2.4))), palette::kPlus));
+    EXPECT_TRUE(same(img.at(page.to_page(0, Vec2(-2.4, -2.4))), palette::kMinus));
+}
+
+TEST(Pictures, Figure1bIsOnePlusMinusPointAndNothingElse) {
+    const Cone f = forces_through_point(Vec2(1, 2));
+    const Box view{Vec2(-1, 0), Vec2(3, 4)};
+    const Figure fig = labels_figure("1b", {panel_of("F", f)}, false, f, view);
+    const Image img = decode_png(render(fig, Format::Png));
+    const Layout page = layout(fig);
+    // A point 2 pt below (1, 2): inside the 4 pt dot, clear of the arrows along x = 1 and y = 2.
+    EXPECT_TRUE(same(img.at(page.to_page(0, Vec2(1, 2)) + Vec2(1.5, 1.5)), palette::kBoth));
+    for (const Vec2& x : {Vec2(0, 0.5), Vec2(2.5, 0.5), Vec2(-0.5, 3.5), Vec2(2.5, 3.5), Vec2(0, 3)}) {
+        EXPECT_TRUE(same(img.at(page.to_page(0, x)), palette::kPaper)) << x.transpose();
+    }
+}
+
+TEST(Pictures, Figure1cFillsMatchTheDefinition) {
+    const Cone f = friction_cone(Vec2(0, 0), Vec2(0, 1), 0.5);
+    const Box view{Vec2(-2, -2), Vec2(2, 2)};
+    const Figure fig = labels_figure("1c", {panel_of("F", f)}, false, f, view);
+    check_fills(fig, {cone_edges(Vec2(0, 0), Vec2(0, 1), 0.5)});
+    // The apex is in both sets; 1.5 pt below it is inside the dot and clear of the arrows.
+    const Image img = decode_png(render(fig, Format::Png));
+    EXPECT_TRUE(same(img.at(layout(fig).to_page(0, Vec2(0, 0)) + Vec2(0.0, 1.5)), palette::kBoth));
+}
+
+TEST(Pictures, Figure2EachConeAndTheirSumMatchTheDefinition) {
+    const Vec2 p1(0, 0), n1(0, 1), p2(2, 0), n2(-1, 1);
+    const Cone c1 = friction_cone(p1, n1, 0.5), c2 = friction_cone(p2, n2, 0.5);
+    const Box view{Vec2(-2.5, -2), Vec2(4.5, 4)};
+    const Figure fig = labels_figure("2", {panel_of("F1", c1), panel_of("F2", c2)}, false, sum(c1, c2), view);
+    std::vector<Force> both = cone_edges(p1, n1, 0.5);
+    for (const Force& f : cone_edges(p2, n2, 0.5)) both.push_back(f);
+    check_fills(fig, {cone_edges(p1, n1, 0.5), cone_edges(p2, n2, 0.5), both});
+}
+
+TEST(Pictures, AWrongFillWouldBeCaught) {
+    // The fill check can fail: the labels of the cone drawn for the forces of its negation.
+    const Cone f = friction_cone(Vec2(0, 0), Vec2(0, 1), 0.5);
+    const Figure fig = labels_figure("1c", {panel_of("F", f.negated())}, false, f.negated(),
+                                     Box{Vec2(-2, -2), Vec2(2, 2)});
+    const std::vector<FillCheck> checks = sample_fills(fig, {cone_edges(Vec2(0, 0), Vec2(0, 1), 0.5)});
+    EXPECT_GT(checks.at(0).wrong, 100);
+}
+
+// ---------------------------------------------------------------- SVG: what it must contain
+
+struct Svg {
+    std::string text;
+
+    // Filled shapes without a stroke in exactly this colour (regions, dots, arrowheads).
+    [[nodiscard]] int fills(const Colour& c) const {
+        char want[96];
+        std::snprintf(want, sizeof want, "stroke:none;fill-rule:nonzero;fill:rgb(%g%%,%g%%,%g%%)",
+                      std::round(c.r * 1000) / 10, std::round(c.g * 1000) / 10, std::round(c.b * 1000) / 10);
+        int n = 0;
+        for (std::size_t at = text.find(want); at != std::string::npos; at = text.find(want, at + 1)) ++n;
+        return n;
+    }
+    // The texts of the searchable text layer.
+    [[nodiscard]] std::vector<std::string> texts() const {
+        std::vector<std::string> out;
+        const std::regex t("<text [^>]*>([^<]*)</text>");
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), t); it != std::sregex_iterator(); ++it) {
+            out.push_back((*it)[1]);
+        }
+        return out;
+    }
+    [[nodiscard]] int count_text(const std::string& s) const {
+        int n = 0;
+        for (const std::string& t : texts()) n += t == s;
+        return n;
+    }
+    [[nodiscard]] bool has_text_containing(const std::string& s) const {
+        for (const std::string& t : texts()) {
+            if (t.find(s) != std::string::npos) return true;
+        }
+        return false;
+    }
+    [[nodiscard]] int glyphs() const {
+        int n = 0;
+        for (std::size_t at = text.find("<use xlink:href=\"#glyph"); at != std::string::npos;
+             at = text.find("<use xlink:href=\"#glyph", at + 1)) {
+            ++n;
+        }
+        return n;
+    }
+};
+
+int non_space_characters(const std::vector<std::string>& texts) {
+    int n = 0;
+    for (const std::string& t : texts) {
+        for (unsigned char c : t) n += c != ' ' && (c & 0xC0) != 0x80;
+    }
+    return n;
+}
+
+const char* const kMinus = "\u2212";
+const char* const kPlusMinus = "\u00B1";
+
+TEST(Svg, Figure1cHasOnePlusOneMinusRegionAndOnePlusMinusPoint) {
+    const Cone f = friction_cone(Vec2(0, 0), Vec2(0, 1), 0.5);
+    const Svg svg{render(labels_figure("Figure 1c", {panel_of("F", f)}, false, f), Format::Svg)};
+    EXPECT_EQ(svg.fills(palette::kPlus), 1);
+    EXPECT_EQ(svg.fills(palette::kMinus), 1);
+    EXPECT_EQ(svg.fills(palette::kBoth), 1);  // the apex
+    EXPECT_EQ(svg.count_text("+"), 1);
+    EXPECT_EQ(svg.count_text(kMinus), 1);
+    EXPECT_EQ(svg.count_text(kPlusMinus), 1);
+    EXPECT_TRUE(svg.has_text_containing("Figure 1c"));
+    // The texts were drawn, not only listed: Cairo writes one glyph per visible character.
+    EXPECT_GE(svg.glyphs(), non_space_characters(svg.texts()));
+}
+
+TEST(Svg, Figure2HasThreePanelsEachWithPlusAndMinusAndTwoApexes) {
+    const Cone c1 = friction_cone(Vec2(0, 0), Vec2(0, 1), 0.5), c2 = friction_cone(Vec2(2, 0), Vec2(-1, 1), 0.5);
+    const Svg svg{render(labels_figure("Figure 2", {panel_of("F1", c1), panel_of("F2", c2)}, false, sum(c1, c2)),
+                         Format::Svg)};
+    EXPECT_EQ(svg.fills(palette::kPlus), 3);
+    EXPECT_EQ(svg.fills(palette::kMinus), 3);
+    EXPECT_EQ(svg.fills(palette::kBoth), 2);  // each cone's apex; the sum spans R^3, so none
+    EXPECT_EQ(svg.count_text("+"), 3);
+    EXPECT_EQ(svg.count_text(kMinus), 3);
+    EXPECT_EQ(svg.count_text(kPlusMinus), 2);
+}
+
+TEST(Svg, Figure1aLineOfForceIsPlusMinusAndTheHalfPlanesGoOn) {
+    const Cone f = force_ray(Vec2(0, 0), Vec2(1, 0));
+    const Svg svg{render(labels_figure("Figure 1a", {panel_of("F", f)}, false, f), Format::Svg)};
+    EXPECT_EQ(svg.fills(palette::kPlus), 1);
+    EXPECT_EQ(svg.fills(palette::kMinus), 1);
+    EXPECT_EQ(svg.count_text(kPlusMinus), 1);
+    // Each half-plane is cut by the view on three sides: three arrowheads in its edge colour.
+    EXPECT_EQ(svg.fills(palette::kPlusEdge), 3);
+    EXPECT_EQ(svg.fills(palette::kMinusEdge), 3);
+}
+
+Scene example(const std::string& name) {
+    std::ifstream in(std::string(MOMENTLAB_EXAMPLES) + "/" + name);
+    std::stringstream s;
+    s << in.rdbuf();
+    return read_scene_text(s.str());
+}
+
+TEST(Svg, ModesOfTheBlockAlongTheWallAreAllNamed) {
+    // Two contacts on one flat wall (Brost and Mason 1989): ff and ss; each contact fixed,
+    // sliding either way or separating while the other separates (fs, rs, ls, sf, sr, sl); both
+    // sliding together (rr, ll). Ten modes.
+    const Svg svg{render(modes_figure("modes", example("figure-3-block-along-wall.json")), Format::Svg)};
+    for (const char* m : {"ff", "ss", "fs", "rs", "ls", "sf", "sr", "sl", "rr", "ll"}) {
+        EXPECT_TRUE(svg.has_text_containing(std::string(m) + ":")) << m << " in the legend";
+    }
+    // Separating about a centre left of the block turns it counter-clockwise, right of it
+    // clockwise; both regions are drawn and marked.
+    EXPECT_EQ(svg.count_text("ss \u21BA"), 1);
+    EXPECT_EQ(svg.count_text("ss \u21BB"), 1);
+    // Sliding together is a translation (no finite centre), so rr and ll are legend-only.
+    EXPECT_EQ(svg.count_text("rr \u21BA") + svg.count_text("rr \u21BB"), 0);
+    EXPECT_TRUE(svg.has_text_containing("rr: translation along (1, 0)"));
+}
+
+TEST(Svg, Figure3PanelsAreTotalContactAppliedForModeRr) {
+    const Scene scene = example("figure-3-block-along-wall.json");
+    const auto analysis = analyze(scene);
+    std::size_t rr = analysis.size();
+    for (std::size_t i = 0; i < analysis.size(); ++i) {
+        if (analysis[i].mode.letters == "rr") rr = i;
+    }
+    ASSERT_LT(rr, analysis.size());
+    const Svg svg{render(forces_figure("Figure 3", scene, analysis, {rr}), Format::Svg)};
+    EXPECT_EQ(svg.count_text("F total (rr)"), 1);
+    EXPECT_EQ(svg.count_text("T contact (rr)"), 1);
+    EXPECT_EQ(svg.count_text("E applied (rr)"), 1);
+    // F: a line through the centre of mass (a +- line), + above, - below; T: two lines of
+    // force through the contacts, + and - wedges; E: + and - regions. Each panel one of each.
+    EXPECT_EQ(svg.fills(palette::kPlus), 3);
+    EXPECT_EQ(svg.fills(palette::kMinus), 3);
+    EXPECT_EQ(svg.count_text("+"), 3);
+    EXPECT_EQ(svg.count_text(kMinus), 3);
+}
+
+// ---------------------------------------------------------------- files
+
+TEST(Write, FormatComesFromTheExtension) {
+    EXPECT_EQ(format_for("a.svg"), Format::Svg);
+    EXPECT_EQ(format_for("dir.x/a.PDF"), Format::Pdf);
+    EXPECT_EQ(format_for("a.png"), Format::Png);
+    EXPECT_THROW((void)format_for("a.jpg"), std::invalid_argument);
+    EXPECT_THROW((void)format_for("svg"), std::invalid_argument);
+}
+
+TEST(Write, EachFormatHasItsSignature) {
+    const Cone f = forces_through_point(Vec2(0, 0));
+    const Figure fig = labels_figure("t", {panel_of("F", f)}, false, f);
+    EXPECT_EQ(render(fig, Format::Pdf).substr(0, 5), "%PDF-");
+    EXPECT_EQ(render(fig, Format::Png).substr(1, 3), "PNG");
+    EXPECT_NE(render(fig, Format::Svg).find("<svg"), std::string::npos);
+}
+
+TEST(Write, NothingIsLeftBehindWhenTheFileCannotBeWritten) {
+    const Cone f = forces_through_point(Vec2(0, 0));
+    const Figure fig = labels_figure("t", {panel_of("F", f)}, false, f);
+    const auto dir = std::filesystem::temp_directory_path() / ("momentlab-render-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    EXPECT_THROW(write(fig, (dir / "missing" / "a.svg").string()), std::runtime_error);
+    EXPECT_THROW(write(fig, (dir / "a.gif").string()), std::invalid_argument);
+    write(fig, (dir / "a.svg").string());
+    std::vector<std::string> left;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) left.push_back(e.path().filename().string());
+    EXPECT_EQ(left, std::vector<std::string>{"a.svg"});
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Layout, PanelsKeepEqualScaleInXAndY) {
+    const Cone f = forces_through_point(Vec2(0, 0));
+    Figure fig = labels_figure("t", {panel_of("F", f)}, false, f, Box{Vec2(0, 0), Vec2(4, 1)});
+    const Layout page = layout(fig);
+    const Vec2 a = page.to_page(0, Vec2(0, 0)), b = page.to_page(0, Vec2(1, 1));
+    EXPECT_DOUBLE_EQ(b.x() - a.x(), a.y() - b.y());
+    fig.panels[0].view = Box{Vec2(0, 0), Vec2(0, 1)};
+    EXPECT_THROW((void)layout(fig), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace momentlab::render
