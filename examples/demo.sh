@@ -48,7 +48,7 @@ rm -f "$bad"
 # The paper's figures, drawn from the bundled files (SVG for reading, PNG for showing).
 mkdir -p "$out"
 echo
-echo "== The paper's Figures 1-4, drawn"
+echo "== The paper's Figures 1-6, drawn"
 figure() {  # figure NAME TITLE ARGS...
     local name=$1 title=$2
     shift 2
@@ -64,6 +64,10 @@ figure figure-3 "Figure 3: sliding the block along the wall (mode rr)" \
 figure figure-3-modes "The block along the wall: every contact mode" \
     draw "$here/figure-3-block-along-wall.json" --what modes
 figure figure-4 "Figure 4: two-point peg insertion (mode rl)" draw "$here/figure-4-peg-in-hole.json" --mode rl
+figure figure-5 "Figure 5: tilting the block along the wall (goal rr)" \
+    plan tilt "$here/figure-3-block-along-wall.json" --goal rr
+figure figure-6 "Figure 6: pushing the trailing edge, finger slip l (goal rr)" \
+    plan push "$here/figure-3-block-along-wall.json" --goal rr --edge 3 --slip l
 figure rod-in-corner-modes "A rod in a corner: every contact mode" draw "$here/rod-in-corner.json" --what modes
 echo "   pictures written to $out/:"
 ls "$out" | sed 's/^/     /'

@@ -22,6 +22,9 @@ std::function<int()> add_modes_command(CLI::App& app);
 std::function<int()> add_query_command(CLI::App& app);
 std::function<int()> add_analyze_command(CLI::App& app);
 
+/// Adds the `plan` subcommand (plan tilt).
+std::function<int()> add_plan_command(CLI::App& app);
+
 /// Adds the `draw` subcommand.
 std::function<int()> add_draw_command(CLI::App& app);
 

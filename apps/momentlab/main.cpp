@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     const auto run_query = momentlab::cli::add_query_command(app);
     const auto run_analyze = momentlab::cli::add_analyze_command(app);
     const auto run_draw = momentlab::cli::add_draw_command(app);
+    const auto run_plan = momentlab::cli::add_plan_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("query")) return run_query();
         if (app.got_subcommand("analyze")) return run_analyze();
         if (app.got_subcommand("draw")) return run_draw();
+        if (app.got_subcommand("plan")) return run_plan();
     } catch (const std::invalid_argument& e) {
         std::cerr << "momentlab: " << e.what() << "\n";
         return 2;

@@ -472,20 +472,11 @@ Figure modes_figure(const std::string& title, const Scene& scene, std::optional<
     return figure;
 }
 
-Figure forces_figure(const std::string& title, const Scene& scene, const std::vector<ModeForces>& analysis,
-                     const std::vector<std::size_t>& modes, std::optional<Box> view) {
-    std::vector<Vec2> contact_points;
-    for (const Contact& c : scene.contacts) contact_points.push_back(c.point);
-    std::vector<ForcePanel> sets;
-    for (std::size_t k : modes) {
-        const ModeForces& m = analysis.at(k);
-        const std::string& letters = m.mode.letters;
-        std::vector<Vec2> com;
-        if (scene.body) com.push_back(scene.body->com);
-        sets.push_back({"F total (" + letters + ")", m.total, com});
-        sets.push_back({"T contact (" + letters + ")", m.contact, contact_points});
-        sets.push_back({"E applied (" + letters + ")", m.applied, {}});
-    }
+namespace {
+
+// Panels of force sets over a faint scene, three to a row, sharing one view.
+Figure scene_sets_figure(const std::string& title, const Scene& scene, const std::vector<ForcePanel>& sets,
+                         std::optional<Box> view) {
     if (!view) {
         // The scene, and the sets' corners near it (far corners would shrink the scene away).
         const Box sv = scene_view(scene);
@@ -514,6 +505,35 @@ Figure forces_figure(const std::string& title, const Scene& scene, const std::ve
     figure.legend = labels_legend();
     for (const LegendEntry& e : scene_legend()) figure.legend.push_back(e);
     return figure;
+}
+
+}  // namespace
+
+Figure forces_figure(const std::string& title, const Scene& scene, const std::vector<ModeForces>& analysis,
+                     const std::vector<std::size_t>& modes, std::optional<Box> view) {
+    std::vector<Vec2> contact_points;
+    for (const Contact& c : scene.contacts) contact_points.push_back(c.point);
+    std::vector<ForcePanel> sets;
+    for (std::size_t k : modes) {
+        const ModeForces& m = analysis.at(k);
+        const std::string& letters = m.mode.letters;
+        std::vector<Vec2> com;
+        if (scene.body) com.push_back(scene.body->com);
+        sets.push_back({"F total (" + letters + ")", m.total, com});
+        sets.push_back({"T contact (" + letters + ")", m.contact, contact_points});
+        sets.push_back({"E applied (" + letters + ")", m.applied, {}});
+    }
+    return scene_sets_figure(title, scene, sets, view);
+}
+
+Figure synthesis_figure(const std::string& title, const Scene& scene, const ForcePanel& actions,
+                        const ModeForces& goal, const Cone& solutions, std::optional<Box> view) {
+    const std::string& letters = goal.mode.letters;
+    const std::vector<ForcePanel> sets = {
+        actions,
+        {"E applied (" + letters + ")", goal.applied, {}},
+        {"solutions: W \u2229 E (" + letters + ")", solutions, actions.anchors}};
+    return scene_sets_figure(title, scene, sets, view);
 }
 
 Figure friction_figure(const std::string& title, const Scene& scene, std::optional<Box> view) {

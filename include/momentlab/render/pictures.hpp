@@ -72,6 +72,13 @@ void add_scene(Panel& panel, const Scene& scene, SceneStyle style);
                                    const std::vector<ModeForces>& analysis, const std::vector<std::size_t>& modes,
                                    std::optional<Box> view = std::nullopt);
 
+/// Figures 5 and 6: the achievable actions W (e.g. tilts: the forces through the centre of
+/// mass), the goal mode's applied wrenches E_i, and the solutions W ∩ E_i (the labels' hulls),
+/// side by side over the scene.
+[[nodiscard]] Figure synthesis_figure(const std::string& title, const Scene& scene, const ForcePanel& actions,
+                                      const ModeForces& goal, const Cone& solutions,
+                                      std::optional<Box> view = std::nullopt);
+
 /// The multi-contact friction cone of the scene (Figure 2 from a scene): one panel per
 /// contact's friction cone and their sum.
 [[nodiscard]] Figure friction_figure(const std::string& title, const Scene& scene, std::optional<Box> view = std::nullopt);
