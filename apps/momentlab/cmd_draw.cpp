@@ -20,12 +20,6 @@ struct DrawOptions {
     PictureOptions picture;
 };
 
-std::string mode_list(const std::vector<ModeForces>& analysis) {
-    std::string out;
-    for (const ModeForces& m : analysis) out += (out.empty() ? "" : ", ") + m.mode.letters;
-    return out;
-}
-
 int run(const DrawOptions& o) {
     const std::optional<Box> view = checked_picture_options(o.picture);
     const std::string what = !o.what.empty() ? o.what : (o.modes.empty() ? "modes" : "forces");
@@ -49,14 +43,7 @@ int run(const DrawOptions& o) {
     if (!scene.body) throw InputError("$", "missing field \"body\" (--what forces needs its mass, com and inertia)");
     const std::vector<ModeForces> analysis = analyze(scene);
     std::vector<std::size_t> chosen;
-    for (const std::string& letters : o.modes) {
-        const auto it = std::find_if(analysis.begin(), analysis.end(),
-                                     [&](const ModeForces& m) { return m.mode.letters == letters; });
-        if (it == analysis.end()) {
-            throw InputError("--mode", "no mode \"" + letters + "\" in this scene (its modes: " + mode_list(analysis) + ")");
-        }
-        chosen.push_back(static_cast<std::size_t>(it - analysis.begin()));
-    }
+    for (const std::string& letters : o.modes) chosen.push_back(mode_index(analysis, letters, "--mode"));
     if (chosen.empty()) {
         for (std::size_t i = 0; i < analysis.size(); ++i) chosen.push_back(i);
     }
@@ -70,6 +57,15 @@ int run(const DrawOptions& o) {
 }
 
 }  // namespace
+
+std::size_t mode_index(const std::vector<ModeForces>& analysis, const std::string& letters, const std::string& option) {
+    for (std::size_t i = 0; i < analysis.size(); ++i) {
+        if (analysis[i].mode.letters == letters) return i;
+    }
+    std::string modes;
+    for (const ModeForces& m : analysis) modes += (modes.empty() ? "" : ", ") + m.mode.letters;
+    throw InputError(option, "no mode \"" + letters + "\" in this scene (its modes: " + modes + ")");
+}
 
 void add_picture_options(CLI::App* cmd, PictureOptions& options, bool required) {
     auto* out = cmd->add_option("-o,--output", options.files, "write a picture: FILE.svg, FILE.pdf or FILE.png (repeatable)")

@@ -37,23 +37,12 @@ std::string degrees(double radians) {
     return s.str();
 }
 
-// The goal's entry in the analysis; an unknown mode names the scene's modes.
-const ModeForces& goal_of(const std::vector<ModeForces>& analysis, const std::string& letters) {
-    const auto it = std::find_if(analysis.begin(), analysis.end(), [&](const ModeForces& m) { return m.mode.letters == letters; });
-    if (it == analysis.end()) {
-        std::string modes;
-        for (const ModeForces& m : analysis) modes += (modes.empty() ? "" : ", ") + m.mode.letters;
-        throw InputError("--goal", "no mode \"" + letters + "\" in this scene (its modes: " + modes + ")");
-    }
-    return *it;
-}
-
 int run_tilt(const PlanOptions& o) {
     const std::optional<Box> view = checked_picture_options(o.picture);
     const Scene scene = read_scene_file(o.file);
     if (!scene.body) throw InputError("$", "missing field \"body\" (plan tilt needs its mass, com and inertia)");
     const std::vector<ModeForces> analysis = analyze(scene);
-    const ModeForces& goal = goal_of(analysis, o.goal);
+    const ModeForces& goal = analysis[mode_index(analysis, o.goal, "--goal")];
     const TiltPlan plan = plan_tilt(scene, goal);
     if (o.json) {
         nlohmann::json intervals = nlohmann::json::array();
@@ -105,7 +94,7 @@ int run_push(const PlanOptions& o) {
         throw InputError("--edge", "the body has edges 0 .. " + std::to_string(scene.body->polygon.size() - 1));
     }
     const std::vector<ModeForces> analysis = analyze(scene);
-    const ModeForces& goal = goal_of(analysis, o.goal);
+    const ModeForces& goal = analysis[mode_index(analysis, o.goal, "--goal")];
     std::vector<PushCase> cases;
     for (PushCase& c : plan_push_edges(scene, goal, o.mu)) {
         if ((!o.edge || c.edge == *o.edge) && (o.slip.empty() || c.slip == o.slip[0])) cases.push_back(std::move(c));

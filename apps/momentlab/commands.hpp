@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "momentlab/geometry/cone.hpp"
+#include "momentlab/mechanics/dynamics.hpp"
 #include "momentlab/mechanics/scene.hpp"
 #include "momentlab/render/figure.hpp"
 
@@ -45,6 +46,10 @@ std::optional<Box> checked_picture_options(const PictureOptions& options);
 /// Writes the figure to every -o file and says so on stdout; a file that cannot be written is an
 /// InputError at "-o" (and is left untouched).
 void write_picture(const render::Figure& figure, const PictureOptions& options);
+
+/// The index of the mode with these letters in the analysis; an unknown mode is an InputError
+/// at `option` that lists the scene's modes.
+std::size_t mode_index(const std::vector<ModeForces>& analysis, const std::string& letters, const std::string& option);
 
 /// Reads a whole file; throws InputError at "$" if it cannot be read.
 std::string read_file(const std::string& path);
