@@ -412,13 +412,14 @@ Figure modes_figure(const std::string& title, const Scene& scene, std::optional<
     Figure figure;
     figure.title = title;
     // Regions with interior first, then segments, then points, so nothing hides a smaller one.
+    std::vector<Labels> centres_of;  // each mode's rotation centres, built once
+    for (const Mode& mode : modes.modes) centres_of.push_back(rotation_centres(mode));
     std::vector<Text> marks;
-    std::vector<LegendEntry> still;
     for (int pass = 2; pass >= 0; --pass) {
         for (std::size_t k = 0; k < modes.modes.size(); ++k) {
             const Mode& mode = modes.modes[k];
             const Colour colour = kModeColours[k % kModeColours.size()];
-            const Labels centres = rotation_centres(mode);
+            const Labels& centres = centres_of[k];
             for (const auto& [region, sense] : {std::pair{&centres.plus(), kCounterClockwise},
                                                 std::pair{&centres.minus(), kClockwise}}) {
                 if (dimension(*region) != pass || region->clipped(panel.view).empty()) continue;
@@ -434,7 +435,7 @@ Figure modes_figure(const std::string& title, const Scene& scene, std::optional<
     for (std::size_t k = 0; k < modes.modes.size(); ++k) {
         const Mode& mode = modes.modes[k];
         const Colour colour = kModeColours[k % kModeColours.size()];
-        const Labels centres = rotation_centres(mode);
+        const Labels& centres = centres_of[k];
         const bool drawn = !centres.plus().clipped(panel.view).empty() || !centres.minus().clipped(panel.view).empty();
         std::string text = mode.letters + ":";
         if (mode.twists.is_zero()) {

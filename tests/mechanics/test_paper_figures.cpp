@@ -2,6 +2,8 @@
 // hand from the scene files in examples/, and the wedged rod's ambiguity.
 #include <gtest/gtest.h>
 
+#include "../common/examples.hpp"
+
 #include <algorithm>
 #include <iostream>
 #include <fstream>
@@ -18,12 +20,7 @@ namespace {
 using testing::has_direction;
 using testing::has_vertex;
 
-Scene load(const std::string& name) {
-    std::ifstream in(std::string(MOMENTLAB_EXAMPLES) + "/" + name);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return read_scene_text(s.str());
-}
+Scene load(const std::string& name) { return testing::example_scene(name); }
 
 const ModeForces& mode(const std::vector<ModeForces>& a, const std::string& letters) {
     const auto it = std::find_if(a.begin(), a.end(), [&](const ModeForces& m) { return m.mode.letters == letters; });

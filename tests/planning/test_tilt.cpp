@@ -1,6 +1,8 @@
 // Tilting (Mason 1991, Figure 5), checked against a derivation by hand.
 #include <gtest/gtest.h>
 
+#include "../common/examples.hpp"
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -12,12 +14,7 @@
 namespace momentlab {
 namespace {
 
-Scene example(const std::string& name) {
-    std::ifstream in(std::string(MOMENTLAB_EXAMPLES) + "/" + name);
-    std::stringstream s;
-    s << in.rdbuf();
-    return read_scene_text(s.str());
-}
+Scene example(const std::string& name) { return testing::example_scene(name); }
 
 const ModeForces& mode(const std::vector<ModeForces>& a, const std::string& letters) {
     for (const ModeForces& m : a) {

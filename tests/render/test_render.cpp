@@ -4,6 +4,8 @@
 #include <cairo.h>
 #include <gtest/gtest.h>
 
+#include "../common/examples.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -319,12 +321,7 @@ TEST(Svg, Figure1aLineOfForceIsPlusMinusAndTheHalfPlanesGoOn) {
     EXPECT_EQ(svg.fills(palette::kMinusEdge), 3);
 }
 
-Scene example(const std::string& name) {
-    std::ifstream in(std::string(MOMENTLAB_EXAMPLES) + "/" + name);
-    std::stringstream s;
-    s << in.rdbuf();
-    return read_scene_text(s.str());
-}
+Scene example(const std::string& name) { return testing::example_scene(name); }
 
 TEST(Svg, ModesOfTheBlockAlongTheWallAreAllNamed) {
     // Two contacts on one flat wall (Brost and Mason 1989): ff and ss; each contact fixed,
