@@ -96,13 +96,6 @@ struct AnalyzeOptions {
     bool json = false;
 };
 
-std::string region_text(const Region& r) {
-    std::ostringstream s;
-    s << std::setprecision(6) << r.kind();
-    for (const Vec2& v : r.vertices) s << " (" << v.x() + 0.0 << ", " << v.y() + 0.0 << ")";  // no -0
-    return s.str();
-}
-
 int run_analyze(const AnalyzeOptions& o) {
     const Scene scene = read_scene_file(o.file);
     const auto analysis = analyze(needs_body(scene));

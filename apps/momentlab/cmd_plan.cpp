@@ -1,7 +1,8 @@
 // `momentlab plan tilt SCENE --goal MODE [--json] [-o FILE]...`: the tilts (gravity directions)
 // that produce a goal mode (Mason 1991, section 3, Figure 5); `momentlab plan push SCENE --goal
-// MODE [--mu M] [--edge I] [--slip l|f|r]`: which edges and finger slips can push it there
-// (Figure 6).
+// MODE [--mu M] [--edge I | --vertex I] [--slip l|f|r] [--ignore-interference]`: which features
+// and finger slips push it there (Figure 6); `momentlab plan comply SCENE --goal MODE [--centre
+// X Y]`: the spring directions through a compliance centre, and the centres that work.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -13,7 +14,10 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "describe.hpp"
+#include "momentlab/io/json_output.hpp"
 #include "momentlab/io/input_error.hpp"
+#include "momentlab/planning/comply.hpp"
 #include "momentlab/planning/push.hpp"
 #include "momentlab/planning/tilt.hpp"
 #include "momentlab/render/pictures.hpp"
@@ -28,7 +32,10 @@ struct PlanOptions {
     PictureOptions picture;
     double mu = 0.5;
     std::optional<std::size_t> edge;
+    std::optional<std::size_t> vertex;
     std::string slip;
+    bool ignore_interference = false;
+    std::vector<double> centre;
 };
 
 std::string degrees(double radians) {
@@ -37,32 +44,49 @@ std::string degrees(double radians) {
     return s.str();
 }
 
+std::string fmt(const Vec2& v) {
+    std::ostringstream s;
+    s << "(" << v.x() << ", " << v.y() << ")";
+    return s.str();
+}
+
+// {"intervals": [[from, to], ...], "best": ..., "margin": ...} (best and margin when feasible).
+nlohmann::json directions_json(const DirectionPlan& plan) {
+    nlohmann::json intervals = nlohmann::json::array();
+    for (const AngleInterval& i : plan.intervals) intervals.push_back({i.from, i.to});
+    nlohmann::json out = {{"intervals", intervals}};
+    if (plan.feasible()) {
+        out["best"] = plan.best;
+        out["margin"] = plan.margin;
+    }
+    return out;
+}
+
+void print_directions(const DirectionPlan& plan) {
+    for (const AngleInterval& i : plan.intervals) {
+        std::cout << "  [" << i.from << ", " << i.to << "]   (" << degrees(i.from) << " .. " << degrees(i.to) << ")\n";
+    }
+    std::cout << "  best " << plan.best << " (" << degrees(plan.best) << "), margin " << plan.margin << " ("
+              << degrees(plan.margin) << ") to the nearest boundary\n";
+}
+
 int run_tilt(const PlanOptions& o) {
     const std::optional<Box> view = checked_picture_options(o.picture);
     const Scene scene = read_scene_file(o.file);
     if (!scene.body) throw InputError("$", "missing field \"body\" (plan tilt needs its mass, com and inertia)");
     const std::vector<ModeForces> analysis = analyze(scene);
     const ModeForces& goal = analysis[mode_index(analysis, o.goal, "--goal")];
-    const TiltPlan plan = plan_tilt(scene, goal);
+    const DirectionPlan plan = plan_tilt(scene, goal);
     if (o.json) {
-        nlohmann::json intervals = nlohmann::json::array();
-        for (const AngleInterval& i : plan.intervals) intervals.push_back({i.from, i.to});
-        nlohmann::json out = {{"goal", o.goal}, {"intervals", intervals}};
-        if (plan.feasible()) {
-            out["best"] = plan.best;
-            out["margin"] = plan.margin;
-        }
+        nlohmann::json out = directions_json(plan);
+        out["goal"] = o.goal;
         std::cout << out.dump() << "\n";
     } else if (!plan.feasible()) {
         std::cout << "no tilt produces mode " << o.goal << " (W \u2229 E is {0})\n";
     } else {
         std::cout << "tilts that produce mode " << o.goal
                   << ": gravity directions, radians from +x (boundaries shared with a neighbouring mode)\n";
-        for (const AngleInterval& i : plan.intervals) {
-            std::cout << "  [" << i.from << ", " << i.to << "]   (" << degrees(i.from) << " .. " << degrees(i.to) << ")\n";
-        }
-        std::cout << "  best " << plan.best << " (" << degrees(plan.best) << "), margin " << plan.margin << " ("
-                  << degrees(plan.margin) << ") to the nearest boundary\n";
+        print_directions(plan);
     }
     if (!o.picture.files.empty()) {
         const std::string title = o.picture.title.empty()
@@ -75,57 +99,144 @@ int run_tilt(const PlanOptions& o) {
     return 0;
 }
 
-std::string fmt(const Vec2& v) {
+int run_comply(const PlanOptions& o) {
+    const std::optional<Box> view = checked_picture_options(o.picture);
+    if (!o.picture.files.empty() && o.centre.empty()) throw InputError("-o", "a picture shows one centre: give --centre X Y");
+    if (!o.centre.empty() && !(std::isfinite(o.centre[0]) && std::isfinite(o.centre[1]))) {
+        throw InputError("--centre", "expected two finite numbers");
+    }
+    const Scene scene = read_scene_file(o.file);
+    if (!scene.body) throw InputError("$", "missing field \"body\" (plan comply needs its mass, com and inertia)");
+    const std::vector<ModeForces> analysis = analyze(scene);
+    const ModeForces& goal = analysis[mode_index(analysis, o.goal, "--goal")];
+    const Labels region = compliance_labels(goal);
+    std::optional<ComplyPlan> plan;
+    if (!o.centre.empty()) plan = plan_comply(goal, Vec2(o.centre[0], o.centre[1]));
+    if (o.json) {
+        nlohmann::json out = {{"goal", o.goal}, {"labels", to_json(region)}};
+        if (plan) {
+            nlohmann::json c = directions_json(plan->directions);
+            c["point"] = {plan->centre.x(), plan->centre.y()};
+            c["label"] = to_string(plan->label);
+            c["verdict"] = to_string(plan->verdict);
+            out["centre"] = c;
+        }
+        std::cout << out.dump() << "\n";
+    } else {
+        std::cout << "compliance centres for mode " << o.goal << ": those outside both labelled regions of E_" << o.goal
+                  << " work (on a region's boundary only as a knife edge)\n"
+                  << "  + region " << region_text(region.plus()) << "\n"
+                  << "  - region " << region_text(region.minus()) << "\n";
+        if (plan) {
+            std::cout << "centre " << fmt(plan->centre) << ": label " << to_string(plan->label) << ", "
+                      << to_string(plan->verdict);
+            if (!plan->directions.feasible()) {
+                std::cout << " (no spring direction through it produces mode " << o.goal << ")\n";
+            } else {
+                std::cout << "; spring force (offset) directions, radians from +x:\n";
+                print_directions(plan->directions);
+            }
+        }
+    }
+    if (plan && !o.picture.files.empty()) {
+        const std::string title = o.picture.title.empty()
+                                      ? std::filesystem::path(o.file).stem().string() + ": compliance centre " +
+                                            fmt(plan->centre) + " for mode " + o.goal
+                                      : o.picture.title;
+        const render::ForcePanel actions{"W: spring forces through the centre", plan->directions.actions, {plan->centre}};
+        write_picture(render::synthesis_figure(title, scene, actions, goal, plan->directions.solutions, view), o.picture);
+    }
+    return 0;
+}
+
+nlohmann::json point_json(const Vec2& v) { return {v.x(), v.y()}; }
+
+nlohmann::json case_json(const PushCase& c) {
+    nlohmann::json touch = nlohmann::json::array();
+    for (const auto& [p, q] : c.touch) touch.push_back({point_json(p), point_json(q)});
+    nlohmann::json out = {{"feature", c.feature.name()},
+                          {"from", point_json(c.feature.from)},
+                          {"to", point_json(c.feature.to)},
+                          {"slip", std::string(1, c.slip)},
+                          {"verdict", to_string(c.verdict)},
+                          {"feasible", c.feasible()},
+                          {"blocked", c.blocked},
+                          {"touch", touch}};
+    out["directions"] = c.directions ? nlohmann::json{c.directions->from, c.directions->to} : nlohmann::json();
+    if (c.best) {
+        out["best"] = {{"point", point_json(c.best->point)},
+                       {"direction", std::atan2(c.best->direction.y(), c.best->direction.x())}};
+    }
+    return out;
+}
+
+std::string case_line(const PushCase& c) {
     std::ostringstream s;
-    s << "(" << v.x() << ", " << v.y() << ")";
-    return s.str();
+    s << "  " << std::left << std::setw(10) << c.feature.name() << std::setw(6) << c.slip << std::setw(10)
+      << to_string(c.verdict);
+    std::string where;
+    for (const auto& [p, q] : c.touch) where += (where.empty() ? "" : ", ") + (p == q ? fmt(p) : fmt(p) + " - " + fmt(q));
+    s << std::setw(34) << where;
+    if (c.directions) s << degrees(c.directions->from) << " .. " << degrees(c.directions->to);
+    if (c.blocked == "part" || c.blocked == "all") s << "   [" << c.blocked << " of it in obstacles]";
+    std::string line = s.str();
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    return line;
 }
 
 int run_push(const PlanOptions& o) {
     const std::optional<Box> view = checked_picture_options(o.picture);
     if (!(o.mu >= 0.0) || !std::isfinite(o.mu)) throw InputError("--mu", "expected a finite mu >= 0");
-    if (!o.picture.files.empty() && (!o.edge || o.slip.empty())) {
-        throw InputError("-o", "a picture shows one case: give --edge and --slip");
+    if (o.edge && o.vertex) throw InputError("--vertex", "give --edge or --vertex, not both");
+    if (!o.picture.files.empty() && ((!o.edge && !o.vertex) || o.slip.empty())) {
+        throw InputError("-o", "a picture shows one case: give --edge or --vertex, and --slip");
     }
     const Scene scene = read_scene_file(o.file);
     if (!scene.body) throw InputError("$", "missing field \"body\" (plan push needs its mass, com, inertia and polygon)");
-    if (scene.body->polygon.size() < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
-    if (o.edge && *o.edge >= scene.body->polygon.size()) {
-        throw InputError("--edge", "the body has edges 0 .. " + std::to_string(scene.body->polygon.size() - 1));
-    }
+    const std::size_t n = scene.body->polygon.size();
+    if (n < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
+    if (o.edge && *o.edge >= n) throw InputError("--edge", "the body has edges 0 .. " + std::to_string(n - 1));
+    if (o.vertex && *o.vertex >= n) throw InputError("--vertex", "the body has vertices 0 .. " + std::to_string(n - 1));
     const std::vector<ModeForces> analysis = analyze(scene);
     const ModeForces& goal = analysis[mode_index(analysis, o.goal, "--goal")];
+    const PushOptions options{o.mu, o.ignore_interference};
     std::vector<PushCase> cases;
-    for (PushCase& c : plan_push_edges(scene, goal, o.mu)) {
-        if ((!o.edge || c.edge == *o.edge) && (o.slip.empty() || c.slip == o.slip[0])) cases.push_back(std::move(c));
+    for (PushCase& c : plan_push(scene, goal, options)) {
+        const bool is_edge = c.feature.kind == PushFeature::Kind::Edge;
+        const bool feature_ok = (!o.edge && !o.vertex) || (o.edge && is_edge && c.feature.index == *o.edge) ||
+                                (o.vertex && !is_edge && c.feature.index == *o.vertex);
+        if (feature_ok && (o.slip.empty() || c.slip == o.slip[0])) cases.push_back(std::move(c));
     }
+    const char* interference = o.ignore_interference ? "ignored" : "considered";
     if (o.json) {
-        nlohmann::json out = {{"goal", o.goal}, {"mu", o.mu}, {"cases", nlohmann::json::array()}};
-        for (const PushCase& c : cases) {
-            out["cases"].push_back({{"feature", "edge " + std::to_string(c.edge)},
-                                    {"from", {c.from.x(), c.from.y()}},
-                                    {"to", {c.to.x(), c.to.y()}},
-                                    {"slip", std::string(1, c.slip)},
-                                    {"feasible", c.feasible()}});
-        }
+        nlohmann::json out = {{"goal", o.goal}, {"mu", o.mu}, {"interference", interference}, {"cases", nlohmann::json::array()}};
+        for (const PushCase& c : cases) out["cases"].push_back(case_json(c));
         std::cout << out.dump() << "\n";
     } else {
-        std::cout << "pushing to mode " << o.goal << " with a finger (mu = " << o.mu
-                  << ") on each edge; interference with obstacles ignored\n";
-        for (const PushCase& c : cases) {
-            std::cout << "  edge " << c.edge << " " << fmt(c.from) << " - " << fmt(c.to) << "  slip " << c.slip << "  "
-                      << (c.feasible() ? "feasible" : "no") << "\n";
-        }
+        const auto feasible = std::count_if(cases.begin(), cases.end(), [](const PushCase& c) { return c.feasible(); });
+        std::cout << "pushing into mode " << o.goal << ": a point finger with mu = " << o.mu << ", obstacles "
+                  << interference << "; " << feasible << " of " << cases.size() << " cases feasible\n";
+        std::cout << "  " << std::left << std::setw(10) << "feature" << std::setw(6) << "slip" << std::setw(10)
+                  << "verdict" << std::setw(34) << "touch" << "push directions (from +x)\n";
+        for (const PushCase& c : cases) std::cout << case_line(c) << "\n";
+        std::cout << "  (feasible: some push lies inside E_" << o.goal << "; boundary: only on its boundary, a knife edge;\n"
+                  << "   blocked: only where obstacles leave no room; docs/planning.md)\n";
     }
     if (!o.picture.files.empty() && !cases.empty()) {
         const PushCase& c = cases.front();
-        const std::string what = "edge " + std::to_string(c.edge) + ", slip " + std::string(1, c.slip);
+        const std::string what = c.feature.name() + ", slip " + std::string(1, c.slip);
         const std::string title = o.picture.title.empty()
                                       ? std::filesystem::path(o.file).stem().string() + ": pushing " + what +
                                             " to mode " + o.goal
                                       : o.picture.title;
-        const render::ForcePanel actions{"W: pushes (" + what + ")", c.actions, {c.from, c.to}};
-        write_picture(render::synthesis_figure(title, scene, actions, goal, c.solutions, view), o.picture);
+        std::vector<Cone> actions, solutions;
+        for (const PushPiece& p : c.pieces) {
+            actions.push_back(p.actions);
+            solutions.push_back(p.solutions);
+        }
+        // Several pieces (parts free of obstacles, or a wide vertex arc): their hulls are drawn.
+        const render::ForcePanel panel{"W: pushes (" + what + ")", sum(actions), {c.feature.from, c.feature.to}};
+        write_picture(render::synthesis_figure(title, scene, panel, goal, sum(solutions), view), o.picture);
     }
     return 0;
 }
@@ -141,17 +252,27 @@ std::function<int()> add_plan_command(CLI::App& app) {
     tilt->add_option("--goal", opts->goal, "the goal mode's letters, e.g. rr")->required();
     tilt->add_flag("--json", opts->json, "machine-readable output: {\"intervals\": [[from, to], ...], ...}");
     add_picture_options(tilt, opts->picture, false);
-    CLI::App* push = plan->add_subcommand("push", "The edges and finger slips that can push the body into the goal mode");
+    CLI::App* push = plan->add_subcommand("push", "The features (edges, vertices) and finger slips that push the body into the goal mode");
     push->add_option("scene", opts->file, "scene JSON (DESIGN.md)")->required();
     push->add_option("--goal", opts->goal, "the goal mode's letters, e.g. rr")->required();
     push->add_option("--mu", opts->mu, "the finger's friction coefficient (default 0.5)");
     push->add_option("--edge", opts->edge, "only this edge (from vertex I to the next)");
+    push->add_option("--vertex", opts->vertex, "only this vertex");
+    push->add_flag("--ignore-interference", opts->ignore_interference,
+                   "let the finger touch where obstacles are (as the paper's Figure 6 does)");
     push->add_option("--slip", opts->slip, "only this slip")->check(CLI::IsMember({"l", "f", "r"}));
     push->add_flag("--json", opts->json, "machine-readable output: {\"cases\": [...]}");
     add_picture_options(push, opts->picture, false);
-    return [opts, tilt, push] {
+    CLI::App* comply = plan->add_subcommand("comply", "The spring directions through a compliance centre, and the centres that work");
+    comply->add_option("scene", opts->file, "scene JSON (DESIGN.md)")->required();
+    comply->add_option("--goal", opts->goal, "the goal mode's letters, e.g. rr")->required();
+    comply->add_option("--centre", opts->centre, "the compliance centre X Y")->expected(2);
+    comply->add_flag("--json", opts->json, "machine-readable output: {\"labels\": ..., \"centre\": {\"intervals\": ...}}");
+    add_picture_options(comply, opts->picture, false);
+    return [opts, tilt, push, comply] {
         if (tilt->parsed()) return run_tilt(*opts);
         if (push->parsed()) return run_push(*opts);
+        if (comply->parsed()) return run_comply(*opts);
         return 2;
     };
 }

@@ -38,6 +38,32 @@ double distance_to_segment(const Vec2& a, const Vec2& b, const Vec2& p) {
 
 Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) { return det_sign(lift(a), lift(b), lift(c)); }
 
+bool is_counter_clockwise(std::span<const Vec2> p) {
+    const std::size_t n = p.size();
+    const auto leftmost = static_cast<std::size_t>(std::min_element(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
+                                                     return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+                                                 }) - p.begin());
+    return orient2d(p[(leftmost + n - 1) % n], p[leftmost], p[(leftmost + 1) % n]) == Sign::Positive;
+}
+
+bool in_closed_polygon(std::span<const Vec2> polygon, const Vec2& p) {
+    // Winding number with exact orientations (Sunday's crossing rule); the boundary first.
+    int winding = 0;
+    const std::size_t n = polygon.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec2& a = polygon[i];
+        const Vec2& b = polygon[(i + 1) % n];
+        const Sign side = orient2d(a, b, p);
+        if (side == Sign::Zero && within(a, b, p)) return true;
+        if (a.y() <= p.y()) {
+            if (b.y() > p.y() && side == Sign::Positive) ++winding;
+        } else if (b.y() <= p.y() && side == Sign::Negative) {
+            --winding;
+        }
+    }
+    return winding != 0;
+}
+
 std::string polygon_problem(std::span<const Vec2> polygon) {
     const std::size_t n = polygon.size();
     if (n < 3) return "expected a polygon of at least 3 vertices, got " + std::to_string(n);

@@ -10,16 +10,10 @@
 namespace momentlab {
 namespace {
 
-// The polygon (simple, checked by the caller) counter-clockwise: reversed if it turns
-// clockwise at its leftmost (then lowest) vertex, where a simple polygon cannot be straight
-// (exact).
+// The polygon (simple, checked by the caller) counter-clockwise.
 Polygon counter_clockwise(const Polygon& p) {
-    const auto leftmost = static_cast<std::size_t>(std::min_element(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
-                                                     return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-                                                 }) - p.begin());
-    const std::size_t n = p.size();
     Polygon q = p;
-    if (orient2d(p[(leftmost + n - 1) % n], p[leftmost], p[(leftmost + 1) % n]) == Sign::Negative) std::reverse(q.begin(), q.end());
+    if (!is_counter_clockwise(p)) std::reverse(q.begin(), q.end());
     return q;
 }
 

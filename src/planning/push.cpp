@@ -1,48 +1,316 @@
 #include "momentlab/planning/push.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "momentlab/geometry/force_sets.hpp"
+#include "momentlab/core/predicates.hpp"
+#include "momentlab/geometry/polygon.hpp"
 
 namespace momentlab {
+namespace {
+
+Vec2 force_of(const Vec3& w) { return Vec2(w.x(), w.y()); }
+
+bool in_obstacle(const std::vector<Polygon>& obstacles, const Vec2& p) {
+    return std::any_of(obstacles.begin(), obstacles.end(), [&](const Polygon& o) { return in_closed_polygon(o, p); });
+}
+
+// The parts of the segment a-b (parameters s in [0, 1]) that a point finger can touch: the
+// closures of the maximal runs of points lying in no closed obstacle. The breakpoints (where
+// the segment meets obstacle edges) are rounded; which side of them is free is decided exactly
+// for the rounded points tested. A degenerate segment (a vertex) is free or not.
+struct FreeParts {
+    std::vector<std::pair<double, double>> parts;
+    bool all_free = true;  ///< no point of the segment lies in an obstacle
+};
+
+FreeParts free_parts(const Vec2& a, const Vec2& b, const std::vector<Polygon>& obstacles) {
+    if (a == b) {
+        if (in_obstacle(obstacles, a)) return {{}, false};
+        return {{{0.0, 0.0}}, true};
+    }
+    const Vec2 d = b - a;
+    std::vector<double> s = {0.0, 1.0};
+    const auto add = [&](double t) {
+        if (t > 0.0 && t < 1.0) s.push_back(t);
+    };
+    for (const Polygon& o : obstacles) {
+        for (std::size_t k = 0; k < o.size(); ++k) {
+            const Vec2 c = o[k], e = o[(k + 1) % o.size()] - c;
+            const double denom = cross2(d, e);
+            if (denom != 0.0) {
+                const double t = cross2(c - a, e) / denom, u = cross2(c - a, d) / denom;
+                if (u >= 0.0 && u <= 1.0) add(t);
+            } else if (orient2d(a, b, c) == Sign::Zero) {  // collinear: where the obstacle edge's ends project
+                add((c - a).dot(d) / d.squaredNorm());
+                add((c + e - a).dot(d) / d.squaredNorm());
+            }
+        }
+    }
+    std::sort(s.begin(), s.end());
+    s.erase(std::unique(s.begin(), s.end()), s.end());
+    // Walk point 0, gap 0, point 1, ..., point K; merge free elements into runs.
+    FreeParts out;
+    auto& parts = out.parts;
+    bool open = false;
+    const auto visit = [&](bool free, double left, double right) {
+        out.all_free = out.all_free && free;
+        if (free && open) {
+            parts.back().second = right;
+        } else if (free) {
+            parts.emplace_back(left, right);
+        }
+        open = free;
+    };
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        visit(!in_obstacle(obstacles, a + s[k] * d), s[k], s[k]);
+        if (k + 1 < s.size()) visit(!in_obstacle(obstacles, a + (0.5 * (s[k] + s[k + 1])) * d), s[k], s[k + 1]);
+    }
+    return out;
+}
+
+// All forces with direction in cone(directions) whose line of action meets the segment a-b
+// (a == b: passes through a), built exactly from the directions and the points: the directions
+// with every pure moment, cut by the half-spaces of moments about a and b of opposite signs
+// (DESIGN, Robustness: rounding the moments p x d of generators would tilt the plane of
+// forces through a vertex off its true position, and invent or lose solutions there). For a
+// segment the directions must lie in one open side of its line.
+Cone forces_across(const Vec2& a, const Vec2& b, const std::vector<Vec2>& directions) {
+    std::vector<Vec3> rays;
+    Vec2 sum = Vec2::Zero();
+    for (const Vec2& d : directions) {
+        rays.emplace_back(d.x(), d.y(), 0.0);
+        sum += d;
+    }
+    const std::vector<Vec3> lines = {Vec3(0.0, 0.0, 1.0)};
+    const Cone turning = Cone::from_generators(rays, lines);
+    const Vec3 about_a(a.y(), -a.x(), 1.0), about_b(b.y(), -b.x(), 1.0);  // moment about a point
+    std::vector<Vec3> halfspaces;
+    if (a == b) {
+        halfspaces = {about_a, -about_a};
+    } else {
+        const double sigma = cross2_sign(b - a, sum) == Sign::Positive ? 1.0 : -1.0;
+        halfspaces = {sigma * about_a, -sigma * about_b};
+    }
+    return intersection(turning, Cone::from_halfspaces(halfspaces));
+}
+
+// The force directions of a finger with inward normal n: n + mu t (slip l, clockwise of n),
+// n - mu t (r), both (f); t = (n.y, -n.x).
+Vec2 slip_direction(const Vec2& n, double mu, bool left) {
+    const Vec2 t(n.y(), -n.x());
+    return left ? Vec2(n + mu * t) : Vec2(n - mu * t);
+}
+
+// The cones of forces of a finger on vertex v whose inward normals run counter-clockwise from
+// `cw` to `ccw` (the two edges' normals). An arc of pi or more (a sticking finger on a sharp
+// vertex) is split at the bisector, so that each part is convex. At a notch the sticking
+// finger touches both edges: the sum of their cones.
+std::vector<Cone> vertex_actions(const Vec2& v, const Vec2& cw, const Vec2& ccw, const Vec2& bisector, char slip,
+                                 double mu, bool reflex) {
+    if (reflex) {
+        return {forces_across(v, v, {slip_direction(cw, mu, true), slip_direction(cw, mu, false),
+                                     slip_direction(ccw, mu, true), slip_direction(ccw, mu, false)})};
+    }
+    if (slip != 'f') return {forces_across(v, v, {slip_direction(cw, mu, slip == 'l'), slip_direction(ccw, mu, slip == 'l')})};
+    const Vec2 first = slip_direction(cw, mu, true), last = slip_direction(ccw, mu, false);
+    if (cross2_sign(first, last) == Sign::Positive) return {forces_across(v, v, {first, last})};
+    return {forces_across(v, v, {first, bisector}), forces_across(v, v, {bisector, last})};
+}
+
+// The parameter along the edge a-b where the line of action of w crosses it.
+double touch_parameter(const PushFeature& f, const Vec3& w) {
+    const Vec2 force = force_of(w), d = f.to - f.from;
+    return (w.z() - cross2(f.from, force)) / cross2(d, force);
+}
+
+Vec3 unit_force(const Vec3& w) { return w / force_of(w).norm(); }
+
+double relative_angle(const Vec2& reference, const Vec2& d) { return std::atan2(cross2(reference, d), reference.dot(d)); }
+
+// The mean of the solution cone's extreme unit forces (in its relative interior, up to
+// rounding), as a force and the point of the feature where its line of action meets it.
+Push representative(const PushFeature& f, const Cone& solutions) {
+    Vec3 mean = Vec3::Zero();
+    for (const Vec3& w : solutions.generator_values()) mean += unit_force(w);
+    Push push;
+    push.direction = force_of(mean).normalized();
+    push.point = f.kind == PushFeature::Kind::Edge
+                     ? Vec2(f.from + std::clamp(touch_parameter(f, mean), 0.0, 1.0) * (f.to - f.from))
+                     : f.from;
+    return push;
+}
+
+}  // namespace
 
 Cone push_actions(const Vec2& a, const Vec2& b, const Vec2& normal, char slip, double mu) {
     if (slip != 'l' && slip != 'f' && slip != 'r') throw std::invalid_argument("push_actions: slip must be l, f or r");
     if (!(mu >= 0.0) || !std::isfinite(mu)) throw std::invalid_argument("push_actions: mu must be finite and >= 0");
     if (!normal.allFinite() || normal.isZero()) throw std::invalid_argument("push_actions: the normal must be non-zero");
-    // Edges of the Coulomb cone: [0] = n + mu t opposes sliding along -t (l), [1] = n - mu t
-    // opposes sliding along +t (r).
-    std::vector<Vec3> generators;
-    for (const Vec2& p : {a, b}) {
-        const auto edges = friction_cone_edges(p, normal, mu);
-        if (slip != 'r') generators.push_back(edges[0]);
-        if (slip != 'l') generators.push_back(edges[1]);
-    }
-    return Cone::from_generators(generators);
+    if (slip != 'f') return forces_across(a, b, {slip_direction(normal, mu, slip == 'l')});
+    return forces_across(a, b, {slip_direction(normal, mu, true), slip_direction(normal, mu, false)});
 }
 
-std::vector<PushCase> plan_push_edges(const Scene& scene, const ModeForces& goal, double mu) {
-    if (!scene.body || scene.body->polygon.size() < 3) throw std::invalid_argument("plan_push_edges: the body needs a polygon");
+std::string PushFeature::name() const { return (kind == Kind::Edge ? "edge " : "vertex ") + std::to_string(index); }
+
+const char* to_string(PushVerdict v) {
+    switch (v) {
+        case PushVerdict::Feasible: return "feasible";
+        case PushVerdict::Boundary: return "boundary";
+        case PushVerdict::Blocked: return "blocked";
+        case PushVerdict::Infeasible: return "no";
+        case PushVerdict::Reflex: return "reflex";
+    }
+    return "?";
+}
+
+Vec3 Push::wrench() const { return wrench_at(point, direction); }
+
+bool meets_interior(const Cone& c, const Cone& e) {
+    if (e.dimension() < 3 || c.is_zero()) return false;
+    const auto on = [](const ExactVector& facet, const ExactVector& g) { return facet.dot_sign(g) == Sign::Zero; };
+    for (const ExactVector& facet : e.facets()) {
+        const bool inside_facet =
+            std::all_of(c.rays().begin(), c.rays().end(), [&](const ExactVector& r) { return on(facet, r); }) &&
+            std::all_of(c.lineality().begin(), c.lineality().end(), [&](const ExactVector& l) { return on(facet, l); });
+        if (inside_facet) return false;
+    }
+    return true;
+}
+
+namespace {
+
+// The pieces of one case on the given parts of its feature (parameters along an edge).
+std::vector<PushPiece> solve_pieces(const PushFeature& f, const Vec2& cw, const Vec2& ccw, char slip, double mu,
+                                    const std::vector<std::pair<double, double>>& parts, const Cone& goal,
+                                    const std::vector<Polygon>* obstacles) {
+    std::vector<PushPiece> pieces;
+    for (const auto& [lo, hi] : parts) {
+        const Vec2 p = f.from + lo * (f.to - f.from), q = f.from + hi * (f.to - f.from);
+        const std::vector<Cone> cones = f.kind == PushFeature::Kind::Edge
+                                            ? std::vector<Cone>{push_actions(p, q, f.normal, slip, mu)}
+                                            : vertex_actions(f.from, cw, ccw, f.normal, slip, mu, f.reflex);
+        for (const Cone& w : cones) {
+            PushPiece piece{p, q, w, intersection(w, goal), false, std::nullopt};
+            // Robust: the solutions meet the interior of E_goal, and a concrete push, the rounded
+            // representative, lies there exactly (where the finger is free). A sliver that only
+            // rounding opened (inputs that are not dyadic) has no such push: it is a boundary case.
+            if (meets_interior(piece.solutions, goal)) {
+                piece.representative = representative(f, piece.solutions);
+                piece.robust = goal.in_relative_interior(piece.representative->wrench()) &&
+                               !(obstacles && in_obstacle(*obstacles, piece.representative->point));
+            }
+            pieces.push_back(std::move(piece));
+        }
+    }
+    return pieces;
+}
+
+// Touch segments, direction range and a representative push from the chosen pieces.
+void describe(PushCase& c, const std::vector<const PushPiece*>& chosen) {
+    const PushFeature& f = c.feature;
+    double lo_angle = INFINITY, hi_angle = -INFINITY;
+    for (const PushPiece* piece : chosen) {
+        double s0 = INFINITY, s1 = -INFINITY;
+        for (const Vec3& w : piece->solutions.generator_values()) {
+            if (f.kind == PushFeature::Kind::Edge) {
+                const double s = std::clamp(touch_parameter(f, w), 0.0, 1.0);
+                s0 = std::min(s0, s);
+                s1 = std::max(s1, s);
+            }
+            const double angle = relative_angle(f.normal, force_of(w));
+            lo_angle = std::min(lo_angle, angle);
+            hi_angle = std::max(hi_angle, angle);
+        }
+        if (f.kind == PushFeature::Kind::Vertex) {
+            if (c.touch.empty()) c.touch.emplace_back(f.from, f.from);
+        } else if (s0 <= s1) {
+            const Vec2 d = f.to - f.from;
+            c.touch.emplace_back(f.from + s0 * d, f.from + s1 * d);
+        }
+    }
+    if (lo_angle <= hi_angle) {
+        double from = std::atan2(f.normal.y(), f.normal.x()) + lo_angle;
+        const double width = hi_angle - lo_angle;
+        from = std::remainder(from, 2.0 * M_PI);
+        if (from >= M_PI) from -= 2.0 * M_PI;
+        c.directions = DirectionRange{from, from + width};
+    }
+    if (!chosen.empty()) c.best = chosen.front()->representative ? *chosen.front()->representative
+                                                                 : representative(f, chosen.front()->solutions);
+}
+
+}  // namespace
+
+std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options) {
+    if (!scene.body || scene.body->polygon.size() < 3) throw std::invalid_argument("plan_push: the body needs a polygon");
+    if (!(options.mu >= 0.0) || !std::isfinite(options.mu)) throw std::invalid_argument("plan_push: mu must be finite and >= 0");
     const Polygon& poly = scene.body->polygon;
-    double area2 = 0.0;
-    for (std::size_t i = 0; i < poly.size(); ++i) area2 += cross2(poly[i], poly[(i + 1) % poly.size()]);
+    const std::size_t n = poly.size();
+    const bool ccw = is_counter_clockwise(poly);
+    std::vector<Vec2> normals(n);  // inward normal of edge i
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec2 d = poly[(i + 1) % n] - poly[i];
+        normals[i] = (ccw ? Vec2(-d.y(), d.x()) : Vec2(d.y(), -d.x())).normalized();
+    }
     std::vector<PushCase> cases;
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-        const Vec2 a = poly[i], b = poly[(i + 1) % poly.size()];
-        const Vec2 d = b - a;
-        // Inward: to the left of the edge for a counter-clockwise outline, else to the right.
-        const Vec2 n = (area2 > 0.0 ? Vec2(-d.y(), d.x()) : Vec2(d.y(), -d.x())).normalized();
-        for (char slip : {'l', 'f', 'r'}) {
-            PushCase c;
-            c.edge = i;
-            c.from = a;
-            c.to = b;
-            c.normal = n;
-            c.slip = slip;
-            c.actions = push_actions(a, b, n, slip, mu);
-            c.solutions = intersection(c.actions, goal.applied);
-            cases.push_back(std::move(c));
+    for (int pass = 0; pass < 2; ++pass) {
+        for (std::size_t i = 0; i < n; ++i) {
+            PushFeature f;
+            Vec2 cw = normals[i], ccw_normal = normals[i];
+            if (pass == 0) {
+                f = {PushFeature::Kind::Edge, i, poly[i], poly[(i + 1) % n], normals[i], false};
+            } else {
+                const Vec2 &prev = poly[(i + n - 1) % n], &next = poly[(i + 1) % n];
+                const Vec2 n_in = normals[(i + n - 1) % n], n_out = normals[i];
+                const Sign turn = orient2d(prev, poly[i], next);
+                const bool reflex = turn == (ccw ? Sign::Negative : Sign::Positive);
+                // Convex: the normals turn counter-clockwise from n_in to n_out on a
+                // counter-clockwise outline, clockwise on a clockwise one.
+                cw = ccw ? n_in : n_out;
+                ccw_normal = ccw ? n_out : n_in;
+                if (reflex) std::swap(cw, ccw_normal);
+                const Vec2 bisector = (n_in + n_out).normalized();
+                f = {PushFeature::Kind::Vertex, i, poly[i], poly[i], bisector, reflex};
+            }
+            for (char slip : {'l', 'f', 'r'}) {
+                PushCase c;
+                c.feature = f;
+                c.slip = slip;
+                if (f.reflex && slip != 'f') {
+                    c.verdict = PushVerdict::Reflex;
+                    cases.push_back(std::move(c));
+                    continue;
+                }
+                const std::vector<std::pair<double, double>> whole = {{0.0, f.kind == PushFeature::Kind::Edge ? 1.0 : 0.0}};
+                c.pieces = solve_pieces(f, cw, ccw_normal, slip, options.mu, whole, goal.applied, nullptr);
+                const auto has_solutions = [](const PushPiece& p) { return !p.solutions.is_zero(); };
+                const auto robust = [](const PushPiece& p) { return p.robust; };
+                const bool robust_anywhere = std::any_of(c.pieces.begin(), c.pieces.end(), robust);
+                c.verdict = robust_anywhere ? PushVerdict::Feasible
+                            : std::any_of(c.pieces.begin(), c.pieces.end(), has_solutions) ? PushVerdict::Boundary
+                                                                                            : PushVerdict::Infeasible;
+                if (!options.ignore_interference) {
+                    const FreeParts free = free_parts(f.from, f.to, scene.obstacles);
+                    c.blocked = free.parts.empty() ? "all" : free.all_free ? "none" : "part";
+                    if (robust_anywhere && !free.all_free) {
+                        auto reachable =
+                            solve_pieces(f, cw, ccw_normal, slip, options.mu, free.parts, goal.applied, &scene.obstacles);
+                        if (std::any_of(reachable.begin(), reachable.end(), robust)) {
+                            c.pieces = std::move(reachable);
+                        } else {
+                            c.verdict = PushVerdict::Blocked;  // described by the whole feature's solutions
+                        }
+                    }
+                }
+                std::vector<const PushPiece*> shown;
+                for (const PushPiece& p : c.pieces) {
+                    if (c.verdict == PushVerdict::Feasible ? p.robust : has_solutions(p)) shown.push_back(&p);
+                }
+                describe(c, shown);
+                cases.push_back(std::move(c));
+            }
         }
     }
     return cases;

@@ -34,11 +34,15 @@ void add_arc(std::vector<AngleInterval>& out, const Vec2& a, const Vec2& b, bool
 
 Cone tilt_actions(const Body& body) { return forces_through_point(body.com); }
 
-TiltPlan plan_tilt(const Scene& scene, const ModeForces& goal) {
+DirectionPlan plan_tilt(const Scene& scene, const ModeForces& goal) {
     if (!scene.body) throw std::invalid_argument("plan_tilt: the scene has no body");
-    TiltPlan plan;
-    plan.actions = tilt_actions(*scene.body);
-    plan.solutions = intersection(plan.actions, goal.applied);
+    return plan_directions_through(scene.body->com, goal.applied);
+}
+
+DirectionPlan plan_directions_through(const Vec2& point, const Cone& goal_applied) {
+    DirectionPlan plan;
+    plan.actions = forces_through_point(point);
+    plan.solutions = intersection(plan.actions, goal_applied);
     const Cone& s = plan.solutions;
     // W holds no pure moment, so every non-zero wrench of W ∩ E has a force: a direction.
     if (s.is_zero()) return plan;

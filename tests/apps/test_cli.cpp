@@ -190,6 +190,59 @@ TEST_F(CliPictures, BadRequestsExitTwoAndWriteNothing) {
     }
 }
 
+TEST(Cli, PlanPushJsonHasOneEntryPerCaseAndPlanComplyTheRegion) {
+    const std::string scene = kExamples + "/figure-3-block-along-wall.json";
+    Result r = run("plan push " + scene + " --goal rr --json");
+    ASSERT_EQ(r.status, 0) << stderr_text();
+    auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["cases"].size(), 24u);
+    int feasible = 0;
+    for (const auto& c : j["cases"]) {
+        for (const char* key : {"feature", "slip", "feasible", "verdict", "blocked", "touch", "directions"}) {
+            EXPECT_TRUE(c.contains(key)) << key;
+        }
+        feasible += c["feasible"].get<bool>();
+    }
+    EXPECT_EQ(feasible, 5);  // tests/planning/golden: edge 3 l, f; vertex 3 l, f, r
+    r = run("plan push " + scene + " --goal rr --vertex 3 --slip f --json");
+    ASSERT_EQ(r.status, 0) << stderr_text();
+    j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["cases"].size(), 1u);
+    EXPECT_EQ(j["cases"][0]["feature"], "vertex 3");
+    EXPECT_EQ(j["cases"][0]["verdict"], "feasible");
+    r = run("plan comply " + scene + " --goal rr --centre 0.5 0.25 --json");
+    ASSERT_EQ(r.status, 0) << stderr_text();
+    j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["centre"]["verdict"], "works");
+    EXPECT_EQ(j["labels"]["plus"]["kind"], "unbounded");
+    EXPECT_EQ(j["centre"]["intervals"].size(), 1u);
+    r = run("plan comply " + scene + " --goal rr --centre 2 1 --json");  // inside the + region
+    ASSERT_EQ(r.status, 0) << stderr_text();
+    EXPECT_EQ(nlohmann::json::parse(r.out)["centre"]["verdict"], "fails");
+}
+
+TEST_F(CliPictures, PlanBadRequestsExitTwoNamingTheOption) {
+    const std::string scene = kExamples + "/figure-3-block-along-wall.json";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"plan push " + scene + " --goal rr --edge 1 --vertex 1", "--vertex"},
+        {"plan push " + scene + " --goal rr --vertex 9", "--vertex"},
+        {"plan push " + scene + " --goal rr --slip l -o " + at("a.svg"), "-o"},
+        {"plan push " + scene + " --goal zz", "--goal"},
+        {"plan comply " + scene + " --goal rr -o " + at("a.svg"), "-o"},
+        {"plan comply " + scene + " --goal rr --centre 0 nan", "--centre"},
+    };
+    for (const auto& [args, names] : cases) {
+        const Result r = run(args);
+        EXPECT_EQ(r.status, 2) << args;
+        const std::string err = stderr_text();
+        EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << args << ": " << err;
+        EXPECT_NE(err.find(names), std::string::npos) << args << ": " << err;
+        EXPECT_EQ(files(), 0u) << args;
+    }
+    EXPECT_EQ(run("plan comply " + scene + " --goal rr --centre 0 0.5 -o " + at("c.svg")).status, 0) << stderr_text();
+    EXPECT_EQ(run("plan push " + scene + " --goal rr --vertex 3 --slip l -o " + at("p.svg")).status, 0) << stderr_text();
+}
+
 TEST_F(CliPictures, ForcesNeedABody) {
     std::ofstream(at("scene.json")) << R"({"contacts": [{"point": [0, 0], "normal": [0, 1], "mu": 0.5}]})";
     EXPECT_EQ(run("draw " + at("scene.json") + " --what forces -o " + at("a.svg")).status, 2);

@@ -8,7 +8,6 @@
 #include <sstream>
 
 #include "momentlab/io/scene_json.hpp"
-#include "momentlab/planning/push.hpp"
 #include "momentlab/planning/tilt.hpp"
 
 namespace momentlab {
@@ -33,19 +32,19 @@ const ModeForces& mode(const std::vector<ModeForces>& a, const std::string& lett
 TEST(Tilt, BlockAlongTheWallSlidesRightForGravityBetweenMinusAtan2AndZero) {
     const Scene scene = example("figure-3-block-along-wall.json");
     const auto analysis = analyze(scene);
-    const TiltPlan plan = plan_tilt(scene, mode(analysis, "rr"));
+    const DirectionPlan plan = plan_tilt(scene, mode(analysis, "rr"));
     ASSERT_EQ(plan.intervals.size(), 1u);
     EXPECT_NEAR(plan.intervals[0].from, -std::atan(2.0), 1e-15);
     EXPECT_EQ(plan.intervals[0].to, 0.0);
     EXPECT_NEAR(plan.margin, std::atan(2.0) / 2, 1e-15);
     EXPECT_NEAR(plan.best, -std::atan(2.0) / 2, 1e-15);
     // Mirror image: sliding left needs gravity in [-pi, -pi + atan 2].
-    const TiltPlan left = plan_tilt(scene, mode(analysis, "ll"));
+    const DirectionPlan left = plan_tilt(scene, mode(analysis, "ll"));
     ASSERT_EQ(left.intervals.size(), 1u);
     EXPECT_EQ(left.intervals[0].from, -M_PI);
     EXPECT_NEAR(left.intervals[0].to, -M_PI + std::atan(2.0), 1e-15);
     // Staying put (ff): gravity within the friction cone's reach, [-pi + atan 2, -atan 2].
-    const TiltPlan rest = plan_tilt(scene, mode(analysis, "ff"));
+    const DirectionPlan rest = plan_tilt(scene, mode(analysis, "ff"));
     ASSERT_EQ(rest.intervals.size(), 1u);
     EXPECT_NEAR(rest.intervals[0].from, -M_PI + std::atan(2.0), 1e-15);
     EXPECT_NEAR(rest.intervals[0].to, -std::atan(2.0), 1e-15);
@@ -61,23 +60,6 @@ TEST(Tilt, EveryDirectionInsideTheIntervalIsInETheOthersAreNot) {
         const bool inside = t >= -std::atan(2.0) && t <= 0;
         EXPECT_EQ(rr.applied.has(wrench_at(c, Vec2(std::cos(t), std::sin(t)))), inside) << t;
     }
-}
-
-// The finger's cones: n = (1, 0) into the body, t = (n.y, -n.x) = (0, -1). Slip l: the body
-// slides along -t (up) past the finger, so friction on it acts along +t (down): n + mu t =
-// (1, -1/2). Slip r: n - mu t = (1, 1/2). Slip f: either, and everything between.
-TEST(Push, EdgeActionsAreTheSlipEdgesAtBothEnds) {
-    const Cone l = push_actions(Vec2(0, 0), Vec2(0, 0.5), Vec2(1, 0), 'l', 0.5);
-    EXPECT_TRUE(l.has(wrench_at(Vec2(0, 0.25), Vec2(1, -0.5))));
-    EXPECT_FALSE(l.has(wrench_at(Vec2(0, 0.25), Vec2(1, 0.5))));
-    const Cone r = push_actions(Vec2(0, 0), Vec2(0, 0.5), Vec2(1, 0), 'r', 0.5);
-    EXPECT_TRUE(r.has(wrench_at(Vec2(0, 0.25), Vec2(1, 0.5))));
-    const Cone f = push_actions(Vec2(0, 0), Vec2(0, 0.5), Vec2(1, 0), 'f', 0.5);
-    EXPECT_TRUE(f.has(wrench_at(Vec2(0, 0.1), Vec2(1, 0.5))));
-    EXPECT_TRUE(f.has(wrench_at(Vec2(0, 0.4), Vec2(1, -0.5))));
-    EXPECT_TRUE(f.has(wrench_at(Vec2(0, 0.4), Vec2(1, 0))));
-    EXPECT_FALSE(f.has(wrench_at(Vec2(0, 0.6), Vec2(1, 0))));  // beyond the edge
-    EXPECT_THROW((void)push_actions(Vec2(0, 0), Vec2(0, 1), Vec2(1, 0), 'x', 0.5), std::invalid_argument);
 }
 
 }  // namespace

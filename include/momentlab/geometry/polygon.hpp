@@ -21,6 +21,13 @@ namespace momentlab {
 /// polygon of zero area). Exact; O(n^2) in the number of vertices.
 [[nodiscard]] std::string polygon_problem(std::span<const Vec2> polygon);
 
+/// True when the simple polygon's vertices run counter-clockwise (exact: the turn at its
+/// leftmost, then lowest, vertex, where a simple polygon cannot be straight).
+[[nodiscard]] bool is_counter_clockwise(std::span<const Vec2> polygon);
+
+/// True when p lies in the closed polygon: inside or on its boundary (exact winding number).
+[[nodiscard]] bool in_closed_polygon(std::span<const Vec2> polygon, const Vec2& p);
+
 /// True when the point p is within `distance` of the closed segment ab, exactly (squared
 /// distances compared in rationals, after a float filter with a wide margin).
 [[nodiscard]] bool within_distance_of_segment(const Vec2& p, const Vec2& a, const Vec2& b, double distance);

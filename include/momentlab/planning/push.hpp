@@ -2,11 +2,15 @@
 
 /// \file
 /// Synthesis by pushing (Mason 1991, section 3, Example 2; DESIGN, Synthesis): a finger touches
-/// an edge of the body and slips along it (l, r) or sticks (f); its force set along the edge is a
-/// cone W, and the pushes that produce a goal mode i are W ∩ E_i. Letters as for contacts, the
-/// finger being the fixed side: n points into the body, t = (n.y, -n.x), r means the body
-/// slides along +t relative to the finger (friction on the body along -t).
+/// a feature of the body (an edge or a vertex) and slips along it (l, r) or sticks (f); its
+/// force set on that feature is a cone W (or a union of cones), and the pushes that produce a
+/// goal mode i are W ∩ E_i. Letters as for contacts, the finger being the fixed side: n points
+/// into the body, t = (n.y, -n.x), r means the body slides along +t relative to the finger
+/// (friction on the body along -t, force n - mu t), l along -t (force n + mu t). docs/planning.md
+/// has the definitions and the block-along-the-wall table worked by hand.
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,21 +26,101 @@ namespace momentlab {
 /// combination). Throws std::invalid_argument for another slip letter, a zero normal or mu < 0.
 [[nodiscard]] Cone push_actions(const Vec2& a, const Vec2& b, const Vec2& normal, char slip, double mu);
 
-/// One pushing case: an edge of the body polygon and a slip.
-struct PushCase {
-    std::size_t edge = 0;  ///< the edge from vertex `edge` to the next, in the polygon's order
-    Vec2 from = Vec2::Zero();
-    Vec2 to = Vec2::Zero();
-    Vec2 normal = Vec2::Zero();  ///< unit inward normal (rounded)
-    char slip = 'f';
-    Cone actions;    ///< W
-    Cone solutions;  ///< W ∩ E_goal
-    [[nodiscard]] bool feasible() const { return !solutions.is_zero(); }
+/// A feature of the body polygon, numbered in the polygon's own order: edge i runs from vertex
+/// i to vertex i + 1.
+struct PushFeature {
+    enum class Kind { Edge, Vertex };
+    Kind kind = Kind::Edge;
+    std::size_t index = 0;
+    Vec2 from = Vec2::Zero();  ///< an edge's first vertex, or the vertex
+    Vec2 to = Vec2::Zero();    ///< an edge's second vertex, or the vertex again
+    /// An edge's unit inward normal; for a vertex the unit bisector of its two edges' normals.
+    Vec2 normal = Vec2::Zero();
+    /// A vertex where the polygon turns against its orientation (a notch).
+    bool reflex = false;
+    /// "edge 3" or "vertex 3".
+    [[nodiscard]] std::string name() const;
 };
 
-/// Every edge of the body polygon with each slip l, f, r, pushed with finger friction mu;
-/// interference with obstacles is ignored (as in the paper). Throws std::invalid_argument if the
-/// scene has no body polygon or mu < 0.
-[[nodiscard]] std::vector<PushCase> plan_push_edges(const Scene& scene, const ModeForces& goal, double mu);
+/// How a pushing case turned out.
+enum class PushVerdict {
+    Feasible,    ///< a push of W lies in the interior of E_goal, where the finger can reach
+    Boundary,    ///< W ∩ E_goal is not {0} but lies on the boundary of E_goal: a knife edge
+    Blocked,     ///< feasible, but only where obstacles leave the finger no room
+    Infeasible,  ///< W ∩ E_goal = {0}
+    Reflex,      ///< slipping at a notch: the finger leaves one of its edges (see the edge cases)
+};
+
+/// "feasible", "boundary", "blocked", "no" or "reflex".
+[[nodiscard]] const char* to_string(PushVerdict v);
+
+/// A single push: a unit force and the point of the feature where the finger applies it.
+struct Push {
+    Vec2 point = Vec2::Zero();
+    Vec2 direction = Vec2::Zero();
+    [[nodiscard]] Vec3 wrench() const;
+};
+
+/// A part of a case: the finger on a stretch from-to of the feature (a vertex: one point) with
+/// a cone of forces; W is the union of the parts' `actions`.
+struct PushPiece {
+    Vec2 from = Vec2::Zero();
+    Vec2 to = Vec2::Zero();
+    Cone actions;    ///< W on this part
+    Cone solutions;  ///< W ∩ E_goal on this part
+    /// The solutions meet the interior of E_goal, and the representative push lies in it
+    /// exactly (as doubles), at a point where the finger is free.
+    bool robust = false;
+    /// When the solutions meet the interior of E_goal: the mean of their extreme unit forces.
+    std::optional<Push> representative;
+};
+
+/// Force directions counter-clockwise from `from` to `to` (radians from +x, from in [-pi, pi),
+/// to - from in [0, 2 pi)).
+struct DirectionRange {
+    double from = 0.0;
+    double to = 0.0;
+};
+
+/// One pushing case: a feature and a slip.
+struct PushCase {
+    PushFeature feature;
+    char slip = 'f';
+    /// The parts of the feature the case was solved on: the whole feature, or its parts free of
+    /// obstacles; a vertex whose arc of forces is pi or more wide has two parts.
+    std::vector<PushPiece> pieces;
+    PushVerdict verdict = PushVerdict::Infeasible;
+    /// "none", "part" or "all": how much of the feature lies in obstacles (interference not
+    /// ignored), or "ignored".
+    std::string blocked = "ignored";
+    /// Where the finger may touch, as segments of the feature (a vertex: from == to), and the
+    /// range of push directions. For a feasible case they describe the reachable robust parts;
+    /// for a boundary or blocked case the solutions there are, reachable or not. Each segment
+    /// and the range are the extents of the solution set (a touch point and a direction are
+    /// not independent: docs/planning.md).
+    std::vector<std::pair<Vec2, Vec2>> touch;
+    std::optional<DirectionRange> directions;
+    /// A representative solution, exactly in the interior of E_goal for feasible cases: the
+    /// mean of the solution cone's extreme unit forces.
+    std::optional<Push> best;
+    [[nodiscard]] bool feasible() const { return verdict == PushVerdict::Feasible; }
+};
+
+/// Options of plan_push.
+struct PushOptions {
+    double mu = 0.5;  ///< the finger's friction coefficient (>= 0)
+    /// Ignore obstacles (as the paper does for Figure 6); otherwise a point of a feature lying
+    /// in a closed obstacle polygon cannot be touched by the (point) finger.
+    bool ignore_interference = false;
+};
+
+/// Every feature of the body polygon (its edges, then its vertices) with each slip l, f, r, in
+/// that order: 6 n cases for n vertices. Throws std::invalid_argument if the scene has no body
+/// polygon or mu is negative or not finite.
+[[nodiscard]] std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options = {});
+
+/// True when the cone c (a subset of e) contains a point of the interior of e: c lies in no
+/// facet of e. False whenever e is not full-dimensional. Exact.
+[[nodiscard]] bool meets_interior(const Cone& c, const Cone& e);
 
 }  // namespace momentlab

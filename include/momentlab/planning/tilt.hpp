@@ -25,12 +25,13 @@ struct AngleInterval {
     Vec2 to_direction = Vec2::Zero();
 };
 
-/// The tilts that produce a goal mode.
-struct TiltPlan {
-    Cone actions;    ///< W: the forces through the centre of mass
+/// The forces through one point that produce a goal mode: tilts (gravity through the centre of
+/// mass), or a spring through a compliance centre (comply.hpp).
+struct DirectionPlan {
+    Cone actions;    ///< W: the forces through the point
     Cone solutions;  ///< W ∩ E_goal
-    /// The gravity directions in W ∩ E_goal: none, one (possibly a single direction), two when
-    /// the set wraps through pi, or [-pi, pi] when every tilt works.
+    /// The force directions in W ∩ E_goal: none, one (possibly a single direction), two when
+    /// the set wraps through pi, or [-pi, pi] when every direction works.
     std::vector<AngleInterval> intervals;
     /// The direction farthest from every boundary (the middle of the widest arc) and that
     /// distance in radians (0 when the arc is a single direction; pi when every tilt works).
@@ -42,9 +43,13 @@ struct TiltPlan {
 /// The plane W of forces through the body's centre of mass (gravity, any direction).
 [[nodiscard]] Cone tilt_actions(const Body& body);
 
+/// The directions of the forces through `point` that lie in `goal_applied` (an E_i). The
+/// boundary directions belong to the intervals (E_i is closed).
+[[nodiscard]] DirectionPlan plan_directions_through(const Vec2& point, const Cone& goal_applied);
+
 /// The tilts of the body that produce `goal` (an entry of analyze(scene)). The boundary
 /// directions belong to the intervals (E_goal is closed): there the mode is shared with a
 /// neighbour. Throws std::invalid_argument if the scene has no body.
-[[nodiscard]] TiltPlan plan_tilt(const Scene& scene, const ModeForces& goal);
+[[nodiscard]] DirectionPlan plan_tilt(const Scene& scene, const ModeForces& goal);
 
 }  // namespace momentlab

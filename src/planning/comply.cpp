@@ -1,0 +1,33 @@
+#include "momentlab/planning/comply.hpp"
+
+namespace momentlab {
+
+const char* to_string(CentreVerdict v) {
+    switch (v) {
+        case CentreVerdict::Works: return "works";
+        case CentreVerdict::Boundary: return "boundary";
+        case CentreVerdict::Fails: return "fails";
+    }
+    return "?";
+}
+
+ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre) {
+    ComplyPlan plan;
+    plan.centre = centre;
+    plan.label = Labels(goal.applied).at(centre);
+    plan.directions = plan_directions_through(centre, goal.applied);
+    // W_c ∩ E_goal is exact; it is {0} exactly when c is strictly inside a labelled region, and it
+    // meets the interior of E_goal exactly when c is unlabelled and E_goal is full-dimensional.
+    if (!plan.directions.feasible()) {
+        plan.verdict = CentreVerdict::Fails;
+    } else if (plan.label == Label::None && goal.applied.dimension() == 3) {
+        plan.verdict = CentreVerdict::Works;
+    } else {
+        plan.verdict = CentreVerdict::Boundary;
+    }
+    return plan;
+}
+
+Labels compliance_labels(const ModeForces& goal) { return Labels(goal.applied); }
+
+}  // namespace momentlab

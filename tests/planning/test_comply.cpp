@@ -1,0 +1,93 @@
+// Compliance (Mason 1991, section 3): the spring directions through a centre and the centres
+// that work, for the block along the wall, against the conditions derived by hand.
+#include <gtest/gtest.h>
+
+#include "../common/examples.hpp"
+
+#include <cmath>
+
+#include "momentlab/planning/comply.hpp"
+
+namespace momentlab {
+namespace {
+
+// E_rr of the block along the wall is cone{g1, g2, g3}: g1 = (1, 0, -1/4), the body's mass
+// times its acceleration along +x, and g2 = (1/2, -1, 0), g3 = (1/2, -1, -1), the negated wall
+// forces at (0, 0) and (1, 0) (docs/planning.md). The moment of g about c = (x, y) is
+// y fx - x fy + tau: y - 1/4, x + y/2 and x + y/2 - 1. So the + region (all >= 0) is
+// {y >= 1/4, x + y/2 >= 1} and the - region (all <= 0) is {y <= 1/4, x + y/2 <= 0}.
+CentreVerdict by_hand(double x, double y) {
+    const double a = y - 0.25, b = x + y / 2, c = x + y / 2 - 1;
+    if ((a > 0 && c > 0) || (a < 0 && b < 0)) return CentreVerdict::Fails;        // strictly inside
+    if ((a >= 0 && c >= 0) || (a <= 0 && b <= 0)) return CentreVerdict::Boundary;  // on an edge
+    return CentreVerdict::Works;
+}
+
+// A force (cos t, sin t) through (x, y) is in E_rr iff, with tau = x fy - y fx, alpha = fx +
+// fy / 2 >= 0, -fy >= 0 and gamma = -tau - alpha / 4 in [0, -fy]; inside iff all are strict.
+bool strictly_in_e(double x, double y, double t) {
+    const double fx = std::cos(t), fy = std::sin(t), tau = x * fy - y * fx;
+    const double alpha = fx + fy / 2, gamma = -tau - alpha / 4;
+    return alpha > 1e-9 && -fy > 1e-9 && gamma > 1e-9 && gamma < -fy - 1e-9;
+}
+
+const ModeForces& rr_of(const std::vector<ModeForces>& analysis) {
+    for (const ModeForces& m : analysis) {
+        if (m.mode.letters == "rr") return m;
+    }
+    throw std::logic_error("no rr");
+}
+
+TEST(Comply, CentresOnAnEighthGridGetTheVerdictDerivedByHand) {
+    const Scene scene = testing::example_scene("figure-3-block-along-wall.json");
+    const auto analysis = analyze(scene);
+    const ModeForces& rr = rr_of(analysis);
+    int counts[3] = {0, 0, 0};
+    for (int i = -16; i <= 24; ++i) {
+        for (int j = -16; j <= 16; ++j) {
+            const double x = i / 8.0, y = j / 8.0;
+            const ComplyPlan plan = plan_comply(rr, Vec2(x, y));
+            const CentreVerdict expected = by_hand(x, y);
+            EXPECT_EQ(plan.verdict, expected) << x << ", " << y;
+            ++counts[static_cast<int>(expected)];
+            // Sampled directions strictly inside E_rr lie in the intervals, and exist only where
+            // the centre works.
+            bool any = false;
+            for (int k = 0; k < 720; ++k) {
+                const double t = -M_PI + (k + 0.5) * M_PI / 360;
+                if (!strictly_in_e(x, y, t)) continue;
+                any = true;
+                bool inside = false;
+                for (const AngleInterval& iv : plan.directions.intervals) inside = inside || (iv.from <= t && t <= iv.to);
+                EXPECT_TRUE(inside) << x << ", " << y << " direction " << t;
+            }
+            if (any) {
+                EXPECT_EQ(plan.verdict, CentreVerdict::Works) << x << ", " << y;
+            }
+            if (plan.verdict == CentreVerdict::Works) {
+                EXPECT_TRUE(strictly_in_e(x, y, plan.directions.best)) << x << ", " << y;
+            }
+        }
+    }
+    EXPECT_GT(counts[0], 100);  // works
+    EXPECT_GT(counts[1], 20);   // boundary
+    EXPECT_GT(counts[2], 100);  // fails
+}
+
+// At the outboard trailing corner (0, 1/2) the spring directions are those of a finger on that
+// vertex: from -atan 2 to -atan(2/7) (docs/planning.md); at the centre of mass, the tilts.
+TEST(Comply, DirectionsAtTheCornerAndAtTheCentreOfMass) {
+    const Scene scene = testing::example_scene("figure-3-block-along-wall.json");
+    const auto analysis = analyze(scene);
+    const ComplyPlan corner = plan_comply(rr_of(analysis), Vec2(0, 0.5));
+    ASSERT_EQ(corner.directions.intervals.size(), 1u);
+    EXPECT_NEAR(corner.directions.intervals[0].from, -std::atan(2.0), 1e-15);
+    EXPECT_NEAR(corner.directions.intervals[0].to, -std::atan(2.0 / 7.0), 1e-15);
+    const ComplyPlan com = plan_comply(rr_of(analysis), Vec2(0.5, 0.25));
+    ASSERT_EQ(com.directions.intervals.size(), 1u);
+    EXPECT_NEAR(com.directions.intervals[0].from, -std::atan(2.0), 1e-15);
+    EXPECT_EQ(com.directions.intervals[0].to, 0.0);
+}
+
+}  // namespace
+}  // namespace momentlab
