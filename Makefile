@@ -7,7 +7,7 @@ JOBS ?= 2
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
 APT_PACKAGES := g++ cmake make libeigen3-dev libgmp-dev nlohmann-json3-dev libcli11-dev \
-                libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev libcairo2-dev pkg-config \
+                libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev libcairo2-dev pkg-config libbox2d-dev \
                 clang libclang-rt-14-dev
 SAN_BUILD := build/asan
 FUZZ_BUILD := build/fuzz

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The main job on the bundled examples: moment labels of the paper's Figure 1 and 2 force sets
 # (Mason 1991), then the contact problem: every mode of the bundled scenes with its sets, and
-# which mode an applied wrench produces; last, the paper's figures drawn from these files into
-# OUT (default: out/).
+# which mode an applied wrench produces; then planning by tilting, pushing and compliance; last,
+# the paper's figures drawn from these files into OUT (default: out/).
 set -euo pipefail
 bin=${1:?usage: demo.sh path/to/momentlab [OUT]}
 out=${2:-out}
@@ -26,6 +26,11 @@ show "... pushed with 20 N along its base" query "$here/block-on-table.json" --w
 show "... pushed with 20 N near its top" query "$here/block-on-table.json" --wrench 20 -9.81 -14.705
 show "A rod wedged in a corner (mu = 2): every mode" analyze "$here/rod-in-corner.json"
 show "... a wrench that can both jam it (ff) and throw it off (ss): Painleve-style ambiguity" query "$here/rod-in-corner.json" --wrench 19 16 -2
+
+# Planning (the paper's section 3): reaching the goal rr (slide along the wall, no turning).
+show "Tilting the block along the wall: which gravity directions slide it right (rr)" plan tilt "$here/figure-3-block-along-wall.json" --goal rr
+show "Pushing it: 4 edges + 4 vertices x 3 finger slips = 24 cases (the paper finds 4)" plan push "$here/figure-3-block-along-wall.json" --goal rr
+show "A spring through a compliance centre at its outboard trailing corner" plan comply "$here/figure-3-block-along-wall.json" --goal rr --centre 0 0.5
 
 # Many questions at once (a planner's use): one wrench per line in, one JSON answer per line out.
 wrenches=$(mktemp)
@@ -68,6 +73,10 @@ figure figure-5 "Figure 5: tilting the block along the wall (goal rr)" \
     plan tilt "$here/figure-3-block-along-wall.json" --goal rr
 figure figure-6 "Figure 6: pushing the trailing edge, finger slip l (goal rr)" \
     plan push "$here/figure-3-block-along-wall.json" --goal rr --edge 3 --slip l
+figure push-vertex "Pushing the outboard trailing vertex, finger stuck (goal rr)" \
+    plan push "$here/figure-3-block-along-wall.json" --goal rr --vertex 3 --slip f
+figure comply "A compliance centre at (0, 0.5) (goal rr)" \
+    plan comply "$here/figure-3-block-along-wall.json" --goal rr --centre 0 0.5
 figure rod-in-corner-modes "A rod in a corner: every contact mode" draw "$here/rod-in-corner.json" --what modes
 echo "   pictures written to $out/:"
 ls "$out" | sed 's/^/     /'
