@@ -6,6 +6,8 @@
 #include "../physics/box2d_sim.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <sstream>
 
 #include "momentlab/planning/comply.hpp"
 #include "momentlab/planning/push.hpp"
@@ -130,6 +132,32 @@ TEST(Box2d, ComplianceCentres) {
     for (int k = 0; k < 36; ++k) {
         const double angle = -M_PI + (k + 0.5) * M_PI / 18;
         EXPECT_NE(physics::simulate(scene, {kForce * unit(angle), Vec2(2, 1)}).mode, "rr") << angle;
+    }
+}
+
+// Gravity every 5 degrees on the bundled scenes: where query gives one mode, Box2D shows it,
+// except near mode boundaries (the sliding speed grows from 0 there). Prints the counts.
+TEST(Box2d, GravitySweepAgreesWithQuery) {
+    for (const char* name : {"figure-3-block-along-wall.json", "figure-4-peg-in-hole.json", "rod-in-corner.json"}) {
+        const Scene scene = testing::example_scene(name);
+        const auto analysis = analyze(scene);
+        int unique = 0, agree = 0;
+        std::ostringstream disagreements;
+        for (int k = 0; k < 72; ++k) {
+            const double angle = -M_PI + k * M_PI / 36;
+            const QueryResult q = query(analysis, wrench_at(scene.body->com, unit(angle)));
+            if (q.verdict != Verdict::Unique) continue;
+            ++unique;
+            const std::string box2d = gravity(scene, angle).mode, predicted = analysis[q.modes[0]].mode.letters;
+            if (box2d == predicted) {
+                ++agree;
+            } else {
+                disagreements << " " << k * 5 - 180 << "deg:" << predicted << "/" << box2d;
+            }
+        }
+        std::printf("%s: %d of %d unique answers agree with Box2D;%s\n", name, agree, unique, disagreements.str().c_str());
+        EXPECT_GE(unique, 60) << name;
+        EXPECT_LE(unique - agree, 4) << name << disagreements.str();
     }
 }
 
