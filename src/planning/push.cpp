@@ -241,6 +241,44 @@ void describe(PushCase& c, const std::vector<const PushPiece*>& chosen) {
                                                                  : representative(f, chosen.front()->solutions);
 }
 
+// One case: solved on the whole feature (its verdict: feasible, boundary or no), then, when
+// obstacles cover part of it and the case is feasible, again on the free parts only.
+PushCase solve_case(const PushFeature& f, const Vec2& cw, const Vec2& ccw, char slip, double mu,
+                    const std::optional<FreeParts>& free, const Cone& goal, const std::vector<Polygon>& obstacles) {
+    PushCase c;
+    c.feature = f;
+    c.slip = slip;
+    if (f.reflex && slip != 'f') {
+        c.verdict = PushVerdict::Reflex;
+        return c;
+    }
+    const std::vector<std::pair<double, double>> whole = {{0.0, f.kind == PushFeature::Kind::Edge ? 1.0 : 0.0}};
+    c.pieces = solve_pieces(f, cw, ccw, slip, mu, whole, goal, nullptr);
+    const auto has_solutions = [](const PushPiece& p) { return !p.solutions.is_zero(); };
+    const auto robust = [](const PushPiece& p) { return p.robust; };
+    const bool robust_anywhere = std::any_of(c.pieces.begin(), c.pieces.end(), robust);
+    c.verdict = robust_anywhere                                                    ? PushVerdict::Feasible
+                : std::any_of(c.pieces.begin(), c.pieces.end(), has_solutions) ? PushVerdict::Boundary
+                                                                                : PushVerdict::Infeasible;
+    if (free) {
+        c.blocked = free->parts.empty() ? "all" : free->all_free ? "none" : "part";
+        if (robust_anywhere && !free->all_free) {
+            auto reachable = solve_pieces(f, cw, ccw, slip, mu, free->parts, goal, &obstacles);
+            if (std::any_of(reachable.begin(), reachable.end(), robust)) {
+                c.pieces = std::move(reachable);
+            } else {
+                c.verdict = PushVerdict::Blocked;  // described by the whole feature's solutions
+            }
+        }
+    }
+    std::vector<const PushPiece*> shown;
+    for (const PushPiece& p : c.pieces) {
+        if (c.verdict == PushVerdict::Feasible ? p.robust : has_solutions(p)) shown.push_back(&p);
+    }
+    describe(c, shown);
+    return c;
+}
+
 }  // namespace
 
 std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options) {
@@ -274,42 +312,11 @@ std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, cons
                 const Vec2 bisector = (n_in + n_out).normalized();
                 f = {PushFeature::Kind::Vertex, i, poly[i], poly[i], bisector, reflex};
             }
+            // The parts a finger can reach, once per feature (not when interference is ignored).
+            const std::optional<FreeParts> free =
+                options.ignore_interference ? std::nullopt : std::optional(free_parts(f.from, f.to, scene.obstacles));
             for (char slip : {'l', 'f', 'r'}) {
-                PushCase c;
-                c.feature = f;
-                c.slip = slip;
-                if (f.reflex && slip != 'f') {
-                    c.verdict = PushVerdict::Reflex;
-                    cases.push_back(std::move(c));
-                    continue;
-                }
-                const std::vector<std::pair<double, double>> whole = {{0.0, f.kind == PushFeature::Kind::Edge ? 1.0 : 0.0}};
-                c.pieces = solve_pieces(f, cw, ccw_normal, slip, options.mu, whole, goal.applied, nullptr);
-                const auto has_solutions = [](const PushPiece& p) { return !p.solutions.is_zero(); };
-                const auto robust = [](const PushPiece& p) { return p.robust; };
-                const bool robust_anywhere = std::any_of(c.pieces.begin(), c.pieces.end(), robust);
-                c.verdict = robust_anywhere ? PushVerdict::Feasible
-                            : std::any_of(c.pieces.begin(), c.pieces.end(), has_solutions) ? PushVerdict::Boundary
-                                                                                            : PushVerdict::Infeasible;
-                if (!options.ignore_interference) {
-                    const FreeParts free = free_parts(f.from, f.to, scene.obstacles);
-                    c.blocked = free.parts.empty() ? "all" : free.all_free ? "none" : "part";
-                    if (robust_anywhere && !free.all_free) {
-                        auto reachable =
-                            solve_pieces(f, cw, ccw_normal, slip, options.mu, free.parts, goal.applied, &scene.obstacles);
-                        if (std::any_of(reachable.begin(), reachable.end(), robust)) {
-                            c.pieces = std::move(reachable);
-                        } else {
-                            c.verdict = PushVerdict::Blocked;  // described by the whole feature's solutions
-                        }
-                    }
-                }
-                std::vector<const PushPiece*> shown;
-                for (const PushPiece& p : c.pieces) {
-                    if (c.verdict == PushVerdict::Feasible ? p.robust : has_solutions(p)) shown.push_back(&p);
-                }
-                describe(c, shown);
-                cases.push_back(std::move(c));
+                cases.push_back(solve_case(f, cw, ccw_normal, slip, options.mu, free, goal.applied, scene.obstacles));
             }
         }
     }
