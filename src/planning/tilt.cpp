@@ -32,8 +32,6 @@ void add_arc(std::vector<AngleInterval>& out, const Vec2& a, const Vec2& b, bool
 
 }  // namespace
 
-Cone tilt_actions(const Body& body) { return forces_through_point(body.com); }
-
 DirectionPlan plan_tilt(const Scene& scene, const ModeForces& goal) {
     if (!scene.body) throw std::invalid_argument("plan_tilt: the scene has no body");
     return plan_directions_through(scene.body->com, goal.applied);

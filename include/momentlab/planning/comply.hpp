@@ -39,7 +39,8 @@ struct ComplyPlan {
 };
 
 /// The spring directions through `centre` that produce `goal`. The verdict comes from the exact
-/// label of the centre; a centre whose label is + or - but lies on its region's boundary is a
+/// solution cone W_c ∩ E_goal ({0}: fails; meeting the interior of E_goal: works), which agrees
+/// with the exact label of the centre: a centre labelled + or - on its region's boundary is a
 /// Boundary case (some force of E_goal passes through it).
 [[nodiscard]] ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre);
 

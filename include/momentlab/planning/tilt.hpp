@@ -40,9 +40,6 @@ struct DirectionPlan {
     [[nodiscard]] bool feasible() const { return !intervals.empty(); }
 };
 
-/// The plane W of forces through the body's centre of mass (gravity, any direction).
-[[nodiscard]] Cone tilt_actions(const Body& body);
-
 /// The directions of the forces through `point` that lie in `goal_applied` (an E_i). The
 /// boundary directions belong to the intervals (E_i is closed).
 [[nodiscard]] DirectionPlan plan_directions_through(const Vec2& point, const Cone& goal_applied);
