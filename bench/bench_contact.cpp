@@ -4,18 +4,13 @@
 // (two friction directions per contact; docs/benchmarks.md). `make bench` prints the ratios.
 #include <benchmark/benchmark.h>
 
-#include <siconos/numerics/LCP_Solvers.h>
-#include <siconos/numerics/LinearComplementarityProblem.h>
-#include <siconos/numerics/NumericsMatrix.h>
-#include <siconos/numerics/SolverOptions.h>
-#include <siconos/numerics/lcp_cst.h>
-
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <random>
 #include <vector>
 
+#include "coulomb_lcp.hpp"
 #include "momentlab/mechanics/dynamics.hpp"
 
 namespace {
@@ -109,51 +104,19 @@ void BM_query_per_mode(benchmark::State& state) {
 }
 BENCHMARK(BM_query_per_mode)->DenseRange(2, 8, 2);
 
-// The same question as an LCP: z = (lambda_n, lambda_+, lambda_-, sigma), size 4n,
-//   w_n = N' a >= 0 _|_ lambda_n,   w_+ = sigma + T' a >= 0 _|_ lambda_+,
-//   w_- = sigma - T' a >= 0 _|_ lambda_-,   w_s = mu lambda_n - lambda_+ - lambda_- >= 0 _|_ sigma,
-// with a = M^-1 (e + sum_j lambda_n N_j + (lambda_+ - lambda_-) T_j).
+// The same question as the standard acceleration-level planar Coulomb LCP (4n unknowns; written
+// out in docs/validation.md), solved by Siconos' lexicographic Lemke (validation/coulomb_lcp.hpp).
 void BM_lemke(benchmark::State& state) {
     std::mt19937_64 rng(7 + static_cast<std::uint64_t>(state.range(0)));
     const Scene s = random_scene(static_cast<int>(state.range(0)), rng);
     const auto w = random_wrenches(rng);
-    const int n = static_cast<int>(s.contacts.size()), size = 4 * n;
-    const Mat3 minv = inertia_at_origin(*s.body).inverse();
-    Eigen::MatrixXd d(3, 3 * n);  // wrench columns: N_j, T_j, -T_j
-    for (int j = 0; j < n; ++j) {
-        d.col(j) = s.contacts[static_cast<std::size_t>(j)].normal_wrench();
-        d.col(n + j) = s.contacts[static_cast<std::size_t>(j)].tangent_wrench();
-        d.col(2 * n + j) = -d.col(n + j);
-    }
-    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(size, size);
-    m.topLeftCorner(3 * n, 3 * n) = d.transpose() * minv * d;
-    for (int j = 0; j < n; ++j) {
-        m(n + j, 3 * n + j) = 1;
-        m(2 * n + j, 3 * n + j) = 1;
-        m(3 * n + j, j) = s.contacts[static_cast<std::size_t>(j)].mu;
-        m(3 * n + j, n + j) = -1;
-        m(3 * n + j, 2 * n + j) = -1;
-    }
-    NumericsMatrix* nm = NM_create(NM_DENSE, size, size);
-    for (int c = 0; c < size; ++c) {
-        for (int r = 0; r < size; ++r) nm->matrix0[c * size + r] = m(r, c);  // column-major
-    }
-    std::vector<double> q(static_cast<std::size_t>(size), 0.0), z(q), ww(q);
-    LinearComplementarityProblem problem{size, nm, q.data()};
-    SolverOptions* options = solver_options_create(SICONOS_LCP_LEMKE);
+    validation::CoulombLcp lcp(s);
+    validation::LcpSolution solution;
     std::size_t i = 0;
     int failures = 0;
-    for (auto _ : state) {
-        const Eigen::VectorXd qe = d.transpose() * minv * w[i++ & 1023];
-        for (int k = 0; k < 3 * n; ++k) q[static_cast<std::size_t>(k)] = qe(k);
-        int info = 0;
-        lcp_lexicolemke(&problem, z.data(), ww.data(), &info, options);
-        failures += info != 0;
-    }
+    for (auto _ : state) failures += !lcp.lemke(w[i++ & 1023], solution);
     state.SetItemsProcessed(state.iterations());
     state.counters["failures"] = failures;
-    solver_options_delete(options);
-    NM_free(nm);
 }
 BENCHMARK(BM_lemke)->DenseRange(2, 8, 2);
 

@@ -34,6 +34,10 @@ SimResult simulate(const Scene& scene, const Action& action, const SimOptions& o
     }
     b2World world(b2Vec2(0.0f, 0.0f));
     world.SetAllowSleeping(false);
+    // No continuous collision: the body moves millimetres, so nothing can tunnel, and Box2D
+    // 2.4.1's time-of-impact code aborts on an assertion for some resting scenes
+    // (b2SeparationFunction::Initialize, "0 < count && count < 3"; found by validate_box2d).
+    world.SetContinuousPhysics(false);
 
     b2BodyDef ground_def;
     b2Body* ground = world.CreateBody(&ground_def);
@@ -47,7 +51,6 @@ SimResult simulate(const Scene& scene, const Action& action, const SimOptions& o
     }
     b2BodyDef body_def;
     body_def.type = b2_dynamicBody;
-    body_def.bullet = true;
     b2Body* body = world.CreateBody(&body_def);
     {
         const b2PolygonShape shape = shape_of(scene.body->polygon);

@@ -46,7 +46,7 @@ struct SimResult {
 /// Simulates `scene` (body polygon and obstacles convex, at most 8 vertices; every contact's mu
 /// the same) under `action`. Box2D polygons get radius 0, so that the contact surfaces are the
 /// scene's (the default skin of b2_polygonRadius would hold the body 2 cm off the wall);
-/// sleeping is off; both fixtures get the contacts' mu, so Box2D's sqrt(mu_a mu_b) mixing gives
+/// sleeping and continuous collision are off; both fixtures get the contacts' mu, so Box2D's sqrt(mu_a mu_b) mixing gives
 /// mu. Throws std::invalid_argument for a scene it cannot represent.
 [[nodiscard]] SimResult simulate(const Scene& scene, const Action& action, const SimOptions& options = {});
 
