@@ -86,8 +86,8 @@ large-inputs: build
 
 # Agreement with engines nobody here wrote (Siconos, Box2D, cddlib; docs/validation.md). `make
 # test` runs the validators at the sizes of `validate`; both targets rewrite their table in
-# docs/validation.md. validate-long: 10x the LCP pairs with enumeration up to 6 contacts, 20x
-# the Box2D scenes, 20x the cones (about half an hour).
+# docs/validation.md. validate-long: 5x the LCP pairs with enumeration up to 6 contacts, 20x
+# the Box2D scenes, 20x the cones (about ten minutes).
 validate: build
 	bash tools/validation_table.sh standard $(BUILD)
 

@@ -11,7 +11,7 @@ mkdir -p "$out"
 export OPENBLAS_NUM_THREADS=1
 
 if [ "$run" = long ]; then
-    lcp=(--pairs 100000 --enumerate 2:1,3:1,4:10,5:200,6:5000)
+    lcp=(--pairs 50000 --enumerate 2:1,3:1,4:10,5:500,6:10000)
     box2d=(--scenes 20000 --forces 5)
     cdd=(--cones 200000)
 else
