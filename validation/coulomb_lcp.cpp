@@ -78,23 +78,15 @@ void CoulombLcp::set_wrench(const Vec3& e) {
     q_.head(3 * contacts_) = d_.transpose() * (minv_ * e);
 }
 
-bool CoulombLcp::lemke(const Vec3& e, LcpSolution& out) {
+bool CoulombLcp::pivot(const Vec3& e, LcpSolution& out, bool general) {
     set_wrench(e);
     out.z.setZero(size_);  // no allocation when reused
     out.w.setZero(size_);
     out.basis = -1;
     int info = 0;
-    lcp_lexicolemke(&siconos_->problem, out.z.data(), out.w.data(), &info, siconos_->lemke);
-    return info == 0;
-}
-
-bool CoulombLcp::lemke_pivot(const Vec3& e, LcpSolution& out) {
-    set_wrench(e);
-    out.z.setZero(size_);  // no allocation when reused
-    out.w.setZero(size_);
-    out.basis = -1;
-    int info = 0;
-    lcp_pivot(&siconos_->problem, out.z.data(), out.w.data(), &info, siconos_->pivot);
+    Siconos& s = *siconos_;
+    if (general) lcp_pivot(&s.problem, out.z.data(), out.w.data(), &info, s.pivot);
+    else lcp_lexicolemke(&s.problem, out.z.data(), out.w.data(), &info, s.lemke);
     return info == 0;
 }
 

@@ -47,11 +47,11 @@ public:
 
     /// Lexicographic Lemke (Siconos lcp_lexicolemke) for the applied wrench e: the solution, or
     /// false when Lemke stops without one (a secondary ray: the LCP may have no solution).
-    bool lemke(const Vec3& e, LcpSolution& out);
+    bool lemke(const Vec3& e, LcpSolution& out) { return pivot(e, out, false); }
 
     /// Lemke's rule through Siconos' general pivoting code (lcp_pivot with
     /// SICONOS_LCP_PIVOT_LEMKE), which has pivot tolerances: the same contract as lemke().
-    bool lemke_pivot(const Vec3& e, LcpSolution& out);
+    bool lemke_pivot(const Vec3& e, LcpSolution& out) { return pivot(e, out, true); }
 
     /// Siconos lcp_enum: one pass in multiple-solutions mode (the count), then every solution,
     /// resuming the enumeration after each one (SICONOS_LCP_IPARAM_ENUM_SEED). `tolerance` is
@@ -77,6 +77,8 @@ public:
 private:
     struct Siconos;
     void set_wrench(const Vec3& e);
+    // Lemke's method: lcp_lexicolemke, or lcp_pivot with Lemke's rule when `general`.
+    bool pivot(const Vec3& e, LcpSolution& out, bool general);
 
     int contacts_ = 0;
     int size_ = 0;

@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <random>
 #include <set>
 #include <sstream>
 
@@ -18,22 +17,14 @@
 #include "momentlab/mechanics/dynamics.hpp"
 #include "momentlab/mechanics/find_contacts.hpp"
 #include "physics/box2d_sim.hpp"
+#include "common/random_inputs.hpp"
 #include "report.hpp"
 
 namespace {
 
 using namespace momentlab;
 
-class Random {
-public:
-    explicit Random(std::uint64_t seed) : rng_(seed) {}
-    double unit() { return static_cast<double>(rng_() >> 11) * 0x1p-53; }
-    double uniform(double lo, double hi) { return lo + (hi - lo) * unit(); }
-    int integer(int lo, int hi) { return lo + static_cast<int>(rng_() % static_cast<std::uint64_t>(hi - lo + 1)); }
-
-private:
-    std::mt19937_64 rng_;
-};
+using testing::Random;  // tests/common/random_inputs.hpp
 
 Vec2 direction(double angle) { return Vec2(std::cos(angle), std::sin(angle)); }
 
