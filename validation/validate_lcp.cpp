@@ -17,7 +17,7 @@
 #include <sstream>
 
 #include "coulomb_lcp.hpp"
-#include "oracle/lp_oracle.hpp"
+#include "common/mode_oracle.hpp"
 #include "momentlab/mechanics/dynamics.hpp"
 #include "common/random_inputs.hpp"
 #include "report.hpp"
@@ -127,23 +127,6 @@ double margin(const std::vector<ModeForces>& analysis, const Vec3& e) {
         }
     }
     return m;
-}
-
-// Whether e is in the closed E of `letters`, by one exact rational LP (cddlib, GMP; sharing no
-// code with momentlab): a twist in the mode's closure and contact forces in its friction sets.
-bool exact_lp_says(const Scene& s, const std::string& letters, const Vec3& e) {
-    std::vector<Vec3> n, t;
-    std::vector<std::vector<Vec3>> generators(s.contacts.size());
-    for (std::size_t j = 0; j < s.contacts.size(); ++j) {
-        const Contact& c = s.contacts[j];
-        n.push_back(c.normal_wrench());
-        t.push_back(c.tangent_wrench());
-        const Vec2 nv = c.normal, tv = c.tangent();
-        if (letters[j] == 'f') generators[j] = {wrench_at(c.point, nv + c.mu * tv), wrench_at(c.point, nv - c.mu * tv)};
-        if (letters[j] == 'r') generators[j] = {wrench_at(c.point, nv - c.mu * tv)};
-        if (letters[j] == 'l') generators[j] = {wrench_at(c.point, nv + c.mu * tv)};
-    }
-    return oracle::applied_in_mode(inertia_at_origin(*s.body), n, t, generators, letters, e);
 }
 
 std::string describe(const Scene& s, const Vec3& e) {
@@ -286,7 +269,7 @@ int main(int argc, char** argv) {
             for (const std::string& m : expected) {
                 if (found.count(m)) continue;
                 ++t.missed;
-                if (exact_lp_says(scene, m, e)) ++t.missed_confirmed;
+                if (testing::exact_lp_applied_in_mode(scene, inertia_at_origin(*scene.body), m, e)) ++t.missed_confirmed;
                 else fail(i, scene, e, "query's mode " + m + " is neither enumerated nor confirmed by the exact LP");
             }
             if (verbose && found != expected) {

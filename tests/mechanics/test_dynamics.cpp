@@ -7,7 +7,7 @@
 #include <set>
 
 #include "../common/random_inputs.hpp"
-#include "../oracle/lp_oracle.hpp"
+#include "../common/mode_oracle.hpp"
 #include "momentlab/mechanics/dynamics.hpp"
 
 namespace momentlab {
@@ -75,25 +75,11 @@ TEST(Dynamics, QueryAgreesWithExactLpOracle) {
         }
         const auto a = analyze(scene);
         const Mat3 m = inertia_at_origin(*scene.body);
-        std::vector<Vec3> nn, tt;
-        for (const Contact& c : scene.contacts) {
-            nn.push_back(c.normal_wrench());
-            tt.push_back(c.tangent_wrench());
-        }
         for (int w = 0; w < 90; ++w) {
             const Vec3 e = rnd.vec3(10.0);
             std::set<std::string> expected;
             for (const ModeForces& mf : a) {
-                std::vector<std::vector<Vec3>> gens(scene.contacts.size());
-                for (std::size_t j = 0; j < scene.contacts.size(); ++j) {
-                    const Contact& c = scene.contacts[j];
-                    const Vec2 nv = c.normal, tv = c.tangent();
-                    const char l = mf.mode.letters[j];
-                    if (l == 'f') gens[j] = {force_at(c.point, nv + c.mu * tv), force_at(c.point, nv - c.mu * tv)};
-                    if (l == 'r') gens[j] = {force_at(c.point, nv - c.mu_kinetic * tv)};
-                    if (l == 'l') gens[j] = {force_at(c.point, nv + c.mu_kinetic * tv)};
-                }
-                if (oracle::applied_in_mode(m, nn, tt, gens, mf.mode.letters, e)) expected.insert(mf.mode.letters);
+                if (testing::exact_lp_applied_in_mode(scene, m, mf.mode.letters, e)) expected.insert(mf.mode.letters);
             }
             const auto ours = answer(a, e);
             const QueryIndex index(a);
