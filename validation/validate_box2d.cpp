@@ -16,8 +16,8 @@
 #include "momentlab/geometry/polygon.hpp"
 #include "momentlab/mechanics/dynamics.hpp"
 #include "momentlab/mechanics/find_contacts.hpp"
-#include "physics/box2d_sim.hpp"
-#include "common/random_inputs.hpp"
+#include "box2d_sim.hpp"
+#include "random_inputs.hpp"
 #include "report.hpp"
 
 namespace {

@@ -1,12 +1,12 @@
 #include "momentlab/core/predicates.hpp"
 
-#include <gmpxx.h>
-
 #include <array>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+
+#include "momentlab/core/dyadic.hpp"
 
 namespace momentlab {
 namespace {
@@ -95,7 +95,7 @@ inline bool in_expansion_range(const Vec3& v) {
     return in_expansion_range(v.x()) && in_expansion_range(v.y()) && in_expansion_range(v.z());
 }
 
-inline Sign sign_of(const mpq_class& q) { return sign_of_int(sgn(q)); }
+inline Dyadic d(double x) { return Dyadic(x); }
 
 }  // namespace
 
@@ -113,10 +113,8 @@ Sign dot_sign_exact(const Vec3& a, const Vec3& b) {
         e.add_product(a.z(), b.z());
         return e.sign();
     }
-    ++g_stats.gmp;
-    const mpq_class r = mpq_class(a.x()) * mpq_class(b.x()) + mpq_class(a.y()) * mpq_class(b.y()) +
-                        mpq_class(a.z()) * mpq_class(b.z());
-    return sign_of(r);
+    ++g_stats.dyadic;
+    return (d(a.x()) * d(b.x()) + d(a.y()) * d(b.y()) + d(a.z()) * d(b.z())).sign();
 }
 
 // The 2x2 minor x1*y2 - x2*y1 with error at most eps|m| + eps^2 (|x1 y2| + |x2 y1|): the
@@ -183,12 +181,11 @@ Sign det_sign_exact(const Vec3& a, const Vec3& b, const Vec3& c) {
         e.add_product(-a.z(), b.y(), c.x());
         return e.sign();
     }
-    ++g_stats.gmp;
-    const mpq_class ax(a.x()), ay(a.y()), az(a.z());
-    const mpq_class bx(b.x()), by(b.y()), bz(b.z());
-    const mpq_class cx(c.x()), cy(c.y()), cz(c.z());
-    const mpq_class r = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
-    return sign_of(r);
+    ++g_stats.dyadic;
+    const Dyadic ax(a.x()), ay(a.y()), az(a.z());
+    const Dyadic bx(b.x()), by(b.y()), bz(b.z());
+    const Dyadic cx(c.x()), cy(c.y()), cz(c.z());
+    return (ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx)).sign();
 }
 
 Sign minor_sign_exact(const Vec3& a, const Vec3& b, int i, int j) {
@@ -201,8 +198,8 @@ Sign minor_sign_exact(const Vec3& a, const Vec3& b, int i, int j) {
         e.add_product(-a[j], b[i]);
         return e.sign();
     }
-    ++g_stats.gmp;
-    return sign_of(mpq_class(a[i]) * mpq_class(b[j]) - mpq_class(a[j]) * mpq_class(b[i]));
+    ++g_stats.dyadic;
+    return (d(a[i]) * d(b[j]) - d(a[j]) * d(b[i])).sign();
 }
 
 }  // namespace detail

@@ -1,7 +1,5 @@
 #include "momentlab/geometry/cone.hpp"
 
-#include <gmpxx.h>
-
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -14,127 +12,6 @@
 #include "cone_build.hpp"
 
 namespace momentlab {
-namespace {
-
-// Scales v by a power of two (exact) so that its largest coordinate lies in [1, 2).
-Vec3 scaled_by_power_of_two(const Vec3& v) {
-    const double m = v.cwiseAbs().maxCoeff();
-    if (m == 0.0 || !std::isfinite(m)) return v;
-    int e = 0;
-    std::frexp(m, &e);
-    return Vec3(std::ldexp(v.x(), 1 - e), std::ldexp(v.y(), 1 - e), std::ldexp(v.z(), 1 - e));
-}
-
-// For display: integer vectors are divided by the gcd of their coordinates (exact), others are
-// left as they are unless far from 1, then scaled by a power of two. Neither changes the
-// direction.
-Vec3 readable(const Vec3& v) {
-    const double limit = 0x1p53;
-    bool integral = true;
-    for (int i = 0; i < 3; ++i) {
-        if (v[i] != std::floor(v[i]) || std::fabs(v[i]) >= limit) integral = false;
-    }
-    if (integral) {
-        long long g = 0;
-        for (int i = 0; i < 3; ++i) g = std::gcd(g, std::llabs(static_cast<long long>(v[i])));
-        if (g > 1) return v / static_cast<double>(g);
-        return v;
-    }
-    const double m = v.cwiseAbs().maxCoeff();
-    return m > 0x1p-64 && m < 0x1p64 ? v : scaled_by_power_of_two(v);
-}
-
-}  // namespace
-
-Rational3 to_rational(const Vec3& v) { return {mpq_class(v.x()), mpq_class(v.y()), mpq_class(v.z())}; }
-
-Rational3 ExactVector::rational() const {
-    if (!constructed_) return to_rational(value_);
-    const Rational3 a = to_rational(u_), b = to_rational(v_);
-    const mpq_class s(sign_);
-    return {s * (a[1] * b[2] - a[2] * b[1]), s * (a[2] * b[0] - a[0] * b[2]), s * (a[0] * b[1] - a[1] * b[0])};
-}
-
-ExactVector ExactVector::input(const Vec3& v) {
-    ExactVector e;
-    e.value_ = v;
-    return e;
-}
-
-ExactVector ExactVector::cross(const Vec3& u, const Vec3& v, int sign) {
-    ExactVector e;
-    e.constructed_ = true;
-    e.u_ = u;
-    e.v_ = v;
-    e.sign_ = sign >= 0 ? 1 : -1;
-    // The plain product is exact for small integers; if it overflows (or underflows to zero),
-    // scaling the factors first by powers of two keeps it finite for any finite input.
-    Vec3 raw = u.cross(v);
-    const double m = raw.cwiseAbs().maxCoeff();
-    if (!(m > 0x1p-900 && m < 0x1p900)) {
-        raw = scaled_by_power_of_two(u).cross(scaled_by_power_of_two(v));
-    }
-    e.value_ = readable(raw) * static_cast<double>(e.sign_);
-    return e;
-}
-
-Sign ExactVector::dot_sign(const Vec3& w) const {
-    if (!constructed_) return momentlab::dot_sign(value_, w);
-    return sign_of_int(sign_) * det_sign(u_, v_, w);
-}
-
-Sign ExactVector::dot_sign(const ExactVector& other) const {
-    if (!other.constructed_) return dot_sign(other.value_);
-    if (!constructed_) return other.dot_sign(value_);
-    auto q = [](const Vec3& a, const Vec3& b) -> mpq_class {
-        return mpq_class(a.x()) * mpq_class(b.x()) + mpq_class(a.y()) * mpq_class(b.y()) +
-               mpq_class(a.z()) * mpq_class(b.z());
-    };
-    const mpq_class value = q(u_, other.u_) * q(v_, other.v_) - q(u_, other.v_) * q(v_, other.u_);
-    return sign_of_int(sgn(value) * sign_ * other.sign_);
-}
-
-ExactVector::Filter ExactVector::filter() const {
-    // With u = 2^-53: a cross-product coordinate c~ = fl(fl(p) - fl(q)) is within (2u + u^2)
-    // (|p| + |q|) of c = p - q, and a three-term dot product adds gamma_3 sum |c~_k| |w_k|, so
-    // the error is below 6u sum_k B_k |w_k| with B_k = |p_k| + |q_k| (B_k = |a_k| for inputs).
-    // 8u leaves room for the rounding of beta and of beta * max|w|; the range limits keep every
-    // product far from overflow and underflow (docs/robustness.md).
-    Filter f{Vec3::Zero(), std::numeric_limits<double>::infinity()};
-    double b = 0;
-    if (!constructed_) {
-        f.approx = value_;
-        b = value_.cwiseAbs().sum();
-    } else {
-        const Vec3& p = u_;
-        const Vec3& q = v_;
-        f.approx = p.cross(q) * static_cast<double>(sign_);
-        b = std::abs(p.y() * q.z()) + std::abs(p.z() * q.y()) + std::abs(p.z() * q.x()) + std::abs(p.x() * q.z()) +
-            std::abs(p.x() * q.y()) + std::abs(p.y() * q.x());
-    }
-    if (b >= 0x1p-400 && b <= 0x1p400 && f.approx.allFinite()) f.bound = 0x1p-50 * b;
-    return f;
-}
-
-ExactVector ExactVector::negated() const {
-    ExactVector e = *this;
-    e.value_ = -value_;
-    e.sign_ = -sign_;
-    return e;
-}
-
-ExactVector ExactVector::signed_permuted(const Mat3& p) const {
-    ExactVector e = *this;
-    e.value_ = p * value_;
-    if (constructed_) {
-        // P (u x v) = det(P) (P u x P v) for orthogonal P.
-        e.u_ = p * u_;
-        e.v_ = p * v_;
-        e.sign_ = sign_ * (p.determinant() > 0 ? 1 : -1);
-    }
-    return e;
-}
-
 Incidence Incidence::transposed(std::size_t columns) const {
     std::vector<int> count(columns + 1, 0);
     for (int i : indices_) ++count[static_cast<std::size_t>(i) + 1];
@@ -161,6 +38,10 @@ Cone Cone::from_generators(std::span<const Vec3> generators) {
     }
     return ConeBuilder::build(generators);
 }
+
+Cone Cone::from_generators(std::span<const ExactVector> generators) { return ConeBuilder::build(generators); }
+
+Cone Cone::from_halfspaces(std::span<const ExactVector> normals) { return ConeBuilder::build(normals).dual(); }
 
 Cone Cone::from_generators(std::span<const Vec3> rays, std::span<const Vec3> lines) {
     std::vector<Vec3> all(rays.begin(), rays.end());
@@ -237,14 +118,18 @@ Cone Cone::signed_permuted(const Mat3& p) const {
 }
 
 Cone Cone::linear_image(const Mat3& m) const {
-    if (!m.allFinite() || det_sign(m.col(0), m.col(1), m.col(2)) == Sign::Zero) {
-        throw std::invalid_argument("Cone::linear_image: the matrix must be finite and invertible");
-    }
-    std::vector<Vec3> gens;
-    for (const ExactVector& r : rays_) gens.push_back(m * r.value());
+    if (!m.allFinite()) throw std::invalid_argument("Cone::linear_image: the matrix must be finite and invertible");
+    return linear_image(exact(m));
+}
+
+Cone Cone::linear_image(const ExactMatrix& m) const {
+    if (det(m[0], m[1], m[2]).is_zero()) throw std::invalid_argument("Cone::linear_image: the matrix must be invertible");
+    std::vector<ExactVector> gens;
+    gens.reserve(rays_.size() + 2 * lineality_.size());
+    for (const ExactVector& r : rays_) gens.push_back(r.transformed(m));
     for (const ExactVector& l : lineality_) {
-        gens.push_back(m * l.value());
-        gens.push_back(-(m * l.value()));
+        gens.push_back(l.transformed(m));
+        gens.push_back(gens.back().negated());
     }
     return from_generators(gens);
 }
@@ -298,12 +183,14 @@ Membership Cone::contains(const Vec3& w) const {
     // Pick at most three generators whose cone holds w, then solve for the coefficients.
     std::vector<Vec3> columns;
     if (dimension() == 3 && is_pointed()) {
+        const ExactVector exact_w = ExactVector::input(w);
         const std::size_t k = rays_.size();
         const Vec3& r0 = rays_[0].value();
         for (std::size_t i = 1; i + 1 < k; ++i) {
             const Vec3& a = rays_[i].value();
             const Vec3& b = rays_[i + 1].value();
-            if (det_sign(r0, a, w) != Sign::Negative && det_sign(r0, b, w) != Sign::Positive) {
+            if (det_sign(rays_[0], rays_[i], exact_w) != Sign::Negative &&
+                det_sign(rays_[0], rays_[i + 1], exact_w) != Sign::Positive) {
                 columns = {r0, a, b};
                 break;
             }
@@ -354,54 +241,64 @@ std::vector<Face> Cone::faces() const {
 }
 
 Cone Cone::face_cone(const Face& face) const {
-    std::vector<Vec3> gens;
-    for (int i : face.rays) gens.push_back(rays_[static_cast<std::size_t>(i)].value());
+    std::vector<ExactVector> gens;
+    for (int i : face.rays) gens.push_back(rays_[static_cast<std::size_t>(i)]);
     for (const ExactVector& v : lineality_) {
-        gens.push_back(v.value());
-        gens.push_back(-v.value());
+        gens.push_back(v);
+        gens.push_back(v.negated());
     }
     return from_generators(gens);
 }
 
+std::vector<ExactVector> Cone::generators() const {
+    std::vector<ExactVector> out(rays_.begin(), rays_.end());
+    for (const ExactVector& l : lineality_) {
+        out.push_back(l);
+        out.push_back(l.negated());
+    }
+    return out;
+}
+
+std::vector<ExactVector> Cone::halfspaces() const {
+    std::vector<ExactVector> out(facets_.begin(), facets_.end());
+    for (const ExactVector& e : equations_) {
+        out.push_back(e);
+        out.push_back(e.negated());
+    }
+    return out;
+}
+
 std::vector<Vec3> Cone::generator_values() const {
     std::vector<Vec3> out;
-    for (const ExactVector& r : rays_) out.push_back(r.value());
-    for (const ExactVector& l : lineality_) {
-        out.push_back(l.value());
-        out.push_back(-l.value());
-    }
+    for (const ExactVector& g : generators()) out.push_back(g.value());
     return out;
 }
 
 std::vector<Vec3> Cone::halfspace_values() const {
     std::vector<Vec3> out;
-    for (const ExactVector& f : facets_) out.push_back(f.value());
-    for (const ExactVector& e : equations_) {
-        out.push_back(e.value());
-        out.push_back(-e.value());
-    }
+    for (const ExactVector& h : halfspaces()) out.push_back(h.value());
     return out;
 }
 
 Cone sum(const Cone& f, const Cone& g) {
-    std::vector<Vec3> gens = f.generator_values();
-    const std::vector<Vec3> more = g.generator_values();
+    std::vector<ExactVector> gens = f.generators();
+    const std::vector<ExactVector> more = g.generators();
     gens.insert(gens.end(), more.begin(), more.end());
     return Cone::from_generators(gens);
 }
 
 Cone sum(std::span<const Cone> cones) {
-    std::vector<Vec3> gens;
+    std::vector<ExactVector> gens;
     for (const Cone& c : cones) {
-        const std::vector<Vec3> more = c.generator_values();
+        const std::vector<ExactVector> more = c.generators();
         gens.insert(gens.end(), more.begin(), more.end());
     }
     return Cone::from_generators(gens);
 }
 
 Cone intersection(const Cone& f, const Cone& g) {
-    std::vector<Vec3> normals = f.halfspace_values();
-    const std::vector<Vec3> more = g.halfspace_values();
+    std::vector<ExactVector> normals = f.halfspaces();
+    const std::vector<ExactVector> more = g.halfspaces();
     normals.insert(normals.end(), more.begin(), more.end());
     return Cone::from_halfspaces(normals);
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include "momentlab/geometry/cone.hpp"
 
@@ -16,6 +17,9 @@ struct ConePathStats {
 /// Builds the minimal double description of cone(generators) (private to the geometry layer).
 struct ConeBuilder {
     static Cone build(std::span<const Vec3> generators);
+    static Cone build(std::span<const ExactVector> generators);
+    static Cone assemble(std::vector<ExactVector> rays, std::vector<ExactVector> lineality,
+                         std::vector<ExactVector> facets, std::vector<ExactVector> equations, Incidence facet_rays);
     static ConePathStats& stats();
 };
 

@@ -18,18 +18,57 @@ void require_nonzero(const Vec2& v, const char* what) {
 
 }  // namespace
 
+ExactVector force_wrench(const Vec2& point, const Vec2& direction) {
+    return ExactVector::from_exact(wrench_through(exact(point), exact(direction)));
+}
+
+Exact2 friction_edge(const Exact2& n, double mu, bool left) {
+    const Dyadic m(left ? mu : -mu);
+    return {n[0] + m * n[1], n[1] - m * n[0]};  // n +- mu (n.y, -n.x)
+}
+
+Exact2 friction_edge(const Vec2& normal, double mu, bool left) { return friction_edge(exact(normal), mu, left); }
+
+std::array<ExactVector, 2> friction_cone_edges(const Vec2& point, const Vec2& normal, double mu) {
+    const Exact2 p = exact(point);
+    return {ExactVector::from_exact(wrench_through(p, friction_edge(normal, mu, true))),
+            ExactVector::from_exact(wrench_through(p, friction_edge(normal, mu, false)))};
+}
+
+Cone forces_across(const Vec2& a, const Vec2& b, const std::vector<Exact2>& directions) {
+    std::vector<ExactVector> gens;
+    Exact2 sum{};
+    for (const Exact2& d : directions) {
+        gens.push_back(ExactVector::from_exact({d[0], d[1], Dyadic()}));
+        sum = sum + d;
+    }
+    gens.push_back(ExactVector::input(Vec3::UnitZ()));  // every pure moment
+    gens.push_back(ExactVector::input(-Vec3::UnitZ()));
+    const Cone turning = Cone::from_generators(gens);
+    const Vec3 about_a(a.y(), -a.x(), 1.0), about_b(b.y(), -b.x(), 1.0);  // moment about a point
+    std::vector<Vec3> halfspaces;
+    if (a == b) {
+        halfspaces = {about_a, -about_a};
+    } else {
+        const Exact2 ab = exact(b) - exact(a);
+        const double sigma = cross2(ab, sum).sign() == Sign::Positive ? 1.0 : -1.0;
+        halfspaces = {sigma * about_a, -sigma * about_b};
+    }
+    return intersection(turning, Cone::from_halfspaces(halfspaces));
+}
+
 Cone force_ray(const Vec2& point, const Vec2& direction) {
     require_finite(point, "point");
     require_nonzero(direction, "direction");
-    const Vec3 g[] = {wrench_at(point, direction)};
+    const ExactVector g[] = {force_wrench(point, direction)};
     return Cone::from_generators(g);
 }
 
 Cone line_of_force(const Vec2& point, const Vec2& direction) {
     require_finite(point, "point");
     require_nonzero(direction, "direction");
-    const Vec3 w = wrench_at(point, direction);
-    const Vec3 g[] = {w, -w};
+    const ExactVector w = force_wrench(point, direction);
+    const ExactVector g[] = {w, w.negated()};
     return Cone::from_generators(g);
 }
 
@@ -46,7 +85,7 @@ Cone friction_cone(const Vec2& point, const Vec2& normal, double mu) {
     require_nonzero(normal, "normal");
     if (!(mu >= 0.0) || !std::isfinite(mu)) throw std::invalid_argument("mu must be finite and >= 0");
     const auto edges = friction_cone_edges(point, normal, mu);
-    return Cone::from_generators(edges);
+    return Cone::from_generators(std::span<const ExactVector>(edges));
 }
 
 Cone pure_moments(int sign) {

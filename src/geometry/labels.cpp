@@ -16,23 +16,37 @@ Mat3 points_to_functionals() {
 
 Mat3 functionals_to_points() { return points_to_functionals().transpose(); }
 
+// x / s rounded, without overflow in the parts (infinite beyond the double range).
+double ratio(const Dyadic& x, const Dyadic& s) {
+    if (x.is_zero()) return 0.0;
+    const double q = x.to_double_scaled(x.exponent()) / s.to_double_scaled(s.exponent());
+    const std::int64_t e = std::clamp<std::int64_t>(x.exponent() - s.exponent(), -100000, 100000);
+    return std::ldexp(q, static_cast<int>(e));
+}
+
 // The sheet s >= 0 of a cone of homogeneous points.
 Region sheet(const Cone& k_sheet) {
     Region r;
     for (const ExactVector& ray : k_sheet.rays()) {
-        const Vec3& v = ray.value();
         if (ray.dot_sign(Vec3::UnitZ()) == Sign::Positive) {
-            r.vertices_h.push_back(v);
-            r.vertices.emplace_back(v.x() / v.z(), v.y() / v.z());
+            const Exact3 v = ray.exact();
+            r.vertices_h.push_back(ray);
+            r.vertices.emplace_back(ratio(v[0], v[2]), ratio(v[1], v[2]));
         } else {
-            r.rays.emplace_back(v.x(), v.y());
+            r.rays_h.push_back(ray);
+            r.rays.emplace_back(ray.value().x(), ray.value().y());
         }
     }
-    for (const ExactVector& l : k_sheet.lineality()) r.lines.emplace_back(l.value().x(), l.value().y());
+    for (const ExactVector& l : k_sheet.lineality()) {
+        r.lines_dir_h.push_back(l);
+        r.lines.emplace_back(l.value().x(), l.value().y());
+    }
     r.is_empty = r.vertices_h.empty();
     if (r.is_empty) {
         r.rays.clear();
         r.lines.clear();
+        r.rays_h.clear();
+        r.lines_dir_h.clear();
         return r;
     }
     if (k_sheet.is_pointed() && k_sheet.dimension() == 3) {
@@ -153,15 +167,16 @@ Label Labels::at(const Vec2& point) const {
 }
 
 Cone Labels::forces_from_regions(const Region& plus, const Region& minus) {
-    std::vector<Vec3> gens;
+    std::vector<ExactVector> gens;
     for (const Region* r : {&plus, &minus}) {
         if (r->is_empty) continue;
-        const double s = r == &plus ? 1.0 : -1.0;
-        for (const Vec3& v : r->vertices_h) gens.push_back(s * v);
-        for (const Vec2& d : r->rays) gens.push_back(s * Vec3(d.x(), d.y(), 0.0));
-        for (const Vec2& d : r->lines) {
-            gens.push_back(Vec3(d.x(), d.y(), 0.0));
-            gens.push_back(-Vec3(d.x(), d.y(), 0.0));
+        const bool negate = r == &minus;
+        for (const auto* list : {&r->vertices_h, &r->rays_h}) {
+            for (const ExactVector& v : *list) gens.push_back(negate ? v.negated() : v);
+        }
+        for (const ExactVector& d : r->lines_dir_h) {
+            gens.push_back(d);
+            gens.push_back(d.negated());
         }
     }
     const Cone k = Cone::from_generators(gens);

@@ -1,11 +1,10 @@
 #include "momentlab/geometry/polygon.hpp"
 
-#include <gmpxx.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "momentlab/core/dyadic.hpp"
 #include "momentlab/core/predicates.hpp"
 
 namespace momentlab {
@@ -100,17 +99,18 @@ bool within_distance_of_segment(const Vec2& p, const Vec2& a, const Vec2& b, dou
     // far beyond that margin the answer is certain.
     const double scale = p.cwiseAbs().maxCoeff() + a.cwiseAbs().maxCoeff() + b.cwiseAbs().maxCoeff();
     if (distance_to_segment(a, b, p) > 2.0 * distance + 1e-6 * scale) return false;
-    const mpq_class ux = mpq_class(p.x()) - mpq_class(a.x()), uy = mpq_class(p.y()) - mpq_class(a.y());
-    const mpq_class vx = mpq_class(b.x()) - mpq_class(a.x()), vy = mpq_class(b.y()) - mpq_class(a.y());
-    const mpq_class d2 = mpq_class(distance) * mpq_class(distance);
-    const mpq_class uu = ux * ux + uy * uy, uv = ux * vx + uy * vy, vv = vx * vx + vy * vy;
-    if (sgn(uv) <= 0 || sgn(vv) == 0) return uu <= d2;  // closest to a
-    if (uv >= vv) {                                    // closest to b
-        const mpq_class wx = mpq_class(p.x()) - mpq_class(b.x()), wy = mpq_class(p.y()) - mpq_class(b.y());
-        return wx * wx + wy * wy <= d2;
+    using D = Dyadic;
+    const D ux = D(p.x()) - D(a.x()), uy = D(p.y()) - D(a.y());
+    const D vx = D(b.x()) - D(a.x()), vy = D(b.y()) - D(a.y());
+    const D d2 = D(distance) * D(distance);
+    const D uu = ux * ux + uy * uy, uv = ux * vx + uy * vy, vv = vx * vx + vy * vy;
+    if (uv.sign() != Sign::Positive || vv.is_zero()) return compare(uu, d2) <= 0;  // closest to a
+    if (compare(uv, vv) >= 0) {                                                      // closest to b
+        const D wx = D(p.x()) - D(b.x()), wy = D(p.y()) - D(b.y());
+        return compare(wx * wx + wy * wy, d2) <= 0;
     }
-    const mpq_class cross = ux * vy - uy * vx;  // distance to the line: |cross| / |v|
-    return cross * cross <= d2 * vv;
+    const D cross = ux * vy - uy * vx;  // distance to the line: |cross| / |v|
+    return compare(cross * cross, d2 * vv) <= 0;
 }
 
 bool within_distance_of_boundary(std::span<const Vec2> polygon, const Vec2& p, double distance) {

@@ -38,6 +38,7 @@ Body read_body(const json& b, const std::string& path, InputWarnings* w) {
         }
     } else if (b.contains("radius_of_gyration")) {
         const double rho = positive(b, path, "radius_of_gyration");
+        body.radius_of_gyration = rho;
         body.inertia = body.mass * rho * rho;
     } else {
         throw InputError(path, "missing field \"inertia\" (or \"radius_of_gyration\")");

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <map>
+#include <unordered_map>
 #include <stdexcept>
 
 #include "momentlab/geometry/force_sets.hpp"
@@ -20,17 +20,21 @@ namespace momentlab {
 
 namespace {
 
-// A plane up to sign: the exact normal divided by its first non-zero coordinate (so that
-// coordinate is 1), and the sign that division took off.
-std::pair<Rational3, int> plane_key(const ExactVector& v) {
-    Rational3 r = v.rational();
-    for (const mpq_class& x : r) {
-        if (sgn(x) == 0) continue;
-        const mpq_class first = x;
-        for (mpq_class& y : r) y /= first;
-        return {r, sgn(first)};
+// A hash of the plane of v up to sign, from its rounded direction: equal planes usually share
+// it (a plane whose rounded directions differ is only stored twice, which changes no answer);
+// planes are merged only after an exact test.
+std::uint64_t plane_hash(const ExactVector& v) {
+    Vec3 a = v.approximation().approx;
+    const double m = a.cwiseAbs().maxCoeff();
+    if (m == 0.0) return 0;
+    int k = 0;
+    for (int i = 1; i < 3; ++i) {
+        if (std::fabs(a[i]) > std::fabs(a[k])) k = i;
     }
-    return {r, 0};
+    a /= a[k];
+    std::uint64_t h = static_cast<std::uint64_t>(k);
+    for (int i = 0; i < 3; ++i) h = h * 1000003u + static_cast<std::uint64_t>(std::llround(a[i] * 0x1p30));
+    return h;
 }
 
 Verdict verdict_of(std::size_t count) {
@@ -39,25 +43,18 @@ Verdict verdict_of(std::size_t count) {
 
 }  // namespace
 
-Mat3 inertia_at_origin(const Body& body) {
-    const double m = body.mass, cx = body.com.x(), cy = body.com.y();
-    Mat3 mat;
-    mat << m, 0.0, -m * cy, 0.0, m, m * cx, -m * cy, m * cx, body.inertia + m * (cx * cx + cy * cy);
-    return mat;
-}
-
 std::vector<ModeForces> analyze(const Scene& scene) {
     if (!scene.body) throw std::invalid_argument("analyze: the scene needs a body (mass, com, inertia)");
     const Body& b = *scene.body;
     if (!b.com.allFinite() || !(b.mass > 0.0) || !(b.inertia > 0.0) || !std::isfinite(b.mass) || !std::isfinite(b.inertia)) {
         throw std::invalid_argument("analyze: the body needs a finite com, 0 < mass < inf and 0 < inertia < inf");
     }
-    const Mat3 m = inertia_at_origin(*scene.body);
+    const ExactMatrix m = inertia_at_origin(*scene.body);
     const ModeSet modes = enumerate_modes(scene.contacts);
     std::vector<ModeForces> out;
     out.reserve(modes.modes.size());
     for (const Mode& mode : modes.modes) {
-        std::vector<Vec3> contact_generators;
+        std::vector<ExactVector> contact_generators;
         for (std::size_t j = 0; j < scene.contacts.size(); ++j) {
             const Contact& c = scene.contacts[j];
             switch (mode.letters[j]) {
@@ -103,14 +100,22 @@ QueryResult query(const std::vector<ModeForces>& analysis, const Vec3& e) {
 
 
 QueryIndex::QueryIndex(const std::vector<ModeForces>& analysis) : mode_count_(analysis.size()) {
-    std::map<Rational3, std::pair<std::uint32_t, int>> seen;  // key -> (plane, orientation of the stored one)
+    // hash -> planes stored with it; a plane is merged with a stored one when they are exactly
+    // parallel (the orientation says whether it is the same or the opposite normal).
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> seen;
     std::vector<std::vector<std::pair<std::uint32_t, int>>> per_mode(analysis.size());
     auto add = [&](std::size_t mode, const ExactVector& normal) {
-        auto [key, orientation] = plane_key(normal);
-        if (orientation == 0) return;  // 0 . e >= 0 holds everywhere
-        auto [it, inserted] = seen.try_emplace(std::move(key), static_cast<std::uint32_t>(exact_.size()), orientation);
-        if (inserted) exact_.push_back(normal);
-        per_mode[mode].emplace_back(it->second.first, orientation * it->second.second);
+        if (is_zero(normal)) return;  // 0 . e >= 0 holds everywhere
+        std::vector<std::uint32_t>& bucket = seen[plane_hash(normal)];
+        for (std::uint32_t j : bucket) {
+            if (parallel(exact_[j], normal)) {
+                per_mode[mode].emplace_back(j, exact_[j].dot_sign(normal) == Sign::Positive ? 1 : -1);
+                return;
+            }
+        }
+        bucket.push_back(static_cast<std::uint32_t>(exact_.size()));
+        per_mode[mode].emplace_back(static_cast<std::uint32_t>(exact_.size()), 1);
+        exact_.push_back(normal);
     };
     for (std::size_t i = 0; i < analysis.size(); ++i) {
         const Cone& e = analysis[i].applied;
@@ -128,10 +133,11 @@ QueryIndex::QueryIndex(const std::vector<ModeForces>& analysis) : mode_count_(an
     }
 }
 
-// The filter in single precision. Plane j is scaled by a power of two 2^k so that the sum B of
-// the magnitudes of its products (ExactVector::Filter, bound = 2^-50 B) lies in [1, 2); with
-// u = 2^-24 and max|e_k| = m, rounding the plane and e to floats and the dot product in floats
-// errs by less than 5.1 u B m < 2^-19 B m < 2^-18 m (docs/robustness.md). m is kept in
+// The filter in single precision. Plane j is the exact vector 2^K (approx + d) (its certified
+// approximation, ExactVector::Filter), scaled by a power of two 2^k so that |2^k approx|_1 lies
+// in [1, 2). With u = 2^-24 and max|e_k| = m, rounding the plane and e to floats and the dot
+// product in floats errs by less than 12 u |a|_1 m < 1.5 2^-20 m; the approximation's own error
+// is 2^k bound m. The sum, rounded up, is the plane's bound (docs/robustness.md). m is kept in
 // [2^-60, 2^60], so no float overflows, and underflow (below 2^-149 per operation) is far
 // inside the slack. Padding planes have a zero normal and a negative bound: always decided.
 void QueryIndex::build_filter(const Rows& per_mode) {
@@ -147,16 +153,20 @@ void QueryIndex::build_filter(const Rows& per_mode) {
     if_negative_.assign(padded, existing);
     for (std::size_t j = 0; j < exact_.size(); ++j) {
         const ExactVector::Filter f = exact_[j].filter();
-        if (!std::isfinite(f.bound)) {
+        const double norm = std::fabs(f.approx.x()) + std::fabs(f.approx.y()) + std::fabs(f.approx.z());
+        if (!std::isfinite(f.bound) || norm == 0.0) {
             bound_[j] = std::numeric_limits<float>::infinity();  // never certain: always exact
             continue;
         }
-        const int k = -std::ilogb(std::ldexp(f.bound, 50));  // 2^k B in [1, 2)
+        const int k = -std::ilogb(norm);  // |2^k approx|_1 in [1, 2)
         const Vec3 a = f.approx * std::ldexp(1.0, k);
         ax_[j] = static_cast<float>(a.x());
         ay_[j] = static_cast<float>(a.y());
         az_[j] = static_cast<float>(a.z());
-        bound_[j] = 0x1p-18F;
+        // The double filter's bound on this scale, plus the float evaluation (below 12 u_f |a|_1 <
+        // 24 u_f = 1.5 2^-20 per unit of max|e_k|), rounded up.
+        const double b = (std::ldexp(f.bound, k) + 0x1p-19) * (1 + 0x1p-20);
+        bound_[j] = b < 1e30 ? static_cast<float>(b) * (1 + 0x1p-20F) : std::numeric_limits<float>::infinity();
     }
     for (std::size_t i = 0; i < per_mode.size(); ++i) {
         for (const auto& [plane, orientation] : per_mode[i]) {

@@ -7,7 +7,7 @@
 // and the 3-D interior are single cells (no contact is closed on the interior of a
 // full-dimensional A). Cells with the same letters are one mode: the twists with given
 // letters form a relatively open convex cone, so the closure of a mode is the sum of the
-// closures of its cells. All arithmetic here is exact rational (degree up to 6 in the input).
+// closures of its cells. All arithmetic here is exact (Dyadic numbers; degree up to 10 in the input).
 #include "momentlab/mechanics/modes.hpp"
 
 #include <algorithm>
@@ -19,26 +19,12 @@
 namespace momentlab {
 namespace {
 
-using Q = mpq_class;
-using Q3 = Rational3;
+using Q3 = Exact3;
 
-Q dot(const Q3& a, const Q3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Q3 cross(const Q3& a, const Q3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Q3 plus(const Q3& a, const Q3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Q3 minus(const Q3& a) { return {-a[0], -a[1], -a[2]}; }
-int sign(const Q& q) { return sgn(q); }
-int orient(const Q3& x, const Q3& y, const Q3& e) { return sign(dot(cross(x, y), e)); }
-bool is_zero(const Q3& a) { return sgn(a[0]) == 0 && sgn(a[1]) == 0 && sgn(a[2]) == 0; }
-
-// A direction as doubles: divided by its largest coordinate first (exact), then rounded.
-Vec3 to_double(const Q3& a) {
-    Q m = 0;
-    for (const Q& c : a) m = std::max(m, Q(abs(c)));
-    if (sgn(m) == 0) return Vec3::Zero();
-    return Vec3(Q(a[0] / m).get_d(), Q(a[1] / m).get_d(), Q(a[2] / m).get_d());
-}
+Q3 plus(const Q3& a, const Q3& b) { return a + b; }
+Q3 minus(const Q3& a) { return -a; }
+int sign(const Dyadic& q) { return to_int(q.sign()); }
+int orient(const Q3& x, const Q3& y, const Q3& e) { return sign(det(x, y, e)); }
 
 struct Cell {
     Q3 representative;             // a twist in the relative interior of the cell
@@ -50,8 +36,8 @@ public:
     explicit Enumerator(const std::vector<Contact>& contacts) {
         for (const Contact& c : contacts) {
             normals_.push_back(c.normal_wrench());
-            n_.push_back(to_rational(c.normal_wrench()));
-            t_.push_back(to_rational(c.tangent_wrench()));
+            n_.push_back(normals_.back().exact());
+            t_.push_back(c.tangent_wrench().exact());
         }
     }
 
@@ -60,11 +46,11 @@ public:
         out.feasible_twists = Cone::from_halfspaces(normals_);
         const Cone& a = out.feasible_twists;
         std::vector<Q3> lineality;
-        for (const ExactVector& l : a.lineality()) lineality.push_back(l.rational());
+        for (const ExactVector& l : a.lineality()) lineality.push_back(l.exact());
         add(std::string(n_.size(), 'f'), {});  // xi = 0: every contact fixed
         for (const Face& face : a.faces()) {
             std::vector<Q3> rays;
-            for (int i : face.rays) rays.push_back(a.rays()[static_cast<std::size_t>(i)].rational());
+            for (int i : face.rays) rays.push_back(a.rays()[static_cast<std::size_t>(i)].exact());
             if (face.dimension == 0) continue;
             std::vector<bool> closed(n_.size());
             for (std::size_t j = 0; j < n_.size(); ++j) {
@@ -79,8 +65,8 @@ public:
         }
         out.modes.resize(order_.size());
         for (const auto& [letters, index] : order_) {
-            std::vector<Vec3> gens;
-            for (const Q3& g : closures_[index]) gens.push_back(to_double(g));
+            std::vector<ExactVector> gens;
+            for (const Q3& g : closures_[index]) gens.push_back(ExactVector::from_exact(g));
             out.modes[index] = Mode{letters, Cone::from_generators(gens)};
         }
         return out;
@@ -204,7 +190,7 @@ private:
         return out;
     }
 
-    std::vector<Vec3> normals_;
+    std::vector<ExactVector> normals_;
     std::vector<Q3> n_, t_;
     std::map<std::string, std::size_t> order_;
     std::vector<std::vector<Q3>> closures_;

@@ -16,11 +16,23 @@ Contact Contact::make(const Vec2& point, const Vec2& normal, double mu,
     if (!(mk >= 0.0) || !std::isfinite(mk)) throw std::invalid_argument("mu_kinetic must be finite and >= 0");
     Contact c;
     c.point = point;
-    c.normal = normal / normal.norm();
+    c.normal = normal;
     c.mu = mu;
     c.mu_kinetic = mk;
     c.name = std::move(name);
     return c;
+}
+
+ExactVector Contact::normal_wrench() const { return ExactVector::from_exact(wrench_through(exact(point), exact(normal))); }
+
+ExactVector Contact::tangent_wrench() const { return ExactVector::from_exact(wrench_through(exact(point), exact(tangent()))); }
+
+ExactMatrix inertia_at_origin(const Body& body) {
+    const Dyadic m(body.mass), cx(body.com.x()), cy(body.com.y());
+    const Dyadic ic = body.radius_of_gyration ? m * Dyadic(*body.radius_of_gyration) * Dyadic(*body.radius_of_gyration)
+                                              : Dyadic(body.inertia);
+    const Dyadic mcx = m * cx, mcy = m * cy;
+    return {Exact3{m, Dyadic(), -mcy}, Exact3{Dyadic(), m, mcx}, Exact3{-mcy, mcx, ic + mcx * cx + mcy * cy}};
 }
 
 }  // namespace momentlab

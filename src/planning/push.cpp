@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "momentlab/core/predicates.hpp"
+#include "momentlab/geometry/force_sets.hpp"
 #include "momentlab/geometry/polygon.hpp"
 
 namespace momentlab {
@@ -70,52 +71,19 @@ FreeParts free_parts(const Vec2& a, const Vec2& b, const std::vector<Polygon>& o
     return out;
 }
 
-// All forces with direction in cone(directions) whose line of action meets the segment a-b
-// (a == b: passes through a), built exactly from the directions and the points: the directions
-// with every pure moment, cut by the half-spaces of moments about a and b of opposite signs
-// (DESIGN, Robustness: rounding the moments p x d of generators would tilt the plane of
-// forces through a vertex off its true position, and invent or lose solutions there). For a
-// segment the directions must lie in one open side of its line.
-Cone forces_across(const Vec2& a, const Vec2& b, const std::vector<Vec2>& directions) {
-    std::vector<Vec3> rays;
-    Vec2 sum = Vec2::Zero();
-    for (const Vec2& d : directions) {
-        rays.emplace_back(d.x(), d.y(), 0.0);
-        sum += d;
-    }
-    const std::vector<Vec3> lines = {Vec3(0.0, 0.0, 1.0)};
-    const Cone turning = Cone::from_generators(rays, lines);
-    const Vec3 about_a(a.y(), -a.x(), 1.0), about_b(b.y(), -b.x(), 1.0);  // moment about a point
-    std::vector<Vec3> halfspaces;
-    if (a == b) {
-        halfspaces = {about_a, -about_a};
-    } else {
-        const double sigma = cross2_sign(b - a, sum) == Sign::Positive ? 1.0 : -1.0;
-        halfspaces = {sigma * about_a, -sigma * about_b};
-    }
-    return intersection(turning, Cone::from_halfspaces(halfspaces));
-}
-
-// The force directions of a finger with inward normal n: n + mu t (slip l, clockwise of n),
-// n - mu t (r), both (f); t = (n.y, -n.x).
-Vec2 slip_direction(const Vec2& n, double mu, bool left) {
-    const Vec2 t(n.y(), -n.x());
-    return left ? Vec2(n + mu * t) : Vec2(n - mu * t);
-}
-
 // The cones of forces of a finger on vertex v whose inward normals run counter-clockwise from
 // `cw` to `ccw` (the two edges' normals). An arc of pi or more (a sticking finger on a sharp
 // vertex) is split at the bisector, so that each part is convex. At a notch the sticking
 // finger touches both edges: the sum of their cones.
-std::vector<Cone> vertex_actions(const Vec2& v, const Vec2& cw, const Vec2& ccw, const Vec2& bisector, char slip,
+std::vector<Cone> vertex_actions(const Vec2& v, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, char slip,
                                  double mu, bool reflex) {
     if (reflex) {
-        return {forces_across(v, v, {slip_direction(cw, mu, true), slip_direction(cw, mu, false),
-                                     slip_direction(ccw, mu, true), slip_direction(ccw, mu, false)})};
+        return {forces_across(v, v, {friction_edge(cw, mu, true), friction_edge(cw, mu, false),
+                                     friction_edge(ccw, mu, true), friction_edge(ccw, mu, false)})};
     }
-    if (slip != 'f') return {forces_across(v, v, {slip_direction(cw, mu, slip == 'l'), slip_direction(ccw, mu, slip == 'l')})};
-    const Vec2 first = slip_direction(cw, mu, true), last = slip_direction(ccw, mu, false);
-    if (cross2_sign(first, last) == Sign::Positive) return {forces_across(v, v, {first, last})};
+    if (slip != 'f') return {forces_across(v, v, {friction_edge(cw, mu, slip == 'l'), friction_edge(ccw, mu, slip == 'l')})};
+    const Exact2 first = friction_edge(cw, mu, true), last = friction_edge(ccw, mu, false);
+    if (cross2(first, last).sign() == Sign::Positive) return {forces_across(v, v, {first, last})};
     return {forces_across(v, v, {first, bisector}), forces_across(v, v, {bisector, last})};
 }
 
@@ -144,12 +112,21 @@ Push representative(const PushFeature& f, const Cone& solutions) {
 
 }  // namespace
 
+namespace {
+
+// A finger's forces on the segment a-b with the exact inward normal `normal`.
+Cone edge_actions(const Vec2& a, const Vec2& b, const Exact2& normal, char slip, double mu) {
+    if (slip != 'f') return forces_across(a, b, {friction_edge(normal, mu, slip == 'l')});
+    return forces_across(a, b, {friction_edge(normal, mu, true), friction_edge(normal, mu, false)});
+}
+
+}  // namespace
+
 Cone push_actions(const Vec2& a, const Vec2& b, const Vec2& normal, char slip, double mu) {
     if (slip != 'l' && slip != 'f' && slip != 'r') throw std::invalid_argument("push_actions: slip must be l, f or r");
     if (!(mu >= 0.0) || !std::isfinite(mu)) throw std::invalid_argument("push_actions: mu must be finite and >= 0");
     if (!normal.allFinite() || normal.isZero()) throw std::invalid_argument("push_actions: the normal must be non-zero");
-    if (slip != 'f') return forces_across(a, b, {slip_direction(normal, mu, slip == 'l')});
-    return forces_across(a, b, {slip_direction(normal, mu, true), slip_direction(normal, mu, false)});
+    return edge_actions(a, b, exact(normal), slip, mu);
 }
 
 std::string PushFeature::name() const { return (kind == Kind::Edge ? "edge " : "vertex ") + std::to_string(index); }
@@ -182,15 +159,18 @@ bool meets_interior(const Cone& c, const Cone& e) {
 namespace {
 
 // The pieces of one case on the given parts of its feature (parameters along an edge).
-std::vector<PushPiece> solve_pieces(const PushFeature& f, const Vec2& cw, const Vec2& ccw, char slip, double mu,
+std::vector<PushPiece> solve_pieces(const PushFeature& f, const Exact2& cw, const Exact2& ccw, const Exact2& bisector,
+                                    char slip, double mu,
                                     const std::vector<std::pair<double, double>>& parts, const Cone& goal,
                                     const std::vector<Polygon>* obstacles) {
     std::vector<PushPiece> pieces;
     for (const auto& [lo, hi] : parts) {
-        const Vec2 p = f.from + lo * (f.to - f.from), q = f.from + hi * (f.to - f.from);
+        // The feature's own ends where the part reaches them (a + 1.0 (b - a) can round off b).
+        const Vec2 p = lo == 0.0 ? f.from : Vec2(f.from + lo * (f.to - f.from));
+        const Vec2 q = hi == 1.0 ? f.to : Vec2(f.from + hi * (f.to - f.from));
         const std::vector<Cone> cones = f.kind == PushFeature::Kind::Edge
-                                            ? std::vector<Cone>{push_actions(p, q, f.normal, slip, mu)}
-                                            : vertex_actions(f.from, cw, ccw, f.normal, slip, mu, f.reflex);
+                                            ? std::vector<Cone>{edge_actions(p, q, cw, slip, mu)}
+                                            : vertex_actions(f.from, cw, ccw, bisector, slip, mu, f.reflex);
         for (const Cone& w : cones) {
             PushPiece piece{p, q, w, intersection(w, goal), false, std::nullopt};
             // Robust: the solutions meet the interior of E_goal, and a concrete push, the rounded
@@ -243,7 +223,7 @@ void describe(PushCase& c, const std::vector<const PushPiece*>& chosen) {
 
 // One case: solved on the whole feature (its verdict: feasible, boundary or no), then, when
 // obstacles cover part of it and the case is feasible, again on the free parts only.
-PushCase solve_case(const PushFeature& f, const Vec2& cw, const Vec2& ccw, char slip, double mu,
+PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, char slip, double mu,
                     const std::optional<FreeParts>& free, const Cone& goal, const std::vector<Polygon>& obstacles) {
     PushCase c;
     c.feature = f;
@@ -253,7 +233,7 @@ PushCase solve_case(const PushFeature& f, const Vec2& cw, const Vec2& ccw, char 
         return c;
     }
     const std::vector<std::pair<double, double>> whole = {{0.0, f.kind == PushFeature::Kind::Edge ? 1.0 : 0.0}};
-    c.pieces = solve_pieces(f, cw, ccw, slip, mu, whole, goal, nullptr);
+    c.pieces = solve_pieces(f, cw, ccw, bisector, slip, mu, whole, goal, nullptr);
     const auto has_solutions = [](const PushPiece& p) { return !p.solutions.is_zero(); };
     const auto robust = [](const PushPiece& p) { return p.robust; };
     const bool robust_anywhere = std::any_of(c.pieces.begin(), c.pieces.end(), robust);
@@ -263,7 +243,7 @@ PushCase solve_case(const PushFeature& f, const Vec2& cw, const Vec2& ccw, char 
     if (free) {
         c.blocked = free->parts.empty() ? "all" : free->all_free ? "none" : "part";
         if (robust_anywhere && !free->all_free) {
-            auto reachable = solve_pieces(f, cw, ccw, slip, mu, free->parts, goal, &obstacles);
+            auto reachable = solve_pieces(f, cw, ccw, bisector, slip, mu, free->parts, goal, &obstacles);
             if (std::any_of(reachable.begin(), reachable.end(), robust)) {
                 c.pieces = std::move(reachable);
             } else {
@@ -287,36 +267,44 @@ std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, cons
     const Polygon& poly = scene.body->polygon;
     const std::size_t n = poly.size();
     const bool ccw = is_counter_clockwise(poly);
-    std::vector<Vec2> normals(n);  // inward normal of edge i
+    // The inward normal of edge i, exact (not unit: every condition is homogeneous in it), and
+    // its unit rounding for the feature's description.
+    std::vector<Exact2> normals(n);
+    std::vector<Vec2> units(n);
     for (std::size_t i = 0; i < n; ++i) {
-        const Vec2 d = poly[(i + 1) % n] - poly[i];
-        normals[i] = (ccw ? Vec2(-d.y(), d.x()) : Vec2(d.y(), -d.x())).normalized();
+        const Exact2 d = exact(poly[(i + 1) % n]) - exact(poly[i]);
+        normals[i] = ccw ? Exact2{-d[1], d[0]} : Exact2{d[1], -d[0]};
+        units[i] = to_double(normals[i]).normalized();
     }
     std::vector<PushCase> cases;
     for (int pass = 0; pass < 2; ++pass) {
         for (std::size_t i = 0; i < n; ++i) {
             PushFeature f;
-            Vec2 cw = normals[i], ccw_normal = normals[i];
+            Exact2 cw = normals[i], ccw_normal = normals[i], bisector = normals[i];
             if (pass == 0) {
-                f = {PushFeature::Kind::Edge, i, poly[i], poly[(i + 1) % n], normals[i], false};
+                f = {PushFeature::Kind::Edge, i, poly[i], poly[(i + 1) % n], units[i], false};
             } else {
                 const Vec2 &prev = poly[(i + n - 1) % n], &next = poly[(i + 1) % n];
-                const Vec2 n_in = normals[(i + n - 1) % n], n_out = normals[i];
+                const std::size_t in = (i + n - 1) % n;
                 const Sign turn = orient2d(prev, poly[i], next);
                 const bool reflex = turn == (ccw ? Sign::Negative : Sign::Positive);
                 // Convex: the normals turn counter-clockwise from n_in to n_out on a
                 // counter-clockwise outline, clockwise on a clockwise one.
-                cw = ccw ? n_in : n_out;
-                ccw_normal = ccw ? n_out : n_in;
+                cw = ccw ? normals[in] : normals[i];
+                ccw_normal = ccw ? normals[i] : normals[in];
                 if (reflex) std::swap(cw, ccw_normal);
-                const Vec2 bisector = (n_in + n_out).normalized();
-                f = {PushFeature::Kind::Vertex, i, poly[i], poly[i], bisector, reflex};
+                // The split direction of a wide arc: strictly inside it (the sum of the unit
+                // normals, rounded, is far from both ends there); the same exact vector bounds
+                // both halves, so their union is the whole arc.
+                const Vec2 unit_bisector = (units[in] + units[i]).normalized();
+                bisector = exact(unit_bisector);
+                f = {PushFeature::Kind::Vertex, i, poly[i], poly[i], unit_bisector, reflex};
             }
             // The parts a finger can reach, once per feature (not when interference is ignored).
             const std::optional<FreeParts> free =
                 options.ignore_interference ? std::nullopt : std::optional(free_parts(f.from, f.to, scene.obstacles));
             for (char slip : {'l', 'f', 'r'}) {
-                cases.push_back(solve_case(f, cw, ccw_normal, slip, options.mu, free, goal.applied, scene.obstacles));
+                cases.push_back(solve_case(f, cw, ccw_normal, bisector, slip, options.mu, free, goal.applied, scene.obstacles));
             }
         }
     }

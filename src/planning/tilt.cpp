@@ -62,8 +62,8 @@ DirectionPlan plan_directions_through(const Vec2& point, const Cone& goal_applie
             return plan;
         }
         // The half-plane on the side of its ray: counter-clockwise from d to -d if the ray is
-        // to the left of d (exact sign of the stored values).
-        const bool left = cross2_sign(d, force_of(s.rays()[0])) == Sign::Positive;
+        // to the left of d (exact).
+        const bool left = minor_sign(s.lineality()[0], s.rays()[0], 0, 1) == Sign::Positive;
         start = left ? d : Vec2(-d);
         add_arc(plan.intervals, start, -start);
         width = M_PI;
@@ -72,7 +72,7 @@ DirectionPlan plan_directions_through(const Vec2& point, const Cone& goal_applie
         add_arc(plan.intervals, start, start);
     } else {  // a wedge of W: two rays, less than pi apart
         Vec2 a = force_of(s.rays()[0]), b = force_of(s.rays()[1]);
-        if (cross2_sign(a, b) == Sign::Negative) std::swap(a, b);
+        if (minor_sign(s.rays()[0], s.rays()[1], 0, 1) == Sign::Negative) std::swap(a, b);
         start = a;
         add_arc(plan.intervals, a, b);
         width = std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));

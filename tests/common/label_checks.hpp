@@ -11,8 +11,9 @@ namespace momentlab::testing {
 
 /// True when one of the region's homogeneous vertices is a positive multiple of (x, y, s).
 inline bool has_vertex(const Region& r, const Vec3& xys) {
-    return std::any_of(r.vertices_h.begin(), r.vertices_h.end(), [&](const Vec3& v) {
-        return parallel(v, xys) && dot_sign(v, xys) == Sign::Positive;
+    const ExactVector target = ExactVector::input(xys);
+    return std::any_of(r.vertices_h.begin(), r.vertices_h.end(), [&](const ExactVector& v) {
+        return parallel(v, target) && dot_sign(v, target) == Sign::Positive;
     });
 }
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "../common/random_inputs.hpp"
+#include "random_inputs.hpp"
 #include "momentlab/core/predicates.hpp"
 
 namespace momentlab {

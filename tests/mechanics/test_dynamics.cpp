@@ -6,8 +6,9 @@
 #include <map>
 #include <set>
 
-#include "../common/random_inputs.hpp"
-#include "../common/mode_oracle.hpp"
+#include "../common/scenes.hpp"
+#include "mode_oracle.hpp"
+#include "random_inputs.hpp"
 #include "momentlab/mechanics/dynamics.hpp"
 
 namespace momentlab {
@@ -33,8 +34,9 @@ Vec3 force_at(const Vec2& p, const Vec2& f) { return wrench_at(p, f); }
 // (exact arithmetic end to end, many exact degeneracies).
 Contact random_contact(testing::Random& rnd, bool integral) {
     const Vec2 p = integral ? Vec2(rnd.integer(-2, 2), rnd.integer(-1, 1)) : Vec2(rnd.uniform(-2, 2), rnd.uniform(-1, 1));
-    const Vec2 nrm = integral ? Vec2(rnd.integer(-1, 1), 1) : Vec2(rnd.uniform(-1, 1), rnd.uniform(-1, 1));
-    return Contact::make(p, nrm.norm() > 0 ? nrm : Vec2(0, 1), rnd.integer(0, 4) * 0.25);
+    const Vec2 nrm = integral ? testing::slanted_direction(rnd) : Vec2(rnd.uniform(-1, 1), rnd.uniform(-1, 1));
+    const auto [mu, mk] = testing::random_mu(rnd);
+    return Contact::make(p, nrm.norm() > 0 ? nrm : Vec2(0, 1), mu, mk);
 }
 
 TEST(Dynamics, BlockOnATable) {
@@ -74,12 +76,11 @@ TEST(Dynamics, QueryAgreesWithExactLpOracle) {
             scene.contacts.push_back(random_contact(rnd, integral));
         }
         const auto a = analyze(scene);
-        const Mat3 m = inertia_at_origin(*scene.body);
         for (int w = 0; w < 90; ++w) {
             const Vec3 e = rnd.vec3(10.0);
             std::set<std::string> expected;
             for (const ModeForces& mf : a) {
-                if (testing::exact_lp_applied_in_mode(scene, m, mf.mode.letters, e)) expected.insert(mf.mode.letters);
+                if (testing::exact_lp_applied_in_mode(scene, mf.mode.letters, e)) expected.insert(mf.mode.letters);
             }
             const auto ours = answer(a, e);
             const QueryIndex index(a);
@@ -171,6 +172,128 @@ TEST(Dynamics, QueryIndexRejectsNonFiniteWrenches) {
     for (const Vec3& e : {Vec3(nan, 0, 0), Vec3(1, nan, 1), Vec3(0, 0, inf), Vec3(-inf, 1, 1)}) {
         EXPECT_THROW((void)index.query(e), std::invalid_argument) << e.transpose();
     }
+}
+
+// Wrenches on the boundaries of the E_i, built in exact rationals from the scene's raw numbers:
+// e = M xi - sum of lambda_k g_k with xi = 0, +-N_a x N_b (closing two contacts) or +-N_a x T_1
+// (closing one and fixing the first), and integer lambda on the friction generators of a random
+// labelling. Such wrenches lie on the faces where modes meet; integer scenes make each an exact
+// double, so query and QueryIndex are compared with the exact LP oracle where it matters most.
+TEST(Dynamics, BoundaryWrenchesAgreeWithExactLpOracle) {
+    testing::Random rnd(1618);
+    int wrenches = 0, several = 0, failures = 0;
+    for (int s = 0; s < 160 && failures < 10; ++s) {
+        Scene scene;
+        scene.body = Body{static_cast<double>(rnd.integer(1, 3)), Vec2(rnd.integer(-2, 2), rnd.integer(-1, 2)),
+                          static_cast<double>(rnd.integer(1, 4)), {}};
+        const int n = rnd.integer(1, 3);
+        for (int j = 0; j < n; ++j) {
+            const Vec2 p(rnd.integer(-2, 2), rnd.integer(-2, 2));
+            const auto [mu, mk] = testing::random_mu(rnd);
+            scene.contacts.push_back(Contact::make(p, testing::slanted_direction(rnd), mu, mk));
+        }
+        const auto a = analyze(scene);
+        const QueryIndex index(a);
+        const testing::ExactContacts c(scene.contacts);
+        const reference::QMat m = reference::inertia(*scene.body);
+        for (int w = 0; w < 24; ++w) {
+            reference::QVec xi{0, 0, 0};
+            const int kind = rnd.integer(0, 2);
+            if (kind == 1 && n >= 2) xi = reference::cross(c.n[0], c.n[1]);
+            if (kind == 2) xi = reference::cross(c.n[static_cast<std::size_t>(rnd.integer(0, n - 1))], c.t[0]);
+            if (rnd.integer(0, 1)) xi = reference::neg(xi);
+            reference::QVec e = reference::mul(m, xi);
+            for (int j = 0; j < n; ++j) {
+                const char letter = "sfrl"[rnd.integer(0, 3)];
+                for (const auto& g : c.raw[static_cast<std::size_t>(j)].generators(letter)) {
+                    e = reference::add(e, reference::scale(reference::Q(-rnd.integer(0, 2)), g));
+                }
+            }
+            const Vec3 ed = reference::to_vec3(e);
+            if (reference::q(ed) != e) continue;  // not an exact double
+            std::set<std::string> expected;
+            for (const ModeForces& mf : a) {
+                if (testing::exact_lp_applied_in_mode(scene, mf.mode.letters, e)) expected.insert(mf.mode.letters);
+            }
+            std::set<std::string> indexed;
+            for (std::size_t i : index.query(ed).modes) indexed.insert(a[i].mode.letters);
+            ++wrenches;
+            several += expected.size() > 1;
+            if (answer(a, ed) != expected || indexed != expected) {
+                ++failures;
+                ADD_FAILURE() << "scene " << s << " wrench " << ed.transpose();
+            }
+        }
+    }
+    std::cout << "[Dynamics] " << wrenches << " boundary wrenches (" << several << " in several modes), " << failures
+              << " disagreements\n";
+    EXPECT_EQ(failures, 0);
+    EXPECT_GE(wrenches, 3000);
+    EXPECT_GE(several, 1000);
+}
+
+// The verdicts of random wrenches on the slanted-normal families are the same after an exact
+// transform of the scene and the wrench (modes renamed).
+TEST(Dynamics, QueriesAreInvariantUnderExactTransforms) {
+    testing::Random rnd(4242);
+    const testing::SceneFamily families[] = {testing::SceneFamily::Concurrent, testing::SceneFamily::OnACircle,
+                                             testing::SceneFamily::Parallel, testing::SceneFamily::Collinear,
+                                             testing::SceneFamily::SlantedIntegers};
+    int checked = 0;
+    for (int s = 0; s < 300; ++s) {
+        const Scene scene = testing::random_scene(rnd, families[s % 5], 4, s % 3 == 2);
+        const testing::Transform t = testing::random_transform(rnd, scene.contacts.size());
+        if (!testing::exactly_representable(t, scene)) continue;
+        const auto a = analyze(scene);
+        const auto b = analyze(t.apply(scene));
+        for (int w = 0; w < 20; ++w) {
+            const Vec2 point = scene.body->com + Vec2(rnd.integer(-4, 4) * 0.25, rnd.integer(-4, 4) * 0.25);
+            const Vec2 force(rnd.integer(-4, 4), rnd.integer(-4, 4));
+            const Dyadic tau = Dyadic(point.x()) * Dyadic(force.y()) - Dyadic(point.y()) * Dyadic(force.x()) +
+                               Dyadic(static_cast<double>(rnd.integer(-2, 2)));
+            if (!tau.fits_double()) continue;
+            const Vec3 e(force.x(), force.y(), tau.to_double());
+            const Vec3 et = t.wrench(e);
+            // The transformed torque must be exact too.
+            const Vec2 ft(et.x(), et.y());
+            const double det = t.linear.topLeftCorner<2, 2>().determinant();
+            const Dyadic exact_tau = Dyadic(det) * Dyadic(t.scale) * Dyadic(e.z()) + Dyadic(t.offset.x()) * Dyadic(ft.y()) -
+                                     Dyadic(t.offset.y()) * Dyadic(ft.x());
+            if (!exact_tau.fits_double() || exact_tau.to_double() != et.z()) continue;
+            std::set<std::string> renamed;
+            for (const std::string& m : answer(a, e)) renamed.insert(t.letters(m));
+            EXPECT_EQ(answer(b, et), renamed) << t.name << " of scene " << s << ", wrench " << e.transpose();
+            ++checked;
+        }
+    }
+    std::cout << "[Dynamics] " << checked << " wrenches compared under exact transforms\n";
+    EXPECT_GE(checked, 3000);
+}
+
+// Far from the origin: the block on a table moved by (1e8, 0) gives the same answers for the
+// same forces (the inertia at the origin, I_c + m |c|^2, keeps I_c exactly), and a mass of 1e16
+// is an ordinary input.
+TEST(Dynamics, FarFromTheOriginAndHeavy) {
+    Scene near = block_on_table(0.5);
+    Scene far = near;
+    const Vec2 d(1e8, 0);
+    far.body->com += d;
+    for (Contact& c : far.contacts) c.point += d;
+    const auto a = analyze(near), b = analyze(far);
+    const Vec2 weight(0, -10), push(20, 0);
+    const Vec2 com = near.body->com, top(0, 0.5);
+    EXPECT_EQ(answer(a, force_at(com, weight)), (std::set<std::string>{"ff"}));
+    EXPECT_EQ(answer(b, force_at(com + d, weight)), (std::set<std::string>{"ff"}));
+    // Weight plus a push at the top corner: tips forward about the front corner, which slides.
+    const Vec3 tip = force_at(com, weight) + force_at(top, push);
+    const Vec3 tip_far = force_at(com + d, weight) + force_at(top + d, push);
+    EXPECT_EQ(answer(a, tip), (std::set<std::string>{"sr"}));
+    EXPECT_EQ(answer(b, tip_far), (std::set<std::string>{"sr"}));
+    Scene heavy = near;
+    heavy.body->mass = 1e16;
+    heavy.body->inertia = 1e16 / 12.0 * 1.25;
+    const auto h = analyze(heavy);
+    EXPECT_EQ(answer(h, force_at(com, Vec2(0, -1e17))), (std::set<std::string>{"ff"}));
 }
 
 }  // namespace

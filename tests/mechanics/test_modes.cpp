@@ -1,12 +1,15 @@
-// Contact modes: answers known by hand, and agreement with a brute-force exact LP oracle on
-// random and exactly degenerate scenes.
+// Contact modes: answers known by hand, agreement with a brute-force exact LP oracle (fed the
+// scenes' raw numbers in rationals) on random and exactly degenerate scenes with slanted
+// normals, and invariance under exact transforms.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <set>
 #include <sstream>
 
-#include "../common/random_inputs.hpp"
-#include "../oracle/lp_oracle.hpp"
+#include "../common/scenes.hpp"
+#include "mode_oracle.hpp"
+#include "random_inputs.hpp"
 #include "momentlab/mechanics/modes.hpp"
 
 namespace momentlab {
@@ -47,8 +50,7 @@ TEST(Modes, BlockInACornerAndBetweenWalls) {
     EXPECT_FALSE(modes.count("lls"));  // cannot slide into the wall
     // Squeezed between two parallel walls: no separation of one without the other turning.
     const std::vector<Contact> squeezed = {contact(0, 0, 1, 0), contact(1, 0, -1, 0)};
-    EXPECT_EQ(mode_strings(squeezed), oracle::all_modes({squeezed[0].normal_wrench(), squeezed[1].normal_wrench()},
-                                                         {squeezed[0].tangent_wrench(), squeezed[1].tangent_wrench()}));
+    EXPECT_EQ(mode_strings(squeezed), testing::exact_modes(squeezed));
 }
 
 // Random scenes with 1..6 contacts: general doubles, and exactly degenerate ones (parallel
@@ -83,35 +85,110 @@ std::vector<Contact> random_scene(testing::Random& rnd, int kind) {
     return c;
 }
 
+std::string joined(const std::set<std::string>& modes) {
+    std::string out;
+    for (const auto& m : modes) out += m + " ";
+    return out;
+}
+
+std::string describe(const std::vector<Contact>& contacts) {
+    std::ostringstream where;
+    where.precision(17);
+    for (const Contact& c : contacts) where << "(" << c.point.transpose() << " n " << c.normal.transpose() << ") ";
+    return where.str();
+}
+
 TEST(Modes, AgreeWithExactLpOracle) {
     testing::Random rnd(314);
     int scenes = 0, failures = 0, total_modes = 0;
     for (int i = 0; i < 1200 && failures < 10; ++i) {
         const auto contacts = random_scene(rnd, i);
-        std::vector<Vec3> n, t;
-        for (const Contact& c : contacts) {
-            n.push_back(c.normal_wrench());
-            t.push_back(c.tangent_wrench());
-        }
         const auto ours = mode_strings(contacts);
-        const auto expected = oracle::all_modes(n, t);
+        const auto expected = testing::exact_modes(contacts);
         ++scenes;
         total_modes += static_cast<int>(expected.size());
         if (ours != expected) {
             ++failures;
-            std::string a, b;
-            for (const auto& m : ours) a += m + " ";
-            for (const auto& m : expected) b += m + " ";
-            std::ostringstream where;
-            where.precision(17);
-            for (const Contact& c : contacts) {
-                where << "(" << c.point.transpose() << " n " << c.normal.transpose() << ") ";
-            }
-            ADD_FAILURE() << "ours: " << a << "\noracle: " << b << "\nscene: " << where.str();
+            ADD_FAILURE() << "ours: " << joined(ours) << "\noracle: " << joined(expected) << "\nscene: " << describe(contacts);
         }
     }
     std::cout << "[Modes] " << scenes << " scenes, " << total_modes << " modes, " << failures << " disagreements\n";
     EXPECT_EQ(failures, 0);
+    EXPECT_EQ(scenes, 1200);
+}
+
+// The scenes of the exactness issue, by hand: a wheel held at (5, 0), (3, 4) and (-3, -4) by
+// normals through its centre (written with lengths 5, 5 and 5). Contacts 2 and 3 face each
+// other on one line, so neither can separate alone: the exact modes are fixed, both rolling
+// senses (lll, rrr: a rotation about the centre slides every contact the same way), and the
+// motions that lift contact 1 (s..): a rotation about a point of the line through contacts 2
+// and 3 slides them in the same sense, or fixes one (the centre of rotation at it).
+TEST(Modes, WheelWithNormalsThroughItsCentre) {
+    const std::vector<Contact> wheel = {Contact::make(Vec2(5, 0), Vec2(-5, 0), 0), Contact::make(Vec2(3, 4), Vec2(-3, -4), 0),
+                                        Contact::make(Vec2(-3, -4), Vec2(3, 4), 0)};
+    const std::set<std::string> expected = {"fff", "lll", "rrr", "sfl", "sll", "srf", "srl", "srr"};
+    EXPECT_EQ(mode_strings(wheel), expected);
+    EXPECT_EQ(testing::exact_modes(wheel), expected);
+    // Two contacts where the first one's normal line (x = 1.25) passes through the second
+    // point: rotating about the second point keeps it fixed and slides the first sideways (lf,
+    // rf), a knife edge that rounding the slanted normal (2, 1) to unit length lost. The same
+    // scene translated exactly by (-0.25, -0.125) has the same modes.
+    const std::vector<Contact> pair = {Contact::make(Vec2(1.25, -0.875), Vec2(0, 1), 0),
+                                       Contact::make(Vec2(1.25, 0.125), Vec2(2, 1), 0)};
+    const auto modes = mode_strings(pair);
+    EXPECT_EQ(modes, testing::exact_modes(pair));
+    EXPECT_TRUE(modes.count("lf") && modes.count("rf")) << joined(modes);
+    const std::vector<Contact> moved = {Contact::make(Vec2(1.0, -1.0), Vec2(0, 1), 0),
+                                        Contact::make(Vec2(1.0, 0.0), Vec2(2, 1), 0)};
+    EXPECT_EQ(mode_strings(moved), modes);
+}
+
+// At least 1,000 scenes with slanted normals in the families of the issue (concurrent, on a
+// circle, parallel, collinear, slanted integers; a third of them moved 2^20 .. 2^40 away from
+// the origin), each compared with the brute-force oracle and under a random exact transform
+// with itself.
+TEST(Modes, SlantedNormalsAgreeWithOracleAndUnderExactTransforms) {
+    testing::Random rnd(20261123);
+    const testing::SceneFamily families[] = {testing::SceneFamily::Concurrent, testing::SceneFamily::OnACircle,
+                                             testing::SceneFamily::Parallel, testing::SceneFamily::Collinear,
+                                             testing::SceneFamily::SlantedIntegers};
+    int scenes = 0, transformed = 0, failures = 0, far = 0;
+    std::map<std::string, int> transforms;
+    for (int i = 0; i < 1100 && failures < 10; ++i) {
+        const auto family = families[i % 5];
+        const bool is_far = i % 3 == 2;
+        const Scene scene = testing::random_scene(rnd, family, 4, is_far);
+        const auto ours = mode_strings(scene.contacts);
+        const auto expected = testing::exact_modes(scene.contacts);
+        ++scenes;
+        far += is_far;
+        if (ours != expected) {
+            ++failures;
+            ADD_FAILURE() << testing::scene_family_name(family) << ": ours " << joined(ours) << "\noracle: "
+                          << joined(expected) << "\nscene: " << describe(scene.contacts);
+            continue;
+        }
+        const testing::Transform t = testing::random_transform(rnd, scene.contacts.size());
+        if (!testing::exactly_representable(t, scene)) continue;
+        std::set<std::string> renamed;
+        for (const std::string& m : ours) renamed.insert(t.letters(m));
+        const auto after = mode_strings(t.apply(scene).contacts);
+        ++transformed;
+        ++transforms[t.name];
+        if (after != renamed) {
+            ++failures;
+            ADD_FAILURE() << t.name << " of " << testing::scene_family_name(family) << ": " << joined(after)
+                          << "\nexpected " << joined(renamed) << "\nscene: " << describe(scene.contacts);
+        }
+    }
+    std::cout << "[Modes] slanted normals: " << scenes << " scenes (" << far << " far from the origin), "
+              << transformed << " transformed exactly (";
+    for (const auto& [k, v] : transforms) std::cout << k << " " << v << ", ";
+    std::cout << "), " << failures << " disagreements\n";
+    EXPECT_EQ(failures, 0);
+    EXPECT_GE(scenes, 1000);
+    EXPECT_GE(transformed, 900);
+    for (const auto& [k, v] : transforms) EXPECT_GE(v, 100) << k;
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "../common/examples.hpp"
-#include "../physics/box2d_sim.hpp"
+#include "box2d_sim.hpp"
 
 #include <cmath>
 #include <cstdio>

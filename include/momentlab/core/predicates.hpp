@@ -7,7 +7,7 @@
 /// floating-point evaluation with a forward error bound answers most calls; when the bound
 /// cannot decide, an error-free expansion (Shewchuk 1997, "Adaptive precision floating-point
 /// arithmetic and fast robust geometric predicates") computes the exact value, and arguments
-/// with extreme exponents (outside 2^-250 .. 2^250) go to GMP rationals. No tolerance is
+/// with extreme exponents (outside 2^-250 .. 2^250) go to exact Dyadic numbers (core/dyadic.hpp). No tolerance is
 /// involved anywhere. Preconditions: all arguments finite (checked by the callers that take
 /// user input; asserted here in debug builds).
 
@@ -97,7 +97,7 @@ inline bool filter_decides(double value, double permanent) {
 /// Counters of the calls the floating-point filter could not decide (per thread).
 struct PredicateStats {
     long expansion = 0;  ///< decided by an error-free expansion
-    long gmp = 0;        ///< decided by GMP rationals (extreme exponents)
+    long dyadic = 0;     ///< decided in Dyadic arithmetic (extreme exponents)
 };
 
 /// The counters of the calling thread since the last reset.

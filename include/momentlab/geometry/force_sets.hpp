@@ -5,6 +5,7 @@
 /// Wrenches are (fx, fy, tau) with tau about the world origin (DESIGN, Conventions).
 
 #include <array>
+#include <vector>
 
 #include "momentlab/core/vec.hpp"
 #include "momentlab/geometry/cone.hpp"
@@ -21,19 +22,32 @@ namespace momentlab {
 /// All forces whose line of action passes through `point` (Figure 1b): a plane of wrenches.
 [[nodiscard]] Cone forces_through_point(const Vec2& point);
 
+/// The wrench (d, p x d) of the force d acting through p, exact.
+[[nodiscard]] ExactVector force_wrench(const Vec2& point, const Vec2& direction);
+
+/// An edge of the Coulomb cone with inward normal n (any length): n + mu t (`left`: the force
+/// opposing sliding along -t) or n - mu t, t = (n.y, -n.x); exact.
+[[nodiscard]] Exact2 friction_edge(const Exact2& normal, double mu, bool left);
+[[nodiscard]] Exact2 friction_edge(const Vec2& normal, double mu, bool left);
+
 /// The Coulomb friction cone of a point contact (Figure 1c): forces n + s t with |s| <= mu,
 /// t = (n.y, -n.x), acting at `point`; `normal` points into the body and need not be unit.
-/// The edges n +- mu t are rounded when mu * n is not representable (docs/robustness.md).
+/// Exact: the edges n +- mu t and their torques are exact expressions of the doubles given.
 /// Throws std::invalid_argument for a zero normal or mu < 0.
 [[nodiscard]] Cone friction_cone(const Vec2& point, const Vec2& normal, double mu);
 
-/// The two edges of the Coulomb cone at a contact, as wrenches: {n + mu t, n - mu t} acting at
-/// `point`, t = (n.y, -n.x). Friction opposing sliding along +t is the second edge (with the
-/// kinetic mu), along -t the first. No argument checks (see friction_cone).
-[[nodiscard]] inline std::array<Vec3, 2> friction_cone_edges(const Vec2& point, const Vec2& normal, double mu) {
-    const Vec2 t(normal.y(), -normal.x());
-    return {wrench_at(point, normal + mu * t), wrench_at(point, normal - mu * t)};
-}
+/// The two edges of the Coulomb cone at a contact, as exact wrenches: {n + mu t, n - mu t}
+/// acting at `point`, t = (n.y, -n.x). Friction opposing sliding along +t is the second edge
+/// (with the kinetic mu), along -t the first. No argument checks (see friction_cone).
+[[nodiscard]] std::array<ExactVector, 2> friction_cone_edges(const Vec2& point, const Vec2& normal, double mu);
+
+/// All forces with direction in cone(directions) (exact, in one open half-plane) whose line
+/// of action meets the segment a-b (a == b: passes through a): the directions with every pure
+/// moment, cut by the half-spaces of moments about a and b of opposite signs. Built from the
+/// directions and the points exactly (rounding the moments p x d of generators would tilt the
+/// plane of forces through a vertex off its true position). For a segment the directions must
+/// lie in one open side of its line.
+[[nodiscard]] Cone forces_across(const Vec2& a, const Vec2& b, const std::vector<Exact2>& directions);
 
 /// Pure moments: positive (sign > 0), negative (sign < 0) or both (sign == 0).
 [[nodiscard]] Cone pure_moments(int sign);

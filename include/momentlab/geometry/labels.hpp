@@ -26,18 +26,22 @@ struct Box {
 
 /// One sheet of the labels: the convex region conv(vertices) + cone(rays) + span(lines).
 struct Region {
-    /// Vertices as homogeneous points (x, y, s) with s > 0, exact constructions of the cone.
-    std::vector<Vec3> vertices_h;
-    /// Vertices (x/s, y/s), rounded.
+    /// Vertices as homogeneous points (x, y, s) with s > 0: exact constructions of the cone.
+    std::vector<ExactVector> vertices_h;
+    /// Directions in which the region is unbounded, as exact points at infinity (x, y, 0).
+    std::vector<ExactVector> rays_h;
+    /// Directions of lines contained in the region, as exact points at infinity (x, y, 0).
+    std::vector<ExactVector> lines_dir_h;
+    /// Vertices (x/s, y/s), rounded (infinite where x/s is beyond the double range).
     std::vector<Vec2> vertices;
-    /// Directions in which the region is unbounded (the extreme ones).
+    /// rays_h and lines_dir_h rounded (directions only).
     std::vector<Vec2> rays;
-    /// Directions of lines contained in the region.
     std::vector<Vec2> lines;
     /// Boundary order: the homogeneous points of the region's cone, counter-clockwise, with
-    /// s = 0 for directions at infinity (filled for pointed region cones).
+    /// s = 0 for directions at infinity (filled for pointed region cones; rounded).
     std::vector<Vec3> boundary;
-    /// Half-planes a x + b y + c >= 0 (as (a, b, c)) and lines (= 0) whose intersection it is.
+    /// Half-planes a x + b y + c >= 0 (as (a, b, c)) and lines (= 0) whose intersection it is
+    /// (rounded: for drawing).
     std::vector<Vec3> halfplanes;
     std::vector<Vec3> lines_h;
     bool is_empty = true;

@@ -29,7 +29,7 @@ namespace momentlab {
 [[nodiscard]] bool in_closed_polygon(std::span<const Vec2> polygon, const Vec2& p);
 
 /// True when the point p is within `distance` of the closed segment ab, exactly (squared
-/// distances compared in rationals, after a float filter with a wide margin).
+/// distances compared in exact arithmetic, after a float filter with a wide margin).
 [[nodiscard]] bool within_distance_of_segment(const Vec2& p, const Vec2& a, const Vec2& b, double distance);
 
 /// True when p is within `distance` of some edge of the polygon (exactly).

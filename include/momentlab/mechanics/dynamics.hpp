@@ -15,10 +15,6 @@
 
 namespace momentlab {
 
-/// The planar inertia at the world origin, M = [[m, 0, -m c.y], [0, m, m c.x],
-/// [-m c.y, m c.x, I_c + m |c|^2]], so that the total wrench is M times the acceleration twist.
-[[nodiscard]] Mat3 inertia_at_origin(const Body& body);
-
 /// The sets of one mode: twists A, total wrenches F = M A, contact wrenches T, applied
 /// wrenches E = F + (-T). All are closed cones (the closures of the mode's sets).
 struct ModeForces {

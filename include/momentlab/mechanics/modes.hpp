@@ -19,8 +19,7 @@ namespace momentlab {
 struct Mode {
     /// One letter per contact: 's', 'f', 'r' or 'l'.
     std::string letters;
-    /// The closure of the mode's twists (velocities, or accelerations at rest). Its generators
-    /// are exact rational directions rounded to doubles (exact for small integer scenes).
+    /// The closure of the mode's twists (velocities, or accelerations at rest), exact.
     Cone twists;
 };
 

@@ -8,12 +8,15 @@
 #include <string>
 #include <vector>
 
+#include "momentlab/core/exact.hpp"
 #include "momentlab/core/vec.hpp"
 
 namespace momentlab {
 
-/// A point contact. `normal` is a unit vector pointing into the moving body; the tangent is
-/// t = (n.y, -n.x); `mu` is the static and `mu_kinetic` the kinetic friction coefficient.
+/// A point contact. `normal` points into the moving body and is used exactly as written: any
+/// positive length (every condition is homogeneous in it, so nothing is rounded to unit
+/// length); the tangent is t = (n.y, -n.x); `mu` is the static and `mu_kinetic` the kinetic
+/// friction coefficient.
 struct Contact {
     Vec2 point = Vec2::Zero();
     Vec2 normal = Vec2(0.0, 1.0);
@@ -21,18 +24,18 @@ struct Contact {
     double mu_kinetic = 0.0;
     std::string name;
 
-    /// A contact with the normal scaled to unit length (rounded) and mu_kinetic defaulting to
-    /// mu. Throws std::invalid_argument for a zero or non-finite normal, a non-finite point or
-    /// a negative friction coefficient.
+    /// A contact with mu_kinetic defaulting to mu. Throws std::invalid_argument for a zero or
+    /// non-finite normal, a non-finite point or a negative friction coefficient.
     static Contact make(const Vec2& point, const Vec2& normal, double mu,
                         std::optional<double> mu_kinetic = std::nullopt, std::string name = {});
 
     /// t = (n.y, -n.x).
     [[nodiscard]] Vec2 tangent() const { return Vec2(normal.y(), -normal.x()); }
-    /// N = (n, p x n): N . xi is the normal velocity of the body point at the contact.
-    [[nodiscard]] Vec3 normal_wrench() const { return wrench_at(point, normal); }
-    /// T = (t, p x t): T . xi is its tangential velocity.
-    [[nodiscard]] Vec3 tangent_wrench() const { return wrench_at(point, tangent()); }
+    /// N = (n, p x n), exact: N . xi is the normal velocity of the body point at the contact
+    /// (times |n|).
+    [[nodiscard]] ExactVector normal_wrench() const;
+    /// T = (t, p x t), exact: T . xi is its tangential velocity (times |n|).
+    [[nodiscard]] ExactVector tangent_wrench() const;
 };
 
 /// A simple polygon given by its vertices, in either orientation (geometry/polygon.hpp checks).
@@ -42,9 +45,16 @@ using Polygon = std::vector<Vec2>;
 struct Body {
     double mass = 1.0;
     Vec2 com = Vec2::Zero();
+    /// The inertia about the centre of mass (rounded when given as a radius of gyration).
     double inertia = 1.0;
     Polygon polygon;
+    /// When set, the inertia is exactly mass * radius_of_gyration^2 (`inertia` is its rounding).
+    std::optional<double> radius_of_gyration;
 };
+
+/// The planar inertia at the world origin, exactly: M = [[m, 0, -m c.y], [0, m, m c.x],
+/// [-m c.y, m c.x, I_c + m |c|^2]], so that the total wrench is M times the acceleration twist.
+[[nodiscard]] ExactMatrix inertia_at_origin(const Body& body);
 
 /// A body (optional for purely kinematic questions), its contacts and the fixed obstacles.
 struct Scene {

@@ -1,18 +1,19 @@
 #pragma once
 
 // An independent exact oracle for cones: cddlib (Fukuda) in GMP rational mode. It shares no
-// code with momentlab; its inputs are the same doubles, converted exactly to rationals.
+// code with momentlab; its inputs are exact rationals (the same doubles converted exactly, or
+// quantities built from a scene's raw numbers in reference/exact_scene.hpp).
 
 #include <gmpxx.h>
 
 #include <array>
 #include <vector>
 
-#include "momentlab/core/vec.hpp"
+#include "exact_scene.hpp"
 
 namespace momentlab::oracle {
 
-using QVec = std::array<mpq_class, 3>;
+using reference::QVec;
 
 struct OracleCone {
     int dimension = 0;
@@ -21,9 +22,14 @@ struct OracleCone {
 };
 
 /// cone(generators), minimal V and H representations.
+OracleCone from_generators(const std::vector<QVec>& generators);
 OracleCone from_generators(const std::vector<Vec3>& generators);
 /// {x : n . x >= 0 for all normals}, minimal V and H representations.
+OracleCone from_halfspaces(const std::vector<QVec>& normals);
 OracleCone from_halfspaces(const std::vector<Vec3>& normals);
+
+/// True when the span of `a` equals the span of `b` (exact ranks).
+bool same_span(const std::vector<QVec>& a, const std::vector<QVec>& b);
 
 QVec exact(const Vec3& v);
 mpq_class dot(const QVec& a, const QVec& b);

@@ -15,7 +15,7 @@ void init() {
 }
 
 // Rows [first, x, y, z]; `first` is 1 for the origin point, 0 otherwise.
-dd_MatrixPtr make(const std::vector<Vec3>& rows, dd_RepresentationType rep, bool with_origin) {
+dd_MatrixPtr make(const std::vector<QVec>& rows, dd_RepresentationType rep, bool with_origin) {
     const long n = static_cast<long>(rows.size()) + (with_origin ? 1 : 0);
     dd_MatrixPtr m = dd_CreateMatrix(n, 4);
     m->representation = rep;
@@ -26,9 +26,9 @@ dd_MatrixPtr make(const std::vector<Vec3>& rows, dd_RepresentationType rep, bool
         for (int j = 1; j < 4; ++j) dd_set_si(m->matrix[r][j], 0);
         ++r;
     }
-    for (const Vec3& v : rows) {
+    for (const QVec& v : rows) {
         dd_set_si(m->matrix[r][0], 0);
-        for (int j = 0; j < 3; ++j) mpq_set_d(m->matrix[r][j + 1], v[j]);
+        for (int j = 0; j < 3; ++j) mpq_set(m->matrix[r][j + 1], v[static_cast<std::size_t>(j)].get_mpq_t());
         ++r;
     }
     return m;
@@ -93,14 +93,40 @@ OracleCone run(dd_MatrixPtr input, bool input_is_generators) {
     return out;
 }
 
+std::vector<QVec> exact_all(const std::vector<Vec3>& vs) {
+    std::vector<QVec> out;
+    for (const Vec3& v : vs) out.push_back(reference::q(v));
+    return out;
+}
+
+// The rank of a set of rational vectors (Gaussian elimination, exact).
+int rank(std::vector<QVec> rows) {
+    int r = 0;
+    for (std::size_t col = 0; col < 3 && static_cast<std::size_t>(r) < rows.size(); ++col) {
+        std::size_t pivot = static_cast<std::size_t>(r);
+        while (pivot < rows.size() && sgn(rows[pivot][col]) == 0) ++pivot;
+        if (pivot == rows.size()) continue;
+        std::swap(rows[pivot], rows[static_cast<std::size_t>(r)]);
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            if (i == static_cast<std::size_t>(r) || sgn(rows[i][col]) == 0) continue;
+            const mpq_class f = rows[i][col] / rows[static_cast<std::size_t>(r)][col];
+            for (std::size_t k = 0; k < 3; ++k) rows[i][k] -= f * rows[static_cast<std::size_t>(r)][k];
+        }
+        ++r;
+    }
+    return r;
+}
+
 }  // namespace
 
-OracleCone from_generators(const std::vector<Vec3>& generators) {
+OracleCone from_generators(const std::vector<QVec>& generators) {
     init();
     return run(make(generators, dd_Generator, true), true);
 }
 
-OracleCone from_halfspaces(const std::vector<Vec3>& normals) {
+OracleCone from_generators(const std::vector<Vec3>& generators) { return from_generators(exact_all(generators)); }
+
+OracleCone from_halfspaces(const std::vector<QVec>& normals) {
     init();
     if (normals.empty()) {
         // cdd needs at least one row: the trivial inequality 1 >= 0.
@@ -109,9 +135,18 @@ OracleCone from_halfspaces(const std::vector<Vec3>& normals) {
     return run(make(normals, dd_Inequality, false), false);
 }
 
-QVec exact(const Vec3& v) { return {mpq_class(v.x()), mpq_class(v.y()), mpq_class(v.z())}; }
+OracleCone from_halfspaces(const std::vector<Vec3>& normals) { return from_halfspaces(exact_all(normals)); }
 
-mpq_class dot(const QVec& a, const QVec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+bool same_span(const std::vector<QVec>& a, const std::vector<QVec>& b) {
+    std::vector<QVec> both = a;
+    both.insert(both.end(), b.begin(), b.end());
+    const int r = rank(both);
+    return rank(a) == r && rank(b) == r;
+}
+
+QVec exact(const Vec3& v) { return reference::q(v); }
+
+mpq_class dot(const QVec& a, const QVec& b) { return reference::dot(a, b); }
 
 int sign(const mpq_class& q) { return sgn(q); }
 

@@ -10,7 +10,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "momentlab/mechanics/dynamics.hpp"
 
 namespace momentlab::validation {
 
@@ -40,13 +39,20 @@ CoulombLcp::CoulombLcp(const Scene& scene) : siconos_(std::make_unique<Siconos>(
     const int n = static_cast<int>(scene.contacts.size());
     contacts_ = n;
     size_ = 4 * n;
-    minv_ = inertia_at_origin(*scene.body).inverse();
+    // The LCP's own matrices, in doubles, from the scene's raw numbers (nothing of momentlab's).
+    const Body& b = *scene.body;
+    const double m = b.mass, cx = b.com.x(), cy = b.com.y();
+    const double inertia = b.radius_of_gyration ? m * *b.radius_of_gyration * *b.radius_of_gyration : b.inertia;
+    Eigen::Matrix3d mass;
+    mass << m, 0.0, -m * cy, 0.0, m, m * cx, -m * cy, m * cx, inertia + m * (cx * cx + cy * cy);
+    minv_ = mass.inverse();
     d_.resize(3, 3 * n);
     for (int j = 0; j < n; ++j) {
         const Contact& c = scene.contacts[static_cast<std::size_t>(j)];
-        d_.col(j) = c.normal_wrench();
-        d_.col(n + j) = c.tangent_wrench();
-        d_.col(2 * n + j) = -c.tangent_wrench();
+        const Vec2 p = c.point, nv = c.normal, t(nv.y(), -nv.x());
+        d_.col(j) = Vec3(nv.x(), nv.y(), p.x() * nv.y() - p.y() * nv.x());
+        d_.col(n + j) = Vec3(t.x(), t.y(), p.x() * t.y() - p.y() * t.x());
+        d_.col(2 * n + j) = -d_.col(n + j);
     }
     // w_n = N'a, w_+ = sigma + T'a, w_- = sigma - T'a, w_s = mu lambda_n - lambda_+ - lambda_-,
     // with a = M^-1 (e + D lambda).

@@ -8,24 +8,27 @@
 #include <string>
 #include <vector>
 
-#include "momentlab/core/vec.hpp"
+#include "exact_scene.hpp"
 
 namespace momentlab::oracle {
+
+using reference::QMat;
+using reference::QVec;
 
 /// True when some twist xi has, for each contact j with letter labels[j]:
 /// s: N_j . xi > 0; f: N_j . xi = 0 = T_j . xi; r: N_j . xi = 0 < T_j . xi; l: ... T_j . xi < 0.
 /// `labels` may be shorter than the contact list (a prefix).
-bool realisable(const std::vector<Vec3>& n, const std::vector<Vec3>& t, const std::string& labels);
+bool realisable(const std::vector<QVec>& n, const std::vector<QVec>& t, const std::string& labels);
 
 /// Every realisable full labelling, by depth-first search over prefixes (a prefix that is not
 /// realisable has no realisable extension).
-std::set<std::string> all_modes(const std::vector<Vec3>& n, const std::vector<Vec3>& t);
+std::set<std::string> all_modes(const std::vector<QVec>& n, const std::vector<QVec>& t);
 
 /// True when the applied wrench e is in the closed set E of the mode `labels`: some twist xi
 /// in the closure of the mode's twists and contact forces c_j = sum_k alpha_jk g_jk
 /// (alpha >= 0, generators g_jk given per contact for its letter) with M xi = e + sum_j c_j.
-bool applied_in_mode(const Mat3& m, const std::vector<Vec3>& n, const std::vector<Vec3>& t,
-                     const std::vector<std::vector<Vec3>>& contact_generators,
-                     const std::string& labels, const Vec3& e);
+bool applied_in_mode(const QMat& m, const std::vector<QVec>& n, const std::vector<QVec>& t,
+                     const std::vector<std::vector<QVec>>& contact_generators,
+                     const std::string& labels, const QVec& e);
 
 }  // namespace momentlab::oracle

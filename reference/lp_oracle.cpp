@@ -15,16 +15,16 @@ void init() {
 }
 
 // Row r of the LP in the variables (xi_1, xi_2, xi_3, t): b + a . x >= 0 (or = 0 if `equal`).
-void set_row(dd_MatrixPtr m, long r, const Vec3& a, double slack, double b, bool equal) {
-    mpq_set_d(m->matrix[r][0], b);
-    for (int i = 0; i < 3; ++i) mpq_set_d(m->matrix[r][i + 1], a[i]);
-    mpq_set_d(m->matrix[r][4], slack);
+void set_row(dd_MatrixPtr m, long r, const QVec& a, int slack, int b, bool equal) {
+    mpq_set_si(m->matrix[r][0], b, 1);
+    for (int i = 0; i < 3; ++i) mpq_set(m->matrix[r][i + 1], a[static_cast<std::size_t>(i)].get_mpq_t());
+    mpq_set_si(m->matrix[r][4], slack, 1);
     if (equal) set_addelem(m->linset, r + 1);
 }
 
 }  // namespace
 
-bool realisable(const std::vector<Vec3>& n, const std::vector<Vec3>& t, const std::string& labels) {
+bool realisable(const std::vector<QVec>& n, const std::vector<QVec>& t, const std::string& labels) {
     init();
     long rows = 1;  // t <= 1
     bool strict = false;
@@ -37,21 +37,21 @@ bool realisable(const std::vector<Vec3>& n, const std::vector<Vec3>& t, const st
     m->representation = dd_Inequality;
     m->numbtype = dd_Rational;
     long r = 0;
-    set_row(m, r++, Vec3::Zero(), -1.0, 1.0, false);
+    set_row(m, r++, QVec{0, 0, 0}, -1, 1, false);
     for (std::size_t j = 0; j < labels.size(); ++j) {
         switch (labels[j]) {
-            case 's': set_row(m, r++, n[j], -1.0, 0.0, false); break;
+            case 's': set_row(m, r++, n[j], -1, 0, false); break;
             case 'f':
-                set_row(m, r++, n[j], 0.0, 0.0, true);
-                set_row(m, r++, t[j], 0.0, 0.0, true);
+                set_row(m, r++, n[j], 0, 0, true);
+                set_row(m, r++, t[j], 0, 0, true);
                 break;
             case 'r':
-                set_row(m, r++, n[j], 0.0, 0.0, true);
-                set_row(m, r++, t[j], -1.0, 0.0, false);
+                set_row(m, r++, n[j], 0, 0, true);
+                set_row(m, r++, t[j], -1, 0, false);
                 break;
             default:
-                set_row(m, r++, n[j], 0.0, 0.0, true);
-                set_row(m, r++, -t[j], -1.0, 0.0, false);
+                set_row(m, r++, n[j], 0, 0, true);
+                set_row(m, r++, reference::neg(t[j]), -1, 0, false);
                 break;
         }
     }
@@ -68,11 +68,11 @@ bool realisable(const std::vector<Vec3>& n, const std::vector<Vec3>& t, const st
     return ok;
 }
 
-bool applied_in_mode(const Mat3& m, const std::vector<Vec3>& n, const std::vector<Vec3>& t,
-                     const std::vector<std::vector<Vec3>>& contact_generators,
-                     const std::string& labels, const Vec3& e) {
+bool applied_in_mode(const QMat& m, const std::vector<QVec>& n, const std::vector<QVec>& t,
+                     const std::vector<std::vector<QVec>>& contact_generators,
+                     const std::string& labels, const QVec& e) {
     init();
-    std::vector<Vec3> gens;
+    std::vector<QVec> gens;
     for (const auto& list : contact_generators) gens.insert(gens.end(), list.begin(), list.end());
     const long k = static_cast<long>(gens.size());
     long rows = 3 + k;
@@ -86,23 +86,26 @@ bool applied_in_mode(const Mat3& m, const std::vector<Vec3>& n, const std::vecto
     }
     long r = 0;
     for (int i = 0; i < 3; ++i, ++r) {  // (M xi)_i - sum alpha g_i - e_i = 0
-        mpq_set_d(a->matrix[r][0], -e[i]);
-        for (int j = 0; j < 3; ++j) mpq_set_d(a->matrix[r][1 + j], m(i, j));
-        for (long q = 0; q < k; ++q) mpq_set_d(a->matrix[r][4 + q], -gens[static_cast<std::size_t>(q)][i]);
+        const auto row = static_cast<std::size_t>(i);
+        mpq_set(a->matrix[r][0], mpq_class(-e[row]).get_mpq_t());
+        for (int j = 0; j < 3; ++j) mpq_set(a->matrix[r][1 + j], m[row][static_cast<std::size_t>(j)].get_mpq_t());
+        for (long q = 0; q < k; ++q) {
+            mpq_set(a->matrix[r][4 + q], mpq_class(-gens[static_cast<std::size_t>(q)][row]).get_mpq_t());
+        }
         set_addelem(a->linset, r + 1);
     }
     for (long q = 0; q < k; ++q, ++r) dd_set_si(a->matrix[r][4 + q], 1);  // alpha >= 0
-    auto twist_row = [&](const Vec3& v, double s, bool equal) {
-        for (int j = 0; j < 3; ++j) mpq_set_d(a->matrix[r][1 + j], s * v[j]);
+    auto twist_row = [&](const QVec& v, int s, bool equal) {
+        for (int j = 0; j < 3; ++j) mpq_set(a->matrix[r][1 + j], mpq_class(s * v[static_cast<std::size_t>(j)]).get_mpq_t());
         if (equal) set_addelem(a->linset, r + 1);
         ++r;
     };
     for (std::size_t j = 0; j < labels.size(); ++j) {
         switch (labels[j]) {
-            case 's': twist_row(n[j], 1.0, false); break;
-            case 'f': twist_row(n[j], 1.0, true); twist_row(t[j], 1.0, true); break;
-            case 'r': twist_row(n[j], 1.0, true); twist_row(t[j], 1.0, false); break;
-            default: twist_row(n[j], 1.0, true); twist_row(t[j], -1.0, false); break;
+            case 's': twist_row(n[j], 1, false); break;
+            case 'f': twist_row(n[j], 1, true); twist_row(t[j], 1, true); break;
+            case 'r': twist_row(n[j], 1, true); twist_row(t[j], 1, false); break;
+            default: twist_row(n[j], 1, true); twist_row(t[j], -1, false); break;
         }
     }
     a->objective = dd_LPmax;
@@ -118,7 +121,7 @@ bool applied_in_mode(const Mat3& m, const std::vector<Vec3>& n, const std::vecto
     return ok;
 }
 
-std::set<std::string> all_modes(const std::vector<Vec3>& n, const std::vector<Vec3>& t) {
+std::set<std::string> all_modes(const std::vector<QVec>& n, const std::vector<QVec>& t) {
     std::set<std::string> out;
     std::vector<std::string> stack = {""};
     while (!stack.empty()) {

@@ -1,0 +1,144 @@
+#pragma once
+
+/// \file
+/// Exact vectors of R^3 and the exact predicates on them: the one home of momentlab's exact
+/// arithmetic beyond single doubles (core/predicates.hpp has the predicates on doubles,
+/// core/dyadic.hpp the numbers).
+///
+/// Every vector momentlab decides with is an exact expression of the input doubles: a
+/// contact wrench (n, p x n), a friction edge n + mu t acting at p, a facet normal u x v, an
+/// image M r under the inertia matrix. An `ExactVector` carries that exact value, a rounded
+/// value for printing, and a certified approximation. Predicates (signs of dot products,
+/// 2x2 minors and 3x3 determinants) first evaluate the approximations with a forward error
+/// bound and fall back to exact Dyadic arithmetic only when the bound cannot decide
+/// (docs/robustness.md).
+
+#include <array>
+#include <memory>
+
+#include "momentlab/core/dyadic.hpp"
+#include "momentlab/core/predicates.hpp"
+#include "momentlab/core/vec.hpp"
+
+namespace momentlab {
+
+/// Exact vectors and matrices of Dyadic numbers.
+using Exact2 = std::array<Dyadic, 2>;
+using Exact3 = std::array<Dyadic, 3>;
+/// A 3x3 matrix by rows.
+using ExactMatrix = std::array<Exact3, 3>;
+
+/// The doubles of v, exactly.
+[[nodiscard]] Exact2 exact(const Vec2& v);
+[[nodiscard]] Exact3 exact(const Vec3& v);
+[[nodiscard]] ExactMatrix exact(const Mat3& m);
+
+[[nodiscard]] Dyadic dot(const Exact3& a, const Exact3& b);
+[[nodiscard]] Exact3 cross(const Exact3& a, const Exact3& b);
+/// det[a b c] = a . (b x c).
+[[nodiscard]] Dyadic det(const Exact3& a, const Exact3& b, const Exact3& c);
+/// The planar cross product a.x b.y - a.y b.x.
+[[nodiscard]] Dyadic cross2(const Exact2& a, const Exact2& b);
+[[nodiscard]] Exact3 operator+(const Exact3& a, const Exact3& b);
+[[nodiscard]] Exact3 operator-(const Exact3& a, const Exact3& b);
+[[nodiscard]] Exact3 operator-(const Exact3& a);
+[[nodiscard]] Exact3 operator*(const Dyadic& s, const Exact3& a);
+[[nodiscard]] Exact3 operator*(const ExactMatrix& m, const Exact3& a);
+[[nodiscard]] Exact2 operator+(const Exact2& a, const Exact2& b);
+[[nodiscard]] Exact2 operator-(const Exact2& a, const Exact2& b);
+[[nodiscard]] Exact2 operator*(const Dyadic& s, const Exact2& a);
+[[nodiscard]] bool is_zero(const Exact3& a);
+/// The vector rounded coordinate by coordinate (each with relative error below 2^-52).
+[[nodiscard]] Vec3 to_double(const Exact3& a);
+[[nodiscard]] Vec2 to_double(const Exact2& a);
+
+/// The wrench of the force d acting through p: (d, p x d), exactly.
+[[nodiscard]] Exact3 wrench_through(const Exact2& p, const Exact2& d);
+
+/// A vector of R^3 known exactly: stored doubles (an input), sign * (u x v) for two stored
+/// vectors u, v (kept as u and v, the product computed only when needed), or any other exact
+/// vector (its Dyadic coordinates, shared between copies). `value()` is a rounded copy for
+/// printing; every predicate is exact.
+class ExactVector {
+public:
+    /// Zero.
+    ExactVector() = default;
+    /// A stored input vector.
+    static ExactVector input(const Vec3& v);
+    /// The construction sign * (u x v) of two stored vectors; `sign` is +1 or -1.
+    static ExactVector cross(const Vec3& u, const Vec3& v, int sign);
+    /// sign * (u x v) for any exact u, v.
+    static ExactVector cross(const ExactVector& u, const ExactVector& v, int sign = 1);
+    /// The exact vector e (an input when every coordinate is a double).
+    static ExactVector from_exact(const Exact3& e);
+
+    /// The rounded value, scaled by a power of two (or, for integers, divided by their gcd) to a
+    /// readable magnitude: the same direction, always finite. Exact for inputs.
+    [[nodiscard]] const Vec3& value() const { return value_; }
+    /// True for constructions, false for inputs.
+    [[nodiscard]] bool is_constructed() const { return kind_ != Kind::Input; }
+    /// The exact sign of (this vector) . w.
+    [[nodiscard]] Sign dot_sign(const Vec3& w) const;
+    /// The exact sign of (this vector) . other.
+    [[nodiscard]] Sign dot_sign(const ExactVector& other) const;
+    /// -v, with the same exactness.
+    [[nodiscard]] ExactVector negated() const;
+    /// The exact coordinates.
+    [[nodiscard]] Exact3 exact() const;
+    /// The image P v under a signed permutation matrix P (exact).
+    [[nodiscard]] ExactVector signed_permuted(const Mat3& p) const;
+    /// The image M v under an exact matrix.
+    [[nodiscard]] ExactVector transformed(const ExactMatrix& m) const;
+
+    /// A certified approximation: the exact vector is 2^k (approx + d) for some integer k, with
+    /// |d_i| <= err and max |approx_i| <= 2; err is +inf when there is none (then every
+    /// predicate takes the exact path).
+    struct Approximation {
+        Vec3 approx = Vec3::Zero();
+        double err = 0.0;
+    };
+    [[nodiscard]] Approximation approximation() const;
+
+    /// A rounded copy for a certified float filter of dot products (QueryIndex).
+    struct Filter {
+        Vec3 approx;   ///< the exact vector divided by a power of two, rounded
+        double bound;  ///< |v . w / 2^k - fl(approx . w)| <= bound * max_k |w_k| for finite w
+                       ///< with max_k |w_k| in [2^-300, 2^300] (any evaluation order), or +inf
+    };
+    [[nodiscard]] Filter filter() const;
+
+private:
+    enum class Kind : unsigned char { Input, Cross, Computed };
+    struct Computed {
+        Exact3 exact;
+        Approximation approximation;
+    };
+    static ExactVector computed(Exact3 e);
+
+    Vec3 value_ = Vec3::Zero();
+    Vec3 u_ = Vec3::Zero();
+    Vec3 v_ = Vec3::Zero();
+    std::shared_ptr<const Computed> computed_;
+    signed char sign_ = 1;  // Cross and Computed: the vector is sign_ times the construction
+    Kind kind_ = Kind::Input;
+};
+
+/// The exact sign of a . b.
+[[nodiscard]] Sign dot_sign(const ExactVector& a, const ExactVector& b);
+/// The exact sign of det[a b c].
+[[nodiscard]] Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c);
+/// The exact sign of the minor a[i] b[j] - a[j] b[i].
+[[nodiscard]] Sign minor_sign(const ExactVector& a, const ExactVector& b, int i, int j);
+/// True when a x b = 0 exactly.
+[[nodiscard]] bool parallel(const ExactVector& a, const ExactVector& b);
+/// True when every coordinate is exactly zero.
+[[nodiscard]] bool is_zero(const ExactVector& v);
+
+/// Counters of the exact-vector predicates the approximations could not decide (per thread).
+struct ExactStats {
+    long filtered = 0;  ///< decided by the certified approximations
+    long exact = 0;     ///< decided in Dyadic arithmetic
+};
+[[nodiscard]] ExactStats& exact_stats();
+
+}  // namespace momentlab

@@ -1,0 +1,49 @@
+#pragma once
+
+// The exact LP oracle (reference/lp_oracle) asked about a scene: every quantity built in exact
+// rationals from the scene's raw numbers (reference/exact_scene.hpp), following the definitions
+// (docs/design.md, "Per-mode force sets"), never from momentlab's wrenches, matrices or cones.
+// f: the friction cone's edges n +- mu t; r: n - mu_k t; l: n + mu_k t; s: none.
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "exact_scene.hpp"
+#include "lp_oracle.hpp"
+
+namespace momentlab::testing {
+
+/// The contacts' N_j and T_j, exactly.
+struct ExactContacts {
+    std::vector<reference::QVec> n, t;
+    std::vector<reference::QContact> raw;
+    explicit ExactContacts(const std::vector<Contact>& contacts) {
+        for (const Contact& c : contacts) {
+            raw.emplace_back(c);
+            n.push_back(raw.back().normal());
+            t.push_back(raw.back().tangent());
+        }
+    }
+};
+
+/// Every contact mode of the contacts, by brute force over {s, f, r, l}^n with exact LPs.
+inline std::set<std::string> exact_modes(const std::vector<Contact>& contacts) {
+    const ExactContacts c(contacts);
+    return oracle::all_modes(c.n, c.t);
+}
+
+/// Whether the applied wrench e (exact rationals) is in the closed E of the mode `letters`,
+/// by one exact rational LP.
+inline bool exact_lp_applied_in_mode(const Scene& scene, const std::string& letters, const reference::QVec& e) {
+    const ExactContacts c(scene.contacts);
+    std::vector<std::vector<reference::QVec>> generators;
+    for (std::size_t j = 0; j < scene.contacts.size(); ++j) generators.push_back(c.raw[j].generators(letters[j]));
+    return oracle::applied_in_mode(reference::inertia(*scene.body), c.n, c.t, generators, letters, e);
+}
+
+inline bool exact_lp_applied_in_mode(const Scene& scene, const std::string& letters, const Vec3& e) {
+    return exact_lp_applied_in_mode(scene, letters, reference::q(e));
+}
+
+}  // namespace momentlab::testing

@@ -1,0 +1,361 @@
+// Exact vectors (core/exact.hpp): certified approximations first, Dyadic arithmetic when they
+// cannot decide.
+//
+// The filters. Each operand is 2^k (a + d) with |d_i| <= err and max |a_i| <= 2 (a positive
+// power of two never changes a sign). For a determinant, det(a+da, b+db, c+dc) - det(a, b, c)
+// telescopes into det(da, b+db, c+dc) + det(a, db, c+dc) + det(a, b, dc), and |det(x, y, z)| <=
+// max|x_i| |y|_1 |z|_1, so the approximations' errors add at most
+// ea (|b|_1 + 3 eb)(|c|_1 + 3 ec) + eb |a|_1 (|c|_1 + 3 ec) + ec |a|_1 |b|_1. The evaluation in
+// doubles adds at most 5u per term of the permanent (u = 2^-53: five roundings deep); 8u is
+// used. Products of numbers below 2 never overflow; an absolute 2^-1000 covers underflow. Dot
+// products and 2x2 minors are bounded the same way.
+#include "momentlab/core/exact.hpp"
+
+#include <cassert>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <numeric>
+
+namespace momentlab {
+namespace {
+
+constexpr double kU = 0x1p-53;
+constexpr double kUnderflow = 0x1p-1000;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+thread_local ExactStats g_stats;
+
+// v scaled by a power of two so that its largest coordinate lies in [1, 2).
+Vec3 scaled_by_power_of_two(const Vec3& v) {
+    const double m = v.cwiseAbs().maxCoeff();
+    if (m == 0.0 || !std::isfinite(m)) return v;
+    int e = 0;
+    std::frexp(m, &e);
+    return Vec3(std::ldexp(v.x(), 1 - e), std::ldexp(v.y(), 1 - e), std::ldexp(v.z(), 1 - e));
+}
+
+// For display: integer vectors are divided by the gcd of their coordinates (exact), others are
+// left as they are unless far from 1, then scaled by a power of two. Neither changes the
+// direction.
+Vec3 readable(const Vec3& v) {
+    const double limit = 0x1p53;
+    bool integral = true;
+    for (int i = 0; i < 3; ++i) {
+        if (v[i] != std::floor(v[i]) || std::fabs(v[i]) >= limit) integral = false;
+    }
+    if (integral) {
+        long long g = 0;
+        for (int i = 0; i < 3; ++i) g = std::gcd(g, std::llabs(static_cast<long long>(v[i])));
+        if (g > 1) return v / static_cast<double>(g);
+        return v;
+    }
+    const double m = v.cwiseAbs().maxCoeff();
+    return m > 0x1p-64 && m < 0x1p64 ? v : scaled_by_power_of_two(v);
+}
+
+double norm1(const Vec3& v) { return std::fabs(v.x()) + std::fabs(v.y()) + std::fabs(v.z()); }
+
+bool det_filter(const ExactVector::Approximation& pa, const ExactVector::Approximation& pb,
+                const ExactVector::Approximation& pc, Sign& out) {
+    if (!(pa.err < kInf && pb.err < kInf && pc.err < kInf)) return false;
+    const Vec3 &a = pa.approx, &b = pb.approx, &c = pc.approx;
+    const double m0 = b.y() * c.z(), m1 = b.z() * c.y();
+    const double m2 = b.z() * c.x(), m3 = b.x() * c.z();
+    const double m4 = b.x() * c.y(), m5 = b.y() * c.x();
+    const double value = a.x() * (m0 - m1) + a.y() * (m2 - m3) + a.z() * (m4 - m5);
+    const double permanent = std::fabs(a.x()) * (std::fabs(m0) + std::fabs(m1)) +
+                             std::fabs(a.y()) * (std::fabs(m2) + std::fabs(m3)) +
+                             std::fabs(a.z()) * (std::fabs(m4) + std::fabs(m5));
+    const double na = norm1(a), nb = norm1(b), nc = norm1(c);
+    const double propagated = pa.err * (nb + 3 * pb.err) * (nc + 3 * pc.err) + pb.err * na * (nc + 3 * pc.err) +
+                              pc.err * na * nb;
+    const double bound = (8 * kU * permanent + propagated + kUnderflow) * (1 + 0x1p-40);
+    if (!(std::fabs(value) > bound)) return false;
+    out = sign_of(value);
+    return true;
+}
+
+bool dot_filter(const ExactVector::Approximation& pa, const ExactVector::Approximation& pb, Sign& out) {
+    if (!(pa.err < kInf && pb.err < kInf)) return false;
+    const Vec3 &a = pa.approx, &b = pb.approx;
+    const double p0 = a.x() * b.x(), p1 = a.y() * b.y(), p2 = a.z() * b.z();
+    const double value = p0 + p1 + p2;
+    const double permanent = std::fabs(p0) + std::fabs(p1) + std::fabs(p2);
+    const double propagated = pa.err * (norm1(b) + 3 * pb.err) + pb.err * norm1(a);
+    const double bound = (4 * kU * permanent + propagated + kUnderflow) * (1 + 0x1p-40);
+    if (!(std::fabs(value) > bound)) return false;
+    out = sign_of(value);
+    return true;
+}
+
+bool minor_filter(const ExactVector::Approximation& pa, const ExactVector::Approximation& pb, int i, int j,
+                  Sign& out) {
+    if (!(pa.err < kInf && pb.err < kInf)) return false;
+    const Vec3 &a = pa.approx, &b = pb.approx;
+    const double p = a[i] * b[j], q = a[j] * b[i];
+    const double value = p - q;
+    const double propagated = pa.err * (std::fabs(b[i]) + std::fabs(b[j]) + 2 * pb.err) +
+                              pb.err * (std::fabs(a[i]) + std::fabs(a[j]));
+    const double bound = (3 * kU * (std::fabs(p) + std::fabs(q)) + propagated + kUnderflow) * (1 + 0x1p-40);
+    if (!(std::fabs(value) > bound)) return false;
+    out = sign_of(value);
+    return true;
+}
+
+ExactVector::Approximation input_approximation(const Vec3& v) {
+    const double m = v.cwiseAbs().maxCoeff();
+    if (m == 0.0) return {Vec3::Zero(), 0.0};
+    int e = 0;
+    std::frexp(m, &e);
+    ExactVector::Approximation out{Vec3::Zero(), 0.0};
+    for (int i = 0; i < 3; ++i) {
+        out.approx[i] = std::ldexp(v[i], 1 - e);
+        if (std::ldexp(out.approx[i], e - 1) != v[i]) out.err = kUnderflow;  // a tiny coordinate lost bits
+    }
+    return out;
+}
+
+ExactVector::Approximation exact_approximation(const Exact3& v) {
+    std::int64_t top = std::numeric_limits<std::int64_t>::min();
+    for (const Dyadic& x : v) {
+        if (!x.is_zero()) top = std::max(top, x.exponent());
+    }
+    if (top == std::numeric_limits<std::int64_t>::min()) return {Vec3::Zero(), 0.0};
+    // Each coordinate rounded with relative error below 2^-52 on a scale where the largest is
+    // in [1, 2); coordinates below the double range flush to 0 (error below 2^-1022).
+    return {Vec3(v[0].to_double_scaled(top), v[1].to_double_scaled(top), v[2].to_double_scaled(top)), 0x1p-50};
+}
+
+Sign exact_sign(const Dyadic& x) {
+    ++g_stats.exact;
+    return x.sign();
+}
+
+}  // namespace
+
+ExactStats& exact_stats() { return g_stats; }
+
+// ---------------------------------------------------------------------------------------------
+// Dyadic vectors.
+
+Exact2 exact(const Vec2& v) { return {Dyadic(v.x()), Dyadic(v.y())}; }
+
+Exact3 exact(const Vec3& v) { return {Dyadic(v.x()), Dyadic(v.y()), Dyadic(v.z())}; }
+
+ExactMatrix exact(const Mat3& m) {
+    return {exact(Vec3(m.row(0).transpose())), exact(Vec3(m.row(1).transpose())), exact(Vec3(m.row(2).transpose()))};
+}
+
+Dyadic dot(const Exact3& a, const Exact3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+Exact3 cross(const Exact3& a, const Exact3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+Dyadic det(const Exact3& a, const Exact3& b, const Exact3& c) { return dot(a, cross(b, c)); }
+
+Dyadic cross2(const Exact2& a, const Exact2& b) { return a[0] * b[1] - a[1] * b[0]; }
+
+Exact3 operator+(const Exact3& a, const Exact3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+
+Exact3 operator-(const Exact3& a, const Exact3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
+Exact3 operator-(const Exact3& a) { return {-a[0], -a[1], -a[2]}; }
+
+Exact3 operator*(const Dyadic& s, const Exact3& a) { return {s * a[0], s * a[1], s * a[2]}; }
+
+Exact3 operator*(const ExactMatrix& m, const Exact3& a) { return {dot(m[0], a), dot(m[1], a), dot(m[2], a)}; }
+
+Exact2 operator+(const Exact2& a, const Exact2& b) { return {a[0] + b[0], a[1] + b[1]}; }
+
+Exact2 operator-(const Exact2& a, const Exact2& b) { return {a[0] - b[0], a[1] - b[1]}; }
+
+Exact2 operator*(const Dyadic& s, const Exact2& a) { return {s * a[0], s * a[1]}; }
+
+bool is_zero(const Exact3& a) { return a[0].is_zero() && a[1].is_zero() && a[2].is_zero(); }
+
+Vec3 to_double(const Exact3& a) { return Vec3(a[0].to_double(), a[1].to_double(), a[2].to_double()); }
+
+Vec2 to_double(const Exact2& a) { return Vec2(a[0].to_double(), a[1].to_double()); }
+
+Exact3 wrench_through(const Exact2& p, const Exact2& d) { return {d[0], d[1], cross2(p, d)}; }
+
+// ---------------------------------------------------------------------------------------------
+// ExactVector.
+
+ExactVector ExactVector::input(const Vec3& v) {
+    ExactVector e;
+    e.value_ = v;
+    return e;
+}
+
+ExactVector ExactVector::cross(const Vec3& u, const Vec3& v, int sign) {
+    ExactVector e;
+    e.kind_ = Kind::Cross;
+    e.u_ = u;
+    e.v_ = v;
+    e.sign_ = sign >= 0 ? 1 : -1;
+    // The plain product is exact for small integers; if it overflows (or underflows to zero),
+    // scaling the factors first by powers of two keeps it finite for any finite input.
+    Vec3 raw = u.cross(v);
+    const double m = raw.cwiseAbs().maxCoeff();
+    if (!(m > 0x1p-900 && m < 0x1p900)) raw = scaled_by_power_of_two(u).cross(scaled_by_power_of_two(v));
+    e.value_ = readable(raw) * static_cast<double>(e.sign_);
+    return e;
+}
+
+ExactVector ExactVector::cross(const ExactVector& u, const ExactVector& v, int sign) {
+    if (u.kind_ == Kind::Input && v.kind_ == Kind::Input) return cross(u.value_, v.value_, sign);
+    Exact3 c = momentlab::cross(u.exact(), v.exact());
+    return from_exact(sign >= 0 ? c : -c);
+}
+
+ExactVector ExactVector::from_exact(const Exact3& e) {
+    if (e[0].fits_double() && e[1].fits_double() && e[2].fits_double()) return input(to_double(e));
+    return computed(e);
+}
+
+ExactVector ExactVector::computed(Exact3 e) {
+    ExactVector out;
+    out.kind_ = Kind::Computed;
+    auto block = std::make_shared<Computed>();
+    block->approximation = exact_approximation(e);
+    // The value on its own scale when that is readable, else on the approximation's.
+    const Vec3 plain = to_double(e);
+    out.value_ = plain.allFinite() && plain.cwiseAbs().maxCoeff() > 0x1p-64 && plain.cwiseAbs().maxCoeff() < 0x1p64
+                     ? readable(plain)
+                     : block->approximation.approx;
+    block->exact = std::move(e);
+    out.computed_ = std::move(block);
+    return out;
+}
+
+Exact3 ExactVector::exact() const {
+    switch (kind_) {
+        case Kind::Input: return momentlab::exact(value_);
+        case Kind::Cross: {
+            const Exact3 c = momentlab::cross(momentlab::exact(u_), momentlab::exact(v_));
+            return sign_ > 0 ? c : -c;
+        }
+        case Kind::Computed: return sign_ > 0 ? computed_->exact : -computed_->exact;
+    }
+    return {};
+}
+
+ExactVector::Approximation ExactVector::approximation() const {
+    switch (kind_) {
+        case Kind::Input: return input_approximation(value_);
+        case Kind::Cross: {
+            // |fl(fl(p) - fl(q)) - (p - q)| <= (2u + u^2)(|p| + |q|) per coordinate; scaled so that
+            // the largest |p| + |q| lies in [1, 2), the error is below 2^-50 (with the underflow
+            // of products, absolute 2^-1075, far below it while that largest is >= 2^-900).
+            const Vec3 &p = u_, &q = v_;
+            const double b0 = std::fabs(p.y() * q.z()) + std::fabs(p.z() * q.y());
+            const double b1 = std::fabs(p.z() * q.x()) + std::fabs(p.x() * q.z());
+            const double b2 = std::fabs(p.x() * q.y()) + std::fabs(p.y() * q.x());
+            const double b = std::max({b0, b1, b2});
+            if (!(b >= 0x1p-900 && b <= 0x1p900)) return {Vec3::Zero(), kInf};
+            int e = 0;
+            std::frexp(b, &e);
+            const Vec3 raw = p.cross(q) * static_cast<double>(sign_);
+            return {Vec3(std::ldexp(raw.x(), 1 - e), std::ldexp(raw.y(), 1 - e), std::ldexp(raw.z(), 1 - e)), 0x1p-50};
+        }
+        case Kind::Computed: {
+            Approximation a = computed_->approximation;
+            if (sign_ < 0) a.approx = -a.approx;
+            return a;
+        }
+    }
+    return {};
+}
+
+ExactVector::Filter ExactVector::filter() const {
+    const Approximation a = approximation();
+    if (!(a.err < kInf)) return {a.approx, kInf};
+    return {a.approx, (3 * a.err + 3.01 * kU * norm1(a.approx)) * (1 + 0x1p-40)};
+}
+
+Sign ExactVector::dot_sign(const Vec3& w) const { return momentlab::dot_sign(*this, ExactVector::input(w)); }
+
+Sign ExactVector::dot_sign(const ExactVector& other) const { return momentlab::dot_sign(*this, other); }
+
+ExactVector ExactVector::negated() const {
+    ExactVector e = *this;
+    e.value_ = -value_;
+    e.sign_ = static_cast<signed char>(-sign_);
+    return e;
+}
+
+ExactVector ExactVector::signed_permuted(const Mat3& p) const {
+    if (kind_ == Kind::Computed) return from_exact(momentlab::exact(p) * exact());
+    ExactVector e = *this;
+    e.value_ = p * value_;
+    if (kind_ == Kind::Cross) {
+        // P (u x v) = det(P) (P u x P v) for orthogonal P.
+        e.u_ = p * u_;
+        e.v_ = p * v_;
+        e.sign_ = static_cast<signed char>(sign_ * (p.determinant() > 0 ? 1 : -1));
+    }
+    return e;
+}
+
+ExactVector ExactVector::transformed(const ExactMatrix& m) const { return from_exact(m * exact()); }
+
+// ---------------------------------------------------------------------------------------------
+// Predicates.
+
+Sign dot_sign(const ExactVector& a, const ExactVector& b) {
+    if (!a.is_constructed() && !b.is_constructed()) return dot_sign(a.value(), b.value());
+    Sign s = Sign::Zero;
+    if (dot_filter(a.approximation(), b.approximation(), s)) {
+        ++g_stats.filtered;
+        return s;
+    }
+    return exact_sign(dot(a.exact(), b.exact()));
+}
+
+Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c) {
+    if (!a.is_constructed() && !b.is_constructed() && !c.is_constructed()) return det_sign(a.value(), b.value(), c.value());
+    Sign s = Sign::Zero;
+    if (det_filter(a.approximation(), b.approximation(), c.approximation(), s)) {
+        ++g_stats.filtered;
+        return s;
+    }
+    return exact_sign(det(a.exact(), b.exact(), c.exact()));
+}
+
+Sign minor_sign(const ExactVector& a, const ExactVector& b, int i, int j) {
+    if (!a.is_constructed() && !b.is_constructed()) return minor_sign(a.value(), b.value(), i, j);
+    Sign s = Sign::Zero;
+    if (minor_filter(a.approximation(), b.approximation(), i, j, s)) {
+        ++g_stats.filtered;
+        return s;
+    }
+    const Exact3 x = a.exact(), y = b.exact();
+    return exact_sign(x[static_cast<std::size_t>(i)] * y[static_cast<std::size_t>(j)] -
+                      x[static_cast<std::size_t>(j)] * y[static_cast<std::size_t>(i)]);
+}
+
+bool parallel(const ExactVector& a, const ExactVector& b) {
+    if (!a.is_constructed() && !b.is_constructed()) return parallel(a.value(), b.value());
+    const ExactVector::Approximation pa = a.approximation(), pb = b.approximation();
+    Sign s = Sign::Zero;
+    for (int k = 0; k < 3; ++k) {
+        if (minor_filter(pa, pb, (k + 1) % 3, (k + 2) % 3, s) && s != Sign::Zero) {
+            ++g_stats.filtered;
+            return false;
+        }
+    }
+    ++g_stats.exact;
+    return is_zero(cross(a.exact(), b.exact()));
+}
+
+bool is_zero(const ExactVector& v) {
+    // Constructions that are exactly doubles are stored as inputs, so a computed vector is
+    // never zero; a lazy cross product is zero when its factors are parallel.
+    if (!v.is_constructed()) return is_zero(v.value());
+    return is_zero(v.exact());
+}
+
+}  // namespace momentlab
