@@ -1,6 +1,9 @@
 // Fuzz target: cone construction from raw doubles (any bit pattern). Non-finite input must be
 // rejected with std::invalid_argument; finite input must give a cone that contains every
 // generator, whose dual's dual is itself, and whose half-space reading satisfies each normal.
+// For up to six vectors an independent check: membership of the generators, their negations,
+// sums and differences (as doubles) against a brute-force exact oracle
+// (reference/cone_membership.hpp), for the cone and for the half-space reading.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -9,6 +12,7 @@
 #include <vector>
 
 #include "fuzz_check.hpp"
+#include "cone_membership.hpp"
 #include "momentlab/geometry/cone.hpp"
 
 using namespace momentlab;
@@ -44,5 +48,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (const Vec3& n : vectors) FUZZ_REQUIRE(l.dot_sign(n) == Sign::Zero);
     }
     FUZZ_REQUIRE(h == c.dual());
+    if (vectors.size() > 6) return 0;
+    std::vector<reference::QVec> exact;
+    for (const Vec3& v : vectors) exact.push_back(reference::q(v));
+    std::vector<Vec3> probes;
+    for (std::size_t i = 0; i < vectors.size(); ++i) {
+        probes.push_back(vectors[i]);
+        probes.push_back(-vectors[i]);
+        for (std::size_t j = i + 1; j < vectors.size(); ++j) {
+            probes.push_back(vectors[i] + vectors[j]);
+            probes.push_back(vectors[i] - vectors[j]);
+        }
+    }
+    for (const Vec3& w : probes) {
+        if (!w.allFinite()) continue;
+        const reference::QVec qw = reference::q(w);
+        FUZZ_REQUIRE(c.has(w) == reference::in_cone(exact, qw));
+        bool in_h = true;
+        for (const auto& n : exact) in_h = in_h && reference::sign(reference::dot(n, qw)) >= 0;
+        FUZZ_REQUIRE(h.has(w) == in_h);
+    }
     return 0;
 }

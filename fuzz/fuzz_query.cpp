@@ -1,7 +1,9 @@
 // Fuzz target: query. A small scene (1-4 contacts on a grid of eighths, so degenerate
 // configurations are common) and wrenches from raw doubles; the compiled QueryIndex must give
 // exactly the modes of the per-mode exact test, for every finite wrench and its scalings
-// (which cross the range of the index's float filter), and reject non-finite wrenches.
+// (which cross the range of the index's float filter), and reject non-finite wrenches. The
+// first finite wrench is also checked independently: mode by mode against the exact LP oracle
+// (reference/mode_oracle.hpp), which reads the scene's raw numbers.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -9,6 +11,7 @@
 #include <stdexcept>
 
 #include "fuzz_check.hpp"
+#include "mode_oracle.hpp"
 #include "momentlab/mechanics/dynamics.hpp"
 
 using namespace momentlab;
@@ -25,11 +28,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const Vec2 p(small(), small());
         Vec2 normal(small(), small());
         if (normal.x() == 0.0 && normal.y() == 0.0) normal = Vec2(0, 1);
-        scene.contacts.push_back(Contact::make(p, normal, 0.25 * (byte() % 9)));
+        const double mu = 0.25 * (byte() % 9);
+        scene.contacts.push_back(Contact::make(p, normal, mu, byte() % 2 ? mu : 0.125 * (byte() % 9)));
     }
     const auto analysis = analyze(scene);
     const QueryIndex index(analysis);
     std::vector<std::size_t> modes;
+    bool checked = false;
     for (int count = 0; at + 24 <= size && count < 16; at += 24, ++count) {
         double x[3];
         std::memcpy(x, data + at, sizeof x);
@@ -43,6 +48,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             }
             FUZZ_REQUIRE(threw);
             continue;
+        }
+        if (!checked && e.cwiseAbs().maxCoeff() < 1e100 && e.cwiseAbs().maxCoeff() > 1e-100) {
+            checked = true;
+            const QueryResult r = query(analysis, e);
+            std::size_t k = 0;
+            for (std::size_t i = 0; i < analysis.size(); ++i) {
+                const bool in = k < r.modes.size() && r.modes[k] == i;
+                k += in;
+                FUZZ_REQUIRE(in == testing::exact_lp_applied_in_mode(scene, analysis[i].mode.letters, e));
+            }
         }
         for (double k : {1.0, 0x1p-64, 0x1p64, 0x1p-700, 0x1p700}) {
             const Vec3 w = e * k;

@@ -1,11 +1,15 @@
 // Fuzz target: the scene reader. Any text is either rejected with an InputError or accepted;
 // an accepted scene (of at most 6 contacts, to keep runs short) must go through mode
 // enumeration, analysis and queries without any exception, and survive a JSON round trip.
+// Scenes of up to three contacts are checked independently: their modes against the
+// brute-force exact LP oracle (reference/mode_oracle.hpp) on the raw numbers.
 #include <cstddef>
 #include <cstdint>
+#include <set>
 #include <string>
 
 #include "fuzz_check.hpp"
+#include "mode_oracle.hpp"
 #include "momentlab/io/scene_json.hpp"
 #include "momentlab/mechanics/dynamics.hpp"
 
@@ -25,6 +29,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const ModeSet modes = enumerate_modes(scene.contacts);
     FUZZ_REQUIRE(!modes.modes.empty());
     FUZZ_REQUIRE(modes.modes.front().letters == std::string(scene.contacts.size(), 'f'));
+    if (scene.contacts.size() <= 3) {
+        std::set<std::string> ours;
+        for (const Mode& m : modes.modes) ours.insert(m.letters);
+        FUZZ_REQUIRE(ours == testing::exact_modes(scene.contacts));
+    }
     const Scene again = read_scene(to_json(scene));
     FUZZ_REQUIRE(again.contacts.size() == scene.contacts.size());
     for (std::size_t j = 0; j < scene.contacts.size(); ++j) {

@@ -3,10 +3,7 @@
 #include <iostream>
 #include <memory>
 
-#include "commands.hpp"
-#include "describe.hpp"
-#include "momentlab/io/scene_json.hpp"
-#include "momentlab/mechanics/modes.hpp"
+#include "common.hpp"
 
 namespace momentlab::cli {
 namespace {
@@ -38,7 +35,7 @@ int run(const ModesOptions& o) {
 std::function<int()> add_modes_command(CLI::App& app) {
     auto opts = std::make_shared<ModesOptions>();
     CLI::App* cmd = app.add_subcommand("modes", "List every contact mode of a scene (s, f, r, l per contact)");
-    cmd->add_option("scene", opts->file, "scene JSON (DESIGN.md)")->required();
+    cmd->add_option("scene", opts->file, "scene JSON (docs/formats.md)")->required();
     cmd->add_flag("--json", opts->json, "machine-readable output: {\"modes\": [...]}");
     return [opts] { return run(*opts); };
 }

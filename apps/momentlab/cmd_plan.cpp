@@ -5,22 +5,12 @@
 // X Y]`: the spring directions through a compliance centre, and the centres that work.
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
-
-#include "commands.hpp"
-#include "describe.hpp"
-#include "momentlab/io/json_output.hpp"
-#include "momentlab/io/input_error.hpp"
-#include "momentlab/planning/comply.hpp"
-#include "momentlab/planning/push.hpp"
-#include "momentlab/planning/tilt.hpp"
-#include "momentlab/render/pictures.hpp"
+#include "common.hpp"
 
 namespace momentlab::cli {
 namespace {
@@ -38,18 +28,6 @@ struct PlanOptions {
     std::vector<double> centre;
 };
 
-std::string degrees(double radians) {
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(2) << radians * 180.0 / M_PI << "\u00B0";
-    return s.str();
-}
-
-std::string fmt(const Vec2& v) {
-    std::ostringstream s;
-    s << "(" << v.x() << ", " << v.y() << ")";
-    return s.str();
-}
-
 // {"intervals": [[from, to], ...], "best": ..., "margin": ...} (best and margin when feasible).
 nlohmann::json directions_json(const DirectionPlan& plan) {
     nlohmann::json intervals = nlohmann::json::array();
@@ -64,18 +42,18 @@ nlohmann::json directions_json(const DirectionPlan& plan) {
 
 void print_directions(const DirectionPlan& plan) {
     for (const AngleInterval& i : plan.intervals) {
-        std::cout << "  [" << i.from << ", " << i.to << "]   (" << degrees(i.from) << " .. " << degrees(i.to) << ")\n";
+        std::cout << "  [" << fmt(i.from) << ", " << fmt(i.to) << "]   (" << degrees(i.from) << " .. " << degrees(i.to)
+                  << ")\n";
     }
-    std::cout << "  best " << plan.best << " (" << degrees(plan.best) << "), margin " << plan.margin << " ("
+    std::cout << "  best " << fmt(plan.best) << " (" << degrees(plan.best) << "), margin " << fmt(plan.margin) << " ("
               << degrees(plan.margin) << ") to the nearest boundary\n";
 }
 
 int run_tilt(const PlanOptions& o) {
-    const std::optional<Box> view = checked_picture_options(o.picture);
-    const Scene scene = read_scene_file(o.file);
-    if (!scene.body) throw InputError("$", "missing field \"body\" (plan tilt needs its mass, com and inertia)");
-    const std::vector<ModeForces> analysis = analyze(scene);
-    const ModeForces& goal = analysis[mode_index(analysis, o.goal, "--goal")];
+    const std::optional<Box> view = checked_picture_options(o.picture, {o.file});
+    const Problem p = load_problem(o.file, "plan tilt");
+    const Scene& scene = p.scene;
+    const ModeForces& goal = find_mode(p.analysis, o.goal, "--goal");
     const DirectionPlan plan = plan_tilt(scene, goal);
     if (o.json) {
         nlohmann::json out = directions_json(plan);
@@ -89,9 +67,8 @@ int run_tilt(const PlanOptions& o) {
         print_directions(plan);
     }
     if (!o.picture.files.empty()) {
-        const std::string title = o.picture.title.empty()
-                                      ? std::filesystem::path(o.file).stem().string() + ": tilts that produce mode " + o.goal
-                                      : o.picture.title;
+        const std::string title = o.picture.title.empty() ? stem(o.file) + ": tilts that produce mode " + o.goal
+                                                          : o.picture.title;
         const render::ForcePanel actions{"W: tilts (gravity through the centre of mass)", plan.actions,
                                          {scene.body->com}};
         write_picture(render::synthesis_figure(title, scene, actions, goal, plan.solutions, view), o.picture);
@@ -100,18 +77,15 @@ int run_tilt(const PlanOptions& o) {
 }
 
 int run_comply(const PlanOptions& o) {
-    const std::optional<Box> view = checked_picture_options(o.picture);
-    if (!o.picture.files.empty() && o.centre.empty()) throw InputError("-o", "a picture shows one centre: give --centre X Y");
-    if (!o.centre.empty() && !(std::isfinite(o.centre[0]) && std::isfinite(o.centre[1]))) {
-        throw InputError("--centre", "expected two finite numbers");
-    }
-    const Scene scene = read_scene_file(o.file);
-    if (!scene.body) throw InputError("$", "missing field \"body\" (plan comply needs its mass, com and inertia)");
-    const std::vector<ModeForces> analysis = analyze(scene);
-    const ModeForces& goal = analysis[mode_index(analysis, o.goal, "--goal")];
+    const std::optional<Box> view = checked_picture_options(o.picture, {o.file});
+    const std::vector<Vec2> centre = o.centre.empty() ? std::vector<Vec2>{} : checked_points(o.centre, "--centre", 1);
+    if (!o.picture.files.empty() && centre.empty()) throw InputError("-o", "a picture shows one centre: give --centre X Y");
+    const Problem p = load_problem(o.file, "plan comply");
+    const Scene& scene = p.scene;
+    const ModeForces& goal = find_mode(p.analysis, o.goal, "--goal");
     const Labels region = compliance_labels(goal);
     std::optional<ComplyPlan> plan;
-    if (!o.centre.empty()) plan = plan_comply(goal, Vec2(o.centre[0], o.centre[1]));
+    if (!centre.empty()) plan = plan_comply(goal, centre.front());
     if (o.json) {
         nlohmann::json out = {{"goal", o.goal}, {"labels", to_json(region)}};
         if (plan) {
@@ -140,8 +114,7 @@ int run_comply(const PlanOptions& o) {
     }
     if (plan && !o.picture.files.empty()) {
         const std::string title = o.picture.title.empty()
-                                      ? std::filesystem::path(o.file).stem().string() + ": compliance centre " +
-                                            fmt(plan->centre) + " for mode " + o.goal
+                                      ? stem(o.file) + ": compliance centre " + fmt(plan->centre) + " for mode " + o.goal
                                       : o.picture.title;
         const render::ForcePanel actions{"W: spring forces through the centre", plan->directions.actions, {plan->centre}};
         write_picture(render::synthesis_figure(title, scene, actions, goal, plan->directions.solutions, view), o.picture);
@@ -185,8 +158,10 @@ std::string case_line(const PushCase& c) {
 }
 
 int run_push(const PlanOptions& o) {
-    const std::optional<Box> view = checked_picture_options(o.picture);
-    if (!(o.mu >= 0.0) || !std::isfinite(o.mu)) throw InputError("--mu", "expected a finite mu >= 0");
+    const std::optional<Box> view = checked_picture_options(o.picture, {o.file});
+    if (!(o.mu >= 0.0) || !std::isfinite(o.mu) || !magnitude_in_range(o.mu)) {
+        throw InputError("--mu", "expected a finite mu >= 0 (0 or 1e-60 .. 1e60)");
+    }
     if (o.edge && o.vertex) throw InputError("--vertex", "give --edge or --vertex, not both");
     if (!o.picture.files.empty() && ((!o.edge && !o.vertex) || o.slip.empty())) {
         throw InputError("-o", "a picture shows one case: give --edge or --vertex, and --slip");
@@ -198,7 +173,7 @@ int run_push(const PlanOptions& o) {
     if (o.edge && *o.edge >= n) throw InputError("--edge", "the body has edges 0 .. " + std::to_string(n - 1));
     if (o.vertex && *o.vertex >= n) throw InputError("--vertex", "the body has vertices 0 .. " + std::to_string(n - 1));
     const std::vector<ModeForces> analysis = analyze(scene);
-    const ModeForces& goal = analysis[mode_index(analysis, o.goal, "--goal")];
+    const ModeForces& goal = find_mode(analysis, o.goal, "--goal");
     const PushOptions options{o.mu, o.ignore_interference};
     std::vector<PushCase> cases;
     for (PushCase& c : plan_push(scene, goal, options)) {
@@ -214,7 +189,7 @@ int run_push(const PlanOptions& o) {
         std::cout << out.dump() << "\n";
     } else {
         const auto feasible = std::count_if(cases.begin(), cases.end(), [](const PushCase& c) { return c.feasible(); });
-        std::cout << "pushing into mode " << o.goal << ": a point finger with mu = " << o.mu << ", obstacles "
+        std::cout << "pushing into mode " << o.goal << ": a point finger with mu = " << fmt(o.mu) << ", obstacles "
                   << interference << "; " << feasible << " of " << cases.size() << " cases feasible\n";
         std::cout << "  " << std::left << std::setw(10) << "feature" << std::setw(6) << "slip" << std::setw(10)
                   << "verdict" << std::setw(34) << "touch" << "push directions (from +x)\n";
@@ -225,10 +200,8 @@ int run_push(const PlanOptions& o) {
     if (!o.picture.files.empty() && !cases.empty()) {
         const PushCase& c = cases.front();
         const std::string what = c.feature.name() + ", slip " + std::string(1, c.slip);
-        const std::string title = o.picture.title.empty()
-                                      ? std::filesystem::path(o.file).stem().string() + ": pushing " + what +
-                                            " to mode " + o.goal
-                                      : o.picture.title;
+        const std::string title =
+            o.picture.title.empty() ? stem(o.file) + ": pushing " + what + " to mode " + o.goal : o.picture.title;
         std::vector<Cone> actions, solutions;
         for (const PushPiece& p : c.pieces) {
             actions.push_back(p.actions);
@@ -248,14 +221,14 @@ std::function<int()> add_plan_command(CLI::App& app) {
     CLI::App* plan = app.add_subcommand("plan", "Actions that reach a goal mode (Mason 1991, section 3)");
     plan->require_subcommand(1);
     CLI::App* tilt = plan->add_subcommand("tilt", "The gravity directions (tilts of the tray) that produce the goal mode");
-    tilt->add_option("scene", opts->file, "scene JSON (DESIGN.md)")->required();
+    tilt->add_option("scene", opts->file, "scene JSON (docs/formats.md)")->required();
     tilt->add_option("--goal", opts->goal, "the goal mode's letters, e.g. rr")->required();
     tilt->add_flag("--json", opts->json, "machine-readable output: {\"intervals\": [[from, to], ...], ...}");
     add_picture_options(tilt, opts->picture, false);
     CLI::App* push = plan->add_subcommand("push", "The features (edges, vertices) and finger slips that push the body into the goal mode");
-    push->add_option("scene", opts->file, "scene JSON (DESIGN.md)")->required();
+    push->add_option("scene", opts->file, "scene JSON (docs/formats.md)")->required();
     push->add_option("--goal", opts->goal, "the goal mode's letters, e.g. rr")->required();
-    push->add_option("--mu", opts->mu, "the finger's friction coefficient (default 0.5)");
+    push->add_option("--mu", opts->mu, "the finger's friction coefficient (default 0.5)")->check(number_check());
     push->add_option("--edge", opts->edge, "only this edge (from vertex I to the next)");
     push->add_option("--vertex", opts->vertex, "only this vertex");
     push->add_flag("--ignore-interference", opts->ignore_interference,
@@ -264,9 +237,9 @@ std::function<int()> add_plan_command(CLI::App& app) {
     push->add_flag("--json", opts->json, "machine-readable output: {\"cases\": [...]}");
     add_picture_options(push, opts->picture, false);
     CLI::App* comply = plan->add_subcommand("comply", "The spring directions through a compliance centre, and the centres that work");
-    comply->add_option("scene", opts->file, "scene JSON (DESIGN.md)")->required();
+    comply->add_option("scene", opts->file, "scene JSON (docs/formats.md)")->required();
     comply->add_option("--goal", opts->goal, "the goal mode's letters, e.g. rr")->required();
-    comply->add_option("--centre", opts->centre, "the compliance centre X Y")->expected(2);
+    comply->add_option("--centre", opts->centre, "the compliance centre X Y")->expected(2, 2)->check(number_check());
     comply->add_flag("--json", opts->json, "machine-readable output: {\"labels\": ..., \"centre\": {\"intervals\": ...}}");
     add_picture_options(comply, opts->picture, false);
     return [opts, tilt, push, comply] {

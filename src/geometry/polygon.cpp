@@ -120,6 +120,39 @@ bool within_distance_of_boundary(std::span<const Vec2> polygon, const Vec2& p, d
     return false;
 }
 
+namespace {
+
+bool strictly_inside(std::span<const Vec2> polygon, const Vec2& p) {
+    return in_closed_polygon(polygon, p) && !within_distance_of_boundary(polygon, p, 0.0);
+}
+
+// Some point of `a` (a vertex, an edge midpoint, the vertex centroid) strictly inside `b`.
+bool reaches_into(std::span<const Vec2> a, std::span<const Vec2> b) {
+    Vec2 centroid = Vec2::Zero();
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const Vec2& p = a[i];
+        centroid += p / static_cast<double>(a.size());
+        if (strictly_inside(b, p) || strictly_inside(b, 0.5 * (p + a[(i + 1) % a.size()]))) return true;
+    }
+    return strictly_inside(a, centroid) && strictly_inside(b, centroid);
+}
+
+}  // namespace
+
+bool polygons_overlap(std::span<const Vec2> a, std::span<const Vec2> b) {
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const Vec2 &p = a[i], &q = a[(i + 1) % a.size()];
+        for (std::size_t j = 0; j < b.size(); ++j) {
+            const Vec2 &r = b[j], &s = b[(j + 1) % b.size()];
+            const Sign o1 = orient2d(p, q, r), o2 = orient2d(p, q, s), o3 = orient2d(r, s, p), o4 = orient2d(r, s, q);
+            if (o1 != Sign::Zero && o2 != Sign::Zero && o3 != Sign::Zero && o4 != Sign::Zero && o1 != o2 && o3 != o4) {
+                return true;
+            }
+        }
+    }
+    return reaches_into(a, b) || reaches_into(b, a);
+}
+
 double distance_to_boundary(std::span<const Vec2> polygon, const Vec2& p) {
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < polygon.size(); ++i) {

@@ -1,9 +1,20 @@
 #include "momentlab/io/json_output.hpp"
 
+#include <cmath>
+
+#include "momentlab/io/input_error.hpp"
+
 namespace momentlab {
 namespace {
 
-double clean(double x) { return x == 0.0 ? 0.0 : x; }  // no -0 in the output
+// No -0 in the output, and no null for a value beyond the range of a double.
+double clean(double x) {
+    if (!std::isfinite(x)) {
+        throw UnrepresentableError("a coordinate of the answer is beyond the range of a double (the scene's numbers are "
+                                   "too far apart to write it; the answer itself is exact)");
+    }
+    return x == 0.0 ? 0.0 : x;
+}
 nlohmann::json vec(const Vec3& v) { return {clean(v.x()), clean(v.y()), clean(v.z())}; }
 nlohmann::json vec(const Vec2& v) { return {clean(v.x()), clean(v.y())}; }
 

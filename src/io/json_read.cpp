@@ -1,5 +1,6 @@
 #include "json_read.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace momentlab::json_read {
@@ -93,9 +94,60 @@ void known_fields(const json& obj, const std::string& path, std::initializer_lis
 
 std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
 
+namespace {
+
+// The containers open while parsing, to name the path of a repeated key. Each holds the keys
+// seen so far (objects are small: a linear search) and how the container sits in its parent.
+struct Frame {
+    bool is_array = false;
+    std::size_t count = 0;          // elements seen (arrays)
+    std::string key;                // the last key read (objects)
+    std::vector<std::string> keys;  // keys seen (objects)
+};
+
+std::string path_of(const std::vector<Frame>& stack) {
+    std::string path = "$";
+    for (std::size_t i = 0; i + 1 < stack.size(); ++i) {
+        path += stack[i].is_array ? "[" + std::to_string(stack[i].count - 1) + "]" : "." + stack[i].key;
+    }
+    return path;
+}
+
+}  // namespace
+
 json parse(const std::string& text) {
+    // Duplicate keys are an error: JSON parsers differ on which one wins, so a file with two
+    // "mu" fields means different scenes to different programs.
+    std::vector<Frame> stack;
+    const json::parser_callback_t callback = [&stack](int, json::parse_event_t event, json& parsed) {
+        switch (event) {
+            case json::parse_event_t::object_start:
+            case json::parse_event_t::array_start:
+                if (!stack.empty() && stack.back().is_array) ++stack.back().count;
+                stack.push_back(Frame{event == json::parse_event_t::array_start, 0, {}, {}});
+                break;
+            case json::parse_event_t::object_end:
+            case json::parse_event_t::array_end:
+                if (!stack.empty()) stack.pop_back();
+                break;
+            case json::parse_event_t::key: {
+                Frame& f = stack.back();
+                const std::string& key = parsed.get_ref<const std::string&>();
+                if (std::find(f.keys.begin(), f.keys.end(), key) != f.keys.end()) {
+                    throw InputError(path_of(stack) + "." + key, "duplicate key (each key may appear once in an object)");
+                }
+                f.keys.push_back(key);
+                f.key = key;
+                break;
+            }
+            case json::parse_event_t::value:
+                if (!stack.empty() && stack.back().is_array) ++stack.back().count;
+                break;
+        }
+        return true;
+    };
     try {
-        return json::parse(text);
+        return json::parse(text, callback);
     } catch (const json::parse_error& e) {
         throw InputError("$", std::string("malformed JSON: ") + e.what());
     } catch (const json::out_of_range& e) {  // e.g. 1e999: too large for a double

@@ -125,7 +125,15 @@ Scene read_scene(const json& doc, InputWarnings* w) {
         } catch (const std::invalid_argument& e) {
             throw InputError("$", e.what());
         }
-        if (scene.contacts.empty()) throw InputError("$", "the body polygon touches no obstacle (no contacts found)");
+        if (scene.contacts.empty()) {
+            for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
+                if (polygons_overlap(scene.body->polygon, scene.obstacles[i])) {
+                    throw InputError("$.obstacles[" + std::to_string(i) + "]",
+                                     "the body polygon overlaps this obstacle (expected them to touch, not overlap)");
+                }
+            }
+            throw InputError("$", "the body polygon touches no obstacle (no contacts found)");
+        }
     }
     return scene;
 }

@@ -11,7 +11,12 @@
 #include <fstream>
 #include <memory>
 #include <stdexcept>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 namespace momentlab::render {
 namespace {
@@ -28,6 +33,12 @@ constexpr double kLegendText = 10.5;
 constexpr double kTitleText = 15.0;
 constexpr double kPanelTitleText = 12.0;
 constexpr char kFont[] = "DejaVu Sans";
+// The largest pictures written: Cairo's image surfaces stop at 32767 pixels on a side (and a
+// picture of 2^28 pixels is a gigabyte of memory); vector pages beyond 200,000 points (70 m)
+// are a mistake, not a picture.
+constexpr int kMaxPngSide = 32767;
+constexpr double kMaxPngPixels = 268435456.0;
+constexpr double kMaxVectorSide = 200000.0;
 
 double text_width_estimate(const std::string& s, double size) {
     std::size_t chars = 0;
@@ -318,18 +329,34 @@ std::string render(const Figure& figure, Format format) {
     SurfacePtr surface(nullptr, cairo_surface_destroy);
     switch (format) {
         case Format::Svg:
+            if (!(page.width <= kMaxVectorSide && page.height <= kMaxVectorSide)) {
+                throw std::runtime_error("the picture would be larger than " + std::to_string(static_cast<int>(kMaxVectorSide)) +
+                                         " points on a side: draw fewer panels");
+            }
             surface.reset(cairo_svg_surface_create_for_stream(append_to_string, &bytes, page.width, page.height));
             break;
         case Format::Pdf:
+            if (!(page.width <= kMaxVectorSide && page.height <= kMaxVectorSide)) {
+                throw std::runtime_error("the picture would be larger than " + std::to_string(static_cast<int>(kMaxVectorSide)) +
+                                         " points on a side: draw fewer panels");
+            }
             surface.reset(cairo_pdf_surface_create_for_stream(append_to_string, &bytes, page.width, page.height));
             cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, figure.title.c_str());
             cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "momentlab");
             break;
-        case Format::Png:
-            surface.reset(cairo_image_surface_create(CAIRO_FORMAT_ARGB32,
-                                                     static_cast<int>(std::ceil(page.width * kPngScale)),
-                                                     static_cast<int>(std::ceil(page.height * kPngScale))));
+        case Format::Png: {
+            const double w = std::ceil(page.width * kPngScale), h = std::ceil(page.height * kPngScale);
+            if (!(w <= kMaxPngSide && h <= kMaxPngSide && w * h <= kMaxPngPixels)) {
+                char text[200];
+                std::snprintf(text, sizeof text,
+                              "the picture would be %.0f x %.0f pixels (at most %d on a side and %.0f in all): draw "
+                              "fewer panels, or write .svg or .pdf",
+                              w, h, kMaxPngSide, kMaxPngPixels);
+                throw std::runtime_error(text);
+            }
+            surface.reset(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(w), static_cast<int>(h)));
             break;
+        }
     }
     check(cairo_surface_status(surface.get()));
     std::vector<PaintedText> texts;
@@ -350,27 +377,30 @@ std::string render(const Figure& figure, Format format) {
 
 void write(const Figure& figure, const std::string& path) {
     const std::string bytes = render(figure, format_for(path));
+    // A new file with a name nobody can guess, created exclusively (mkstemp: O_CREAT | O_EXCL,
+    // mode 0600) in the target's directory, then renamed over the target: a symbolic link
+    // planted anywhere cannot redirect the write, and a reader never sees half a picture.
     const std::filesystem::path target(path);
-    std::string temp_name = ".";  // (built in steps: GCC 12 misreports "." + string as -Wrestrict)
-    temp_name += target.filename().string();
-    temp_name += ".tmp" + std::to_string(::getpid());
-    const std::filesystem::path temp = target.parent_path() / temp_name;
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) throw std::runtime_error("cannot write \"" + path + "\"");
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        out.close();
-        if (!out) {
-            std::error_code ec;
-            std::filesystem::remove(temp, ec);
-            throw std::runtime_error("cannot write \"" + path + "\"");
-        }
+    const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+    std::string temp = (dir / ".momentlab-XXXXXX").string();
+    const int fd = ::mkstemp(temp.data());
+    if (fd < 0) throw std::runtime_error("cannot write \"" + path + "\" (" + std::strerror(errno) + ")");
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    bool ok = ::fchmod(fd, 0666 & ~mask) == 0;
+    for (std::size_t done = 0; ok && done < bytes.size();) {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        ok = n > 0;
+        if (ok) done += static_cast<std::size_t>(n);
     }
-    std::error_code ec;
-    std::filesystem::rename(temp, target, ec);
-    if (ec) {
-        std::filesystem::remove(temp, ec);
-        throw std::runtime_error("cannot write \"" + path + "\"");
+    const int error = ok ? 0 : errno;
+    if (::close(fd) != 0 && ok) ok = false;
+    if (ok && ::rename(temp.c_str(), path.c_str()) != 0) ok = false;
+    if (!ok) {
+        const std::string why = std::strerror(error != 0 ? error : errno);
+        ::unlink(temp.c_str());
+        throw std::runtime_error("cannot write \"" + path + "\" (" + why + ")");
     }
 }
 

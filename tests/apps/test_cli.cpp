@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <sstream>
 #include <vector>
@@ -251,4 +252,105 @@ TEST_F(CliPictures, ForcesNeedABody) {
     EXPECT_EQ(run("draw " + at("scene.json") + " --what labels -o " + at("b.svg")).status, 0) << stderr_text();
 }
 
+// The issue's scenes through the command line: a wheel held by three contacts whose normals
+// (of length 5) meet in its centre, and the forces through (0.1, 0.7) of the paper's Figure 1b
+// situation, exactly.
+TEST(Cli, ExactForTheSceneAsWritten) {
+    const std::string wheel = ::testing::TempDir() + "momentlab_wheel.json";
+    std::ofstream(wheel) << R"({"body":{"mass":1,"com":[0,0],"inertia":1},"contacts":[{"point":[5,0],"normal":[-5,0]},
+        {"point":[3,4],"normal":[-3,-4]},{"point":[-3,-4],"normal":[3,4]}]})";
+    Result r = run("modes " + wheel + " --json");
+    ASSERT_EQ(r.status, 0);
+    auto modes = nlohmann::json::parse(r.out)["modes"].get<std::vector<std::string>>();
+    std::sort(modes.begin(), modes.end());
+    EXPECT_EQ(modes, (std::vector<std::string>{"fff", "lll", "rrr", "sfl", "sll", "srf", "srl", "srr"}));
+    r = run("query " + wheel + " --wrench 0 0 -1 --json");
+    ASSERT_EQ(r.status, 0);
+    auto answer = nlohmann::json::parse(r.out)["modes"].get<std::vector<std::string>>();
+    std::sort(answer.begin(), answer.end());
+    EXPECT_EQ(answer, (std::vector<std::string>{"lll", "sll"}));
+    const std::string forces = ::testing::TempDir() + "momentlab_point.json";
+    std::ofstream(forces) << R"([{"type":"force","point":[0.1,0.7],"direction":[0.3,0.7]},
+        {"type":"force","point":[0.1,0.7],"direction":[-0.9,0.2]},{"type":"force","point":[0.1,0.7],"direction":[0.3,-0.8]}])";
+    r = run("label " + forces + " --json --at 0.1 0.7");
+    ASSERT_EQ(r.status, 0);
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["cone"]["kind"], "plane");
+    EXPECT_EQ(j["at"][0]["label"], "+-");
+    std::filesystem::remove(wheel);
+    std::filesystem::remove(forces);
+}
+
+// Pictures are written through a new file of an unguessable name, then renamed: a symbolic
+// link at the target is replaced (the file it points to is untouched), nothing is left behind,
+// and every -o is checked before the first one is written.
+TEST(Cli, PictureFilesAreWrittenSafely) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(::testing::TempDir()) / ("momentlab_pictures_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path victim = dir / "victim.txt";
+    std::ofstream(victim) << "keep me";
+    fs::create_symlink(victim, dir / "modes.svg");
+    const std::string scene = kExamples + "/block-on-table.json";
+    Result r = run("draw " + scene + " -o " + (dir / "modes.svg").string());
+    ASSERT_EQ(r.status, 0) << stderr_text();
+    EXPECT_FALSE(fs::is_symlink(dir / "modes.svg"));
+    std::ifstream v(victim);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(v), {}), "keep me");
+    // A second -o into a missing directory: refused before the first is written.
+    r = run("draw " + scene + " -o " + (dir / "first.svg").string() + " -o " + (dir / "no" / "second.svg").string());
+    EXPECT_EQ(r.status, 2);
+    EXPECT_FALSE(fs::exists(dir / "first.svg"));
+    // A long name (the limit of 255 bytes for the name itself) still works.
+    const std::string long_name = std::string(251, 'm') + ".png";
+    r = run("draw " + scene + " -o " + (dir / long_name).string());
+    EXPECT_EQ(r.status, 0) << stderr_text();
+    EXPECT_TRUE(fs::exists(dir / long_name));
+    // Nothing else was left in the directory (no temporary files).
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{long_name, "modes.svg", "victim.txt"}));
+    fs::remove_all(dir);
+}
+
+// A picture too large for Cairo's image surfaces (the forces of 2n + 4 = 84 modes, a row of
+// panels each) is one clear line, and nothing is written.
+TEST(Cli, TooLargePicturesSaySo) {
+    std::ostringstream scene;
+    scene << R"({"body": {"mass": 1, "com": [0, -0.5], "inertia": 0.1}, "contacts": [)";
+    const int n = 40;
+    for (int j = 0; j < n; ++j) {
+        const double t = M_PI * (1.0 + (j + 0.5) / n);
+        scene << (j ? "," : "") << "{\"point\": [" << std::cos(t) << ", " << std::sin(t) << "], \"normal\": ["
+              << -std::cos(t + 0.2) << ", " << -std::sin(t + 0.2) << "]}";
+    }
+    scene << "]}";
+    const std::string path = ::testing::TempDir() + "momentlab_cradle.json";
+    std::ofstream(path) << scene.str();
+    const std::string png = ::testing::TempDir() + "momentlab_cradle.png";
+    std::filesystem::remove(png);
+    Result r = run("draw " + path + " --what forces -o " + png);
+    EXPECT_EQ(r.status, 2);
+    const std::string err = stderr_text();
+    EXPECT_NE(err.find("-o: the picture would be"), std::string::npos) << err;
+    EXPECT_NE(err.find("pixels (at most 32767 on a side"), std::string::npos) << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+    EXPECT_FALSE(std::filesystem::exists(png));
+    std::filesystem::remove(path);
+}
+
+// Names are printed with their control characters escaped, so every answer line stays a line.
+TEST(Cli, ControlCharactersInNamesAreEscaped) {
+    const std::string path = ::testing::TempDir() + "momentlab_names.json";
+    std::ofstream(path) << R"({"contacts": [{"point": [0, 0], "normal": [0, 1], "name": "left\nfoot\u001b[31m"}]})";
+    const Result r = run("modes " + path);
+    ASSERT_EQ(r.status, 0);
+    EXPECT_NE(r.out.find("left\\nfoot\\x1b[31m fixed"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find('\x1b'), std::string::npos);
+    std::filesystem::remove(path);
+}
+
 }  // namespace
+

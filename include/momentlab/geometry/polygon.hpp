@@ -35,6 +35,12 @@ namespace momentlab {
 /// True when p is within `distance` of some edge of the polygon (exactly).
 [[nodiscard]] bool within_distance_of_boundary(std::span<const Vec2> polygon, const Vec2& p, double distance);
 
+/// True when the interiors of two simple polygons meet, as far as these tell: two edges cross
+/// properly, a vertex, an edge midpoint or the vertex centroid of one lies strictly inside
+/// the other (the tests are exact for the points tested; for messages, e.g. "the body overlaps
+/// obstacle 2" instead of "touches no obstacle").
+[[nodiscard]] bool polygons_overlap(std::span<const Vec2> a, std::span<const Vec2> b);
+
 /// The distance from p to the boundary of the polygon (floating point: for messages only).
 [[nodiscard]] double distance_to_boundary(std::span<const Vec2> polygon, const Vec2& p);
 

@@ -20,6 +20,14 @@ private:
     std::string path_;
 };
 
+/// A value of an answer that cannot be written as a double (a coordinate beyond 1e308, such as
+/// the vertex of a labelled region where two nearly parallel lines meet far away): the input is
+/// accepted, the answer exists exactly, but it cannot be printed.
+class UnrepresentableError : public std::range_error {
+public:
+    explicit UnrepresentableError(const std::string& what) : std::range_error(what) {}
+};
+
 /// Warnings about input that is accepted but probably not meant (e.g. an unknown field, which
 /// is ignored), each "path: message".
 using InputWarnings = std::vector<std::string>;

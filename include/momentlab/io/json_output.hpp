@@ -11,7 +11,8 @@
 namespace momentlab {
 
 /// {"kind", "dimension", "lineality_dimension", "rays", "lineality", "facets", "equations",
-///  "facet_rays"}; vectors as [x, y, z] (rounded values).
+///  "facet_rays"}; vectors as [x, y, z] (rounded values). Every function here throws
+/// UnrepresentableError for a value beyond the range of a double (never writes null).
 [[nodiscard]] nlohmann::json to_json(const Cone& cone);
 
 /// {"kind", "vertices", "rays", "lines"} of one sheet.

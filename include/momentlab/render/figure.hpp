@@ -129,11 +129,14 @@ inline constexpr double kPngScale = 2.0;
 
 /// The figure as the bytes of a file in `format`. SVG output also carries every text of the
 /// figure as (transparent) SVG text over Cairo's glyph outlines, so it can be searched,
-/// selected and read by tools.
+/// selected and read by tools. Throws std::runtime_error for a picture too large to write
+/// (PNG: more than 32767 pixels on a side or 2^28 in all; SVG, PDF: 200,000 points on a side).
 [[nodiscard]] std::string render(const Figure& figure, Format format);
 
 /// Renders the figure into `path` (format from the extension). The file appears complete or
-/// not at all: it is written beside the target and renamed. Throws std::invalid_argument for an
+/// not at all: it is written to a new file of an unguessable name created exclusively in the
+/// target's directory (mkstemp), then renamed over the target (a symbolic link there is
+/// replaced, not followed). Throws std::invalid_argument for an
 /// unknown extension and std::runtime_error when the file cannot be written.
 void write(const Figure& figure, const std::string& path);
 

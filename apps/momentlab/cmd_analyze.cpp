@@ -1,0 +1,60 @@
+// `momentlab analyze SCENE [--json]`: every mode with its sets of twists, total, contact and
+// applied wrenches, and their labels.
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "common.hpp"
+
+namespace momentlab::cli {
+namespace {
+
+struct AnalyzeOptions {
+    std::string file;
+    bool json = false;
+};
+
+int run(const AnalyzeOptions& o) {
+    const Problem p = load_problem(o.file, "analyze");
+    if (o.json) {
+        nlohmann::json modes = nlohmann::json::array();
+        for (const ModeForces& m : p.analysis) {
+            modes.push_back({{"mode", m.mode.letters},
+                             {"A", to_json(m.mode.twists)},
+                             {"rotation_centres", to_json(rotation_centres(m.mode))},
+                             {"F", {{"cone", to_json(m.total)}, {"labels", to_json(Labels(m.total))}}},
+                             {"T", {{"cone", to_json(m.contact)}, {"labels", to_json(Labels(m.contact))}}},
+                             {"E", {{"cone", to_json(m.applied)}, {"labels", to_json(Labels(m.applied))}}}});
+        }
+        std::cout << nlohmann::json{{"modes", modes}}.dump(2) << "\n";
+        return 0;
+    }
+    // The whole answer first: a value that cannot be printed stops it before any of it is.
+    std::ostringstream out;
+    out << p.analysis.size() << " contact modes\n";
+    for (const ModeForces& m : p.analysis) {
+        const Labels centres = rotation_centres(m.mode);
+        const Labels applied(m.applied);
+        out << "  " << std::left << std::setw(static_cast<int>(p.scene.contacts.size()) + 2) << m.mode.letters
+                  << describe_mode(p.scene, m.mode.letters) << "\n"
+                  << "      rotation centres  + " << region_text(centres.plus()) << ";  - "
+                  << region_text(centres.minus()) << "\n"
+                  << "      applied wrenches E: " << m.applied.kind() << "; labels + "
+                  << region_text(applied.plus()) << ";  - " << region_text(applied.minus()) << "\n";
+    }
+    std::cout << out.str();
+    return 0;
+}
+
+}  // namespace
+
+std::function<int()> add_analyze_command(CLI::App& app) {
+    auto opts = std::make_shared<AnalyzeOptions>();
+    CLI::App* cmd = app.add_subcommand("analyze", "Every mode with its twists, total, contact and applied wrenches");
+    cmd->add_option("scene", opts->file, "scene JSON (docs/formats.md)")->required();
+    cmd->add_flag("--json", opts->json, "machine-readable output");
+    return [opts] { return run(*opts); };
+}
+
+}  // namespace momentlab::cli

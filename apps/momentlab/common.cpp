@@ -1,0 +1,329 @@
+// What the commands share (common.hpp).
+#include "common.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace momentlab::cli {
+namespace {
+
+std::string reason(int error) { return std::strerror(error); }
+
+// Opens a file for reading; a directory or an unreadable file is an InputError at `where`.
+int open_input(const std::string& path, const std::string& where, struct stat& st) {
+    if (::stat(path.c_str(), &st) != 0) {
+        throw InputError(where, "cannot read file \"" + path + "\" (" + reason(errno) + ")");
+    }
+    if (S_ISDIR(st.st_mode)) throw InputError(where, "cannot read file \"" + path + "\" (a directory)");
+    if (S_ISREG(st.st_mode) && static_cast<unsigned long long>(st.st_size) > kMaxInputBytes) {
+        throw InputError(where, "cannot read file \"" + path + "\" (" + std::to_string(st.st_size) +
+                                    " bytes: larger than the limit of 1 GiB)");
+    }
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) throw InputError(where, "cannot read file \"" + path + "\" (" + reason(errno) + ")");
+    return fd;
+}
+
+// One read(2), retried when interrupted; -1 with errno on error.
+ssize_t read_some(int fd, char* data, std::size_t size) {
+    for (;;) {
+        const ssize_t n = ::read(fd, data, size);
+        if (n >= 0 || errno != EINTR) return n;
+    }
+}
+
+class FileCloser {
+public:
+    explicit FileCloser(int fd) : fd_(fd) {}
+    ~FileCloser() { ::close(fd_); }
+    FileCloser(const FileCloser&) = delete;
+    FileCloser& operator=(const FileCloser&) = delete;
+
+private:
+    int fd_;
+};
+
+void print_warnings(const InputWarnings& warnings) {
+    for (const std::string& w : warnings) std::cerr << "momentlab: warning: " << printable(w) << "\n";
+}
+
+[[noreturn]] void not_json(const std::string& path, const std::string& where, std::size_t offset, unsigned char byte,
+                           const char* what) {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02x", byte);
+    throw InputError(where, "cannot read file \"" + path + "\" (not a JSON document: " + what + ", byte " + hex +
+                                " at offset " + std::to_string(offset) + ")");
+}
+
+bool same_file(const std::string& a, const std::string& b) {
+    struct stat sa {}, sb {};
+    if (::stat(a.c_str(), &sa) != 0 || ::stat(b.c_str(), &sb) != 0) return false;
+    return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Input files.
+
+std::string read_json_file(const std::string& path, const std::string& where) {
+    struct stat st {};
+    const int fd = open_input(path, where, st);
+    FileCloser closer(fd);
+    std::string text;
+    if (S_ISREG(st.st_mode)) text.reserve(static_cast<std::size_t>(st.st_size));
+    char chunk[1 << 16];
+    bool looked = false;
+    for (;;) {
+        const ssize_t n = read_some(fd, chunk, sizeof chunk);
+        if (n < 0) throw InputError(where, "cannot read file \"" + path + "\" (" + reason(errno) + ")");
+        if (n == 0) break;
+        const std::size_t from = text.size();
+        text.append(chunk, static_cast<std::size_t>(n));
+        // JSON text holds no control bytes but blanks (inside strings they are escaped), and its
+        // first byte that is not blank (after an optional UTF-8 byte order mark) opens an object or
+        // a list: a binary file or a device fails at its first bad byte, not at the size limit.
+        for (std::size_t i = from; i < text.size(); ++i) {
+            const auto c = static_cast<unsigned char>(text[i]);
+            const bool blank = c == ' ' || c == '\t' || c == '\n' || c == '\r';
+            if (c < 0x20 && !blank) not_json(path, where, i, c, "a control byte");
+            if (!looked && !blank && !(i < 3 && text.compare(0, i + 1, std::string("\xEF\xBB\xBF").substr(0, i + 1)) == 0)) {
+                looked = true;
+                if (c != '{' && c != '[') not_json(path, where, i, c, "expected { or [");
+            }
+        }
+        if (text.size() > kMaxInputBytes) {
+            throw InputError(where, "cannot read file \"" + path + "\" (more than the limit of 1 GiB)");
+        }
+    }
+    return text;
+}
+
+LineReader::LineReader(const std::string& path, std::string option) : path_(path), option_(std::move(option)) {
+    struct stat st {};
+    fd_ = open_input(path, option_, st);
+}
+
+LineReader::~LineReader() {
+    if (fd_ >= 0) ::close(fd_);
+}
+
+bool LineReader::next(std::string& line) {
+    for (;;) {
+        const std::size_t end = buffer_.find('\n', start_);
+        if (end != std::string::npos || (eof_ && start_ < buffer_.size())) {
+            const std::size_t stop = end == std::string::npos ? buffer_.size() : end;
+            line.assign(buffer_, start_, stop - start_);
+            start_ = stop + (end == std::string::npos ? 0 : 1);
+            ++number_;
+            return true;
+        }
+        if (eof_) return false;
+        if (buffer_.size() - start_ > kMaxLineBytes) {
+            throw InputError(path_ + ":" + std::to_string(number_ + 1), "a line longer than 1 MiB (expected [fx, fy, tau])");
+        }
+        buffer_.erase(0, start_);
+        start_ = 0;
+        char chunk[1 << 16];
+        const ssize_t n = read_some(fd_, chunk, sizeof chunk);
+        if (n < 0) throw InputError(option_, "cannot read file \"" + path_ + "\" (" + reason(errno) + ")");
+        if (n == 0) eof_ = true;
+        buffer_.append(chunk, static_cast<std::size_t>(n));
+    }
+}
+
+Scene read_scene_file(const std::string& path) {
+    InputWarnings warnings;
+    Scene scene = read_scene_text(read_json_file(path), &warnings);
+    print_warnings(warnings);
+    return scene;
+}
+
+Problem load_problem(const std::string& path, const std::string& command) {
+    Problem p;
+    p.scene = read_scene_file(path);
+    if (!p.scene.body) {
+        throw InputError("$", "missing field \"body\" (" + command + " needs its mass, com and inertia)");
+    }
+    p.analysis = analyze(p.scene);
+    return p;
+}
+
+const ModeForces& find_mode(const std::vector<ModeForces>& analysis, const std::string& letters, const std::string& option) {
+    for (const ModeForces& m : analysis) {
+        if (m.mode.letters == letters) return m;
+    }
+    std::string modes;
+    for (const ModeForces& m : analysis) modes += (modes.empty() ? "" : ", ") + m.mode.letters;
+    throw InputError(option, "no mode \"" + letters + "\" in this scene (its modes: " + modes + ")");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Options.
+
+const CLI::Validator& number_check() {
+    static const CLI::Validator check(
+        [](std::string& s) -> std::string {
+            if (s.find_first_not_of(" \t\r\n") == std::string::npos) return "expected a number, got an empty string";
+            return {};
+        },
+        "NUMBER");
+    return check;
+}
+
+Vec3 checked_wrench(double fx, double fy, double tau, const std::string& where) {
+    const Vec3 e(fx, fy, tau);
+    if (!e.allFinite()) throw InputError(where, "expected finite numbers FX FY TAU");
+    if (!magnitude_in_range(e.cwiseAbs().maxCoeff())) {
+        throw InputError(where, "the wrench's magnitude is out of range (expected 0 or 1e-60 .. 1e60)");
+    }
+    return e;
+}
+
+std::vector<Vec2> checked_points(const std::vector<double>& values, const std::string& option,
+                                 std::optional<std::size_t> count) {
+    if (values.size() % 2 != 0 || (count && values.size() != 2 * *count)) {
+        throw InputError(option, "expected " + std::string(count && *count == 1 ? "two numbers X Y" : "pairs of numbers X Y") +
+                                     ", got " + std::to_string(values.size()) + " number" + (values.size() == 1 ? "" : "s"));
+    }
+    std::vector<Vec2> out;
+    for (std::size_t i = 0; i < values.size(); i += 2) {
+        const Vec2 p(values[i], values[i + 1]);
+        if (!p.allFinite() || !magnitude_in_range(p.cwiseAbs().maxCoeff())) {
+            throw InputError(option, "expected finite X Y, 0 or of magnitude 1e-60 .. 1e60");
+        }
+        out.push_back(p);
+    }
+    return out;
+}
+
+void add_picture_options(CLI::App* cmd, PictureOptions& options, bool required) {
+    auto* out = cmd->add_option("-o,--output", options.files, "write a picture: FILE.svg, FILE.pdf or FILE.png (repeatable)")
+                    ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    if (required) out->required();
+    cmd->add_option("--view", options.view, "XMIN YMIN XMAX YMAX: the part of the plane drawn (default: fitted)")
+        ->expected(4)
+        ->check(number_check());
+    cmd->add_option("--title", options.title, "the picture's title");
+}
+
+std::optional<Box> checked_picture_options(const PictureOptions& options, const std::vector<std::string>& inputs) {
+    for (const std::string& f : options.files) {
+        for (const std::string& in : inputs) {
+            if (same_file(f, in)) throw InputError("-o", "\"" + f + "\" is the input file: refusing to write a picture over it");
+        }
+        try {
+            (void)render::format_for(f);
+        } catch (const std::invalid_argument& e) {
+            throw InputError("-o", e.what());
+        }
+        const std::filesystem::path target(f);
+        const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+        struct stat st {};
+        if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) {
+            throw InputError("-o", "cannot write \"" + f + "\" (no directory \"" + dir.string() + "\")");
+        }
+        if (::access(dir.c_str(), W_OK) != 0) throw InputError("-o", "cannot write \"" + f + "\" (" + reason(errno) + ")");
+        if (::stat(f.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+            throw InputError("-o", "cannot write \"" + f + "\" (a directory)");
+        }
+    }
+    if (options.view.empty()) return std::nullopt;
+    const auto& v = options.view;
+    const bool finite = std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+    if (v.size() != 4 || !finite || !(v[0] < v[2]) || !(v[1] < v[3]) ||
+        !magnitude_in_range(std::max(std::abs(v[2] - v[0]), std::abs(v[3] - v[1])))) {
+        throw InputError("--view", "expected finite XMIN YMIN XMAX YMAX with XMIN < XMAX and YMIN < YMAX");
+    }
+    return Box{Vec2(v[0], v[1]), Vec2(v[2], v[3])};
+}
+
+void write_picture(const render::Figure& figure, const PictureOptions& options) {
+    for (const std::string& f : options.files) {
+        try {
+            render::write(figure, f);
+        } catch (const std::runtime_error& e) {
+            throw InputError("-o", e.what());
+        }
+        std::cout << "wrote " << printable(f) << "\n";
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Printing.
+
+std::string fmt(double x, int digits) {
+    if (!std::isfinite(x)) {
+        throw UnrepresentableError("a coordinate of the answer is beyond the range of a double (the scene's numbers are "
+                                   "too far apart to print it; the answer itself is exact)");
+    }
+    std::ostringstream s;
+    s << std::setprecision(digits) << (x == 0.0 ? 0.0 : x);  // no "-0"
+    return s.str();
+}
+
+std::string fmt(const Vec2& v, int digits) { return "(" + fmt(v.x(), digits) + ", " + fmt(v.y(), digits) + ")"; }
+
+std::string fmt(const Vec3& v, int digits) {
+    return "(" + fmt(v.x(), digits) + ", " + fmt(v.y(), digits) + ", " + fmt(v.z(), digits) + ")";
+}
+
+std::string degrees(double radians) {
+    std::ostringstream s;
+    const double d = radians * 180.0 / M_PI;
+    s << std::fixed << std::setprecision(2) << (std::fabs(d) < 0.005 ? 0.0 : d) << "\u00B0";
+    return s.str();
+}
+
+std::string printable(const std::string& text) {
+    std::string out;
+    for (unsigned char c : text) {
+        if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else if (c < 0x20 || c == 0x7f) {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02x", c);
+            out += hex;
+        } else {
+            out += static_cast<char>(c);
+        }
+    }
+    return out;
+}
+
+std::string describe_mode(const Scene& scene, const std::string& letters) {
+    std::string out;
+    for (std::size_t j = 0; j < letters.size(); ++j) {
+        const std::string& name = scene.contacts[j].name;
+        const char* what = letters[j] == 's'   ? "separates"
+                           : letters[j] == 'f' ? "fixed"
+                           : letters[j] == 'r' ? "slides along +t"
+                                               : "slides along -t";
+        out += (j ? ", " : "") + (name.empty() ? "contact " + std::to_string(j + 1) : printable(name)) + " " + what;
+    }
+    return out;
+}
+
+std::string region_text(const Region& r) {
+    std::string s = r.kind();
+    for (const Vec2& v : r.vertices) s += " " + fmt(v);
+    return s;
+}
+
+std::string stem(const std::string& path) { return printable(std::filesystem::path(path).stem().string()); }
+
+}  // namespace momentlab::cli

@@ -1,0 +1,133 @@
+#pragma once
+
+// What every command of the `momentlab` tool shares: reading input files safely, the scene and
+// its analysis, picture options and safe picture files, checked number options, and one way
+// of printing numbers, names and regions.
+
+#include <CLI/CLI.hpp>
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "momentlab/momentlab.hpp"
+
+namespace momentlab::cli {
+
+/// The commands: each adds its subcommand and returns the function that runs it after parsing.
+std::function<int()> add_label_command(CLI::App& app);
+std::function<int()> add_modes_command(CLI::App& app);
+std::function<int()> add_query_command(CLI::App& app);
+std::function<int()> add_analyze_command(CLI::App& app);
+std::function<int()> add_draw_command(CLI::App& app);
+std::function<int()> add_plan_command(CLI::App& app);
+
+// ---------------------------------------------------------------------------------------------
+// Input files.
+
+/// The largest input file read (scene, force set, wrench file): 1 GiB.
+inline constexpr std::size_t kMaxInputBytes = std::size_t{1} << 30;
+/// The longest line of a wrench file: 1 MiB.
+inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
+
+/// The whole of a JSON file. Throws InputError at `where` ("$" for the file argument) for a
+/// missing file, a directory, a read error, a file over kMaxInputBytes, or one that cannot be
+/// JSON text: a first non-blank byte other than { or [, or a control byte other than a blank
+/// (checked as the bytes arrive: /dev/zero and /dev/urandom fail in the first read).
+std::string read_json_file(const std::string& path, const std::string& where = "$");
+
+/// A text file read line by line with POSIX reads: every read error is reported, a directory
+/// is refused when opened, and a line longer than kMaxLineBytes is an error (a device that
+/// never ends fails within a megabyte).
+class LineReader {
+public:
+    /// Throws InputError at `option` when the file cannot be opened or is a directory.
+    LineReader(const std::string& path, std::string option);
+    ~LineReader();
+    LineReader(const LineReader&) = delete;
+    LineReader& operator=(const LineReader&) = delete;
+    /// The next line (without its newline), false at the end of the file.
+    bool next(std::string& line);
+    /// The number of the line last returned (1-based).
+    [[nodiscard]] std::size_t number() const { return number_; }
+
+private:
+    std::string path_, option_;
+    int fd_ = -1;
+    std::string buffer_;
+    std::size_t start_ = 0;
+    std::size_t number_ = 0;
+    bool eof_ = false;
+};
+
+/// A scene file, read and checked; warnings (unknown fields) go to stderr, one line each.
+Scene read_scene_file(const std::string& path);
+
+/// A scene with a body, and every mode with its sets (the start of query, analyze, draw
+/// --what forces and the planners). `command` names what needs the body, for the message.
+struct Problem {
+    Scene scene;
+    std::vector<ModeForces> analysis;
+};
+Problem load_problem(const std::string& path, const std::string& command);
+
+/// The mode with these letters; an unknown mode is an InputError at `option` that lists the
+/// scene's modes.
+const ModeForces& find_mode(const std::vector<ModeForces>& analysis, const std::string& letters,
+                            const std::string& option);
+
+// ---------------------------------------------------------------------------------------------
+// Options.
+
+/// A CLI11 check for numeric options: an empty (or blank) string is not a number.
+const CLI::Validator& number_check();
+
+/// An applied wrench read from the command line or a wrench file: finite, 0 or with its largest
+/// coordinate of magnitude 1e-60 .. 1e60, like every vector read (docs/reliability.md).
+Vec3 checked_wrench(double fx, double fy, double tau, const std::string& where);
+
+/// Points given as a flat list X Y X Y ... (--at, --centre): an even count of finite numbers in
+/// range; `count` pairs when given.
+std::vector<Vec2> checked_points(const std::vector<double>& values, const std::string& option,
+                                 std::optional<std::size_t> count = std::nullopt);
+
+/// Where a command writes its picture: `-o FILE` (repeatable; .svg, .pdf or .png), `--view`.
+struct PictureOptions {
+    std::vector<std::string> files;
+    std::vector<double> view;
+    std::string title;
+};
+
+/// Adds -o, --view and --title to a command; `required` makes -o required.
+void add_picture_options(CLI::App* cmd, PictureOptions& options, bool required);
+
+/// Checks every -o before anything is computed or written: a known extension, a directory that
+/// exists, and not one of the `inputs` (writing a picture over the scene being read is
+/// refused). Returns the --view box, if given (finite, XMIN < XMAX, YMIN < YMAX).
+std::optional<Box> checked_picture_options(const PictureOptions& options, const std::vector<std::string>& inputs);
+
+/// Writes the figure to every -o file (render::write: a new file, then renamed) and says so on
+/// stdout; a file that cannot be written, or a picture too large, is an InputError at "-o".
+void write_picture(const render::Figure& figure, const PictureOptions& options);
+
+// ---------------------------------------------------------------------------------------------
+// Printing.
+
+/// A number with `digits` significant digits, never "-0"; a non-finite number is an
+/// UnrepresentableError (a value of the answer beyond the range of a double).
+std::string fmt(double x, int digits = 6);
+std::string fmt(const Vec2& v, int digits = 6);
+std::string fmt(const Vec3& v, int digits = 6);
+/// An angle in radians as degrees with two decimals and the degree sign.
+std::string degrees(double radians);
+/// `text` with control characters escaped (\n, \t, \xNN): names and messages stay one line.
+std::string printable(const std::string& text);
+/// "contact 2 slides along +t, floor separates, ..." for the letters of a mode.
+std::string describe_mode(const Scene& scene, const std::string& letters);
+/// "polygon (0, 1) (2, 3) ...": a labelled region's kind and vertices.
+std::string region_text(const Region& r);
+/// The file name without directory and extension (for titles).
+std::string stem(const std::string& path);
+
+}  // namespace momentlab::cli

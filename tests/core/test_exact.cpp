@@ -1,0 +1,166 @@
+// momentlab's own exact numbers (Dyadic) and exact vectors against GMP rationals computed
+// independently in the test: the portable arithmetic gives the same answers as GMP on the
+// kernel's hard cases (cancellation, extreme and mixed exponents, denormals, long products),
+// which is what lets the same code run in WebAssembly without GMP.
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "exact_scene.hpp"
+#include "momentlab/core/dyadic.hpp"
+#include "momentlab/core/exact.hpp"
+#include "random_inputs.hpp"
+
+namespace momentlab {
+namespace {
+
+using reference::Q;
+using reference::to_q;
+
+// A double with a random exponent in [-lo, hi] and random sign, sometimes a denormal, an
+// integer or zero.
+double random_double(testing::Random& r, int lo, int hi) {
+    switch (r.integer(0, 9)) {
+        case 0: return 0.0;
+        case 1: return r.integer(-1000, 1000);
+        case 2: return std::ldexp(r.uniform(-1, 1), -1060);  // denormal
+        default: return std::ldexp(r.uniform(-1, 1), r.integer(-lo, hi));
+    }
+}
+
+TEST(Dyadic, ConvertsEveryDoubleExactly) {
+    testing::Random r(1);
+    for (int i = 0; i < 20000; ++i) {
+        const double x = random_double(r, 1070, 1020);
+        const Dyadic d(x);
+        ASSERT_EQ(to_q(d), Q(x)) << x;
+        ASSERT_TRUE(d.fits_double());
+        ASSERT_EQ(d.to_double(), x);
+        ASSERT_EQ(d.sign(), sign_of(x));
+    }
+    for (double x : {std::numeric_limits<double>::max(), std::numeric_limits<double>::denorm_min(),
+                     -std::numeric_limits<double>::min(), 1.0, -0.5, 0x1p52 + 1}) {
+        EXPECT_EQ(to_q(Dyadic(x)), Q(x));
+        EXPECT_EQ(Dyadic(x).to_double(), x);
+    }
+    EXPECT_EQ(to_q(Dyadic::from_integer(std::numeric_limits<std::int64_t>::min())),
+              Q(mpz_class("-9223372036854775808")));
+}
+
+// Sums, differences and products of random expressions agree with GMP; so do signs,
+// comparisons, and the rounding to doubles (within its stated error).
+TEST(Dyadic, RingOperationsAgreeWithGmp) {
+    testing::Random r(2);
+    for (int i = 0; i < 20000; ++i) {
+        const double a = random_double(r, 300, 300), b = random_double(r, 300, 300), c = random_double(r, 300, 300);
+        const Dyadic da(a), db(b), dc(c);
+        const Q qa(a), qb(b), qc(c);
+        // Cancellation: (a + b) - a, a * b - b * a, (a + b) * c - a * c - b * c.
+        ASSERT_EQ(to_q((da + db) - da), qb);
+        ASSERT_TRUE((da * db - db * da).is_zero());
+        ASSERT_TRUE(((da + db) * dc - da * dc - db * dc).is_zero());
+        const Dyadic e = (da - db) * (dc + da) * (db - dc) + da * da * da;
+        const Q qe = (qa - qb) * (qc + qa) * (qb - qc) + qa * qa * qa;
+        ASSERT_EQ(to_q(e), qe) << a << " " << b << " " << c;
+        ASSERT_EQ(to_int(e.sign()), sgn(qe));
+        ASSERT_EQ(compare(da, db), sgn(qa - qb) > 0 ? 1 : (sgn(qa - qb) < 0 ? -1 : 0));
+        ASSERT_EQ(to_q(e.scaled(-77)), qe / (Q(mpz_class(1) << 77)));
+        if (!e.is_zero()) {
+            // The rounded value is within 2^-52 relative, checked at a scale inside the range.
+            const std::int64_t k = e.exponent();
+            const Q rounded(e.to_double_scaled(k));
+            mpq_class exact = qe;
+            if (k >= 0) mpq_div_2exp(exact.get_mpq_t(), exact.get_mpq_t(), static_cast<mp_bitcnt_t>(k));
+            else mpq_mul_2exp(exact.get_mpq_t(), exact.get_mpq_t(), static_cast<mp_bitcnt_t>(-k));
+            ASSERT_LE(abs(rounded - exact), abs(exact) * Q(1, mpz_class(1) << 52));
+        }
+    }
+}
+
+// Products long enough to leave the inline limbs (hundreds of bits), with exponents far apart.
+TEST(Dyadic, LongProductsAndFarExponents) {
+    testing::Random r(3);
+    for (int i = 0; i < 500; ++i) {
+        Dyadic d = Dyadic::from_integer(1);
+        Q q = 1;
+        for (int k = 0; k < 30; ++k) {
+            const double x = random_double(r, 1000, 1000), y = std::ldexp(1.0, r.integer(-1074, 1000));
+            d = d * Dyadic(x) + Dyadic(y);
+            q = q * Q(x) + Q(y);
+        }
+        ASSERT_EQ(to_q(d), q);
+        ASSERT_TRUE((d - d).is_zero());
+        Dyadic copy = d;
+        Dyadic moved = std::move(copy);
+        ASSERT_EQ(to_q(moved), q);
+        copy = moved;  // reuse of a moved-from object
+        ASSERT_EQ(to_q(copy), q);
+    }
+}
+
+// Exact vectors: the filtered predicates on constructions (contact wrenches, friction edges,
+// cross products of those, images under an inertia matrix) against the same expression in GMP,
+// on nearly degenerate and exactly degenerate triples.
+TEST(ExactVector, PredicatesAgreeWithGmpOnHardCases) {
+    testing::Random r(4);
+    exact_stats() = {};
+    int zeros = 0;
+    for (int i = 0; i < 20000; ++i) {
+        // Three forces through one point (exactly: the wrenches are dependent) or nearly.
+        const double scale = std::ldexp(1.0, r.integer(-40, 40));
+        const Vec2 p(r.uniform(-1, 1) * scale, r.uniform(-1, 1) * scale);
+        Vec2 p2 = p;
+        if (i % 2) p2.x() = std::nextafter(p2.x(), 1e300);
+        const Vec2 d1 = r.vec3(1).head<2>(), d2 = r.vec3(1).head<2>(), d3 = r.vec3(1).head<2>();
+        const double mu = r.uniform(0, 1);
+        const Exact3 w1 = wrench_through(exact(p), exact(d1));
+        const Exact3 w2 = wrench_through(exact(p), exact(d2) + Dyadic(mu) * exact(d3));
+        const Exact3 w3 = wrench_through(exact(p2), exact(d3));
+        const ExactVector a = ExactVector::from_exact(w1), b = ExactVector::from_exact(w2), c = ExactVector::from_exact(w3);
+        const reference::QVec qa = to_q(a), qb = to_q(b), qc = to_q(c);
+        // The raw formula in rationals, independently.
+        const reference::QVec raw_b = reference::wrench(Q(p.x()), Q(p.y()), Q(d2.x()) + Q(mu) * Q(d3.x()),
+                                                        Q(d2.y()) + Q(mu) * Q(d3.y()));
+        ASSERT_EQ(qb, raw_b);
+        const int expected = sgn(reference::det(qa, qb, qc));
+        zeros += expected == 0;
+        ASSERT_EQ(to_int(det_sign(a, b, c)), expected) << i;
+        const ExactVector f = ExactVector::cross(a, b);  // a facet through two constructions
+        ASSERT_EQ(to_int(f.dot_sign(c)), expected);
+        ASSERT_EQ(to_int(dot_sign(f, ExactVector::cross(b, c))), sgn(reference::dot(reference::cross(qa, qb), reference::cross(qb, qc))));
+        ASSERT_EQ(to_int(minor_sign(a, c, 0, 2)), sgn(qa[0] * qc[2] - qa[2] * qc[0]));
+        ASSERT_EQ(parallel(a, c), reference::is_zero(reference::cross(qa, qc)));
+    }
+    EXPECT_GT(zeros, 5000);
+    EXPECT_GT(exact_stats().filtered, 20000);
+    EXPECT_GT(exact_stats().exact, 5000);
+}
+
+// The certified filter of QueryIndex: |v . w / 2^k - fl(approx . w)| <= bound max|w|.
+TEST(ExactVector, FilterBoundHolds) {
+    testing::Random r(5);
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3 u = std::ldexp(1.0, r.integer(-200, 200)) * r.vec3(1), v = std::ldexp(1.0, r.integer(-200, 200)) * r.vec3(1);
+        const ExactVector x = i % 2 ? ExactVector::cross(u, v, 1) : ExactVector::cross(ExactVector::input(u), ExactVector::from_exact(exact(v) + exact(u)));
+        const ExactVector::Filter f = x.filter();
+        ASSERT_TRUE(std::isfinite(f.bound));
+        const Vec3 w = std::ldexp(1.0, r.integer(-100, 100)) * r.vec3(1);
+        const reference::QVec qx = to_q(x);
+        // The scale 2^k relating approx to the exact vector: from the largest coordinate.
+        int k = 0;
+        const Q qmax = std::max({abs(qx[0]), abs(qx[1]), abs(qx[2])});
+        const double amax = f.approx.cwiseAbs().maxCoeff();
+        if (sgn(qmax) == 0 || amax == 0.0) continue;
+        k = static_cast<int>(std::lround(std::log2(qmax.get_d() / amax)));
+        Q exact_dot = reference::dot(qx, reference::q(w));
+        if (k >= 0) mpq_div_2exp(exact_dot.get_mpq_t(), exact_dot.get_mpq_t(), static_cast<mp_bitcnt_t>(k));
+        else mpq_mul_2exp(exact_dot.get_mpq_t(), exact_dot.get_mpq_t(), static_cast<mp_bitcnt_t>(-k));
+        const double approx_dot = f.approx.x() * w.x() + f.approx.y() * w.y() + f.approx.z() * w.z();
+        ASSERT_LE(abs(exact_dot - Q(approx_dot)), Q(f.bound) * Q(w.cwiseAbs().maxCoeff())) << i;
+    }
+}
+
+}  // namespace
+}  // namespace momentlab
