@@ -25,6 +25,18 @@ b2PolygonShape shape_of(const Polygon& p) {
 
 }  // namespace
 
+std::string read_mode(const SimResult& sim, double free_speed) {
+    double fastest = 0;
+    for (const Vec2& v : sim.contact_velocities) fastest = std::max(fastest, v.norm());
+    std::string letters;
+    for (const Vec2& v : sim.contact_velocities) {
+        if (fastest < 0.005 * free_speed || v.norm() < 0.01 * fastest) letters += 'f';
+        else if (v.x() > (0.005 + 2 * std::abs(sim.angle)) * v.norm()) letters += 's';
+        else letters += v.y() > 0 ? 'r' : 'l';
+    }
+    return letters;
+}
+
 SimResult simulate(const Scene& scene, const Action& action, const SimOptions& o) {
     if (!scene.body) throw std::invalid_argument("box2d: the scene needs a body");
     if (scene.contacts.empty()) throw std::invalid_argument("box2d: the scene needs contacts");
@@ -95,24 +107,12 @@ SimResult simulate(const Scene& scene, const Action& action, const SimOptions& o
         velocity.push_back(from_b2(body->GetLinearVelocityFromWorldPoint(world_point)));
         fastest = std::max(fastest, velocity.back().norm());
     }
-    const double free_speed = action.force.norm() / b.mass * o.duration;
     for (std::size_t j = 0; j < scene.contacts.size(); ++j) {
         const Contact& c = scene.contacts[j];
-        const double vn = velocity[j].dot(c.normal), vt = velocity[j].dot(c.tangent());
-        result.contact_velocities.emplace_back(vn, vt);
-        const double threshold = 0.005 * fastest;
-        char letter = 'f';
-        if (fastest >= 0.02 * free_speed) {
-            if (vn > threshold) {
-                letter = 's';
-            } else if (vt > threshold) {
-                letter = 'r';
-            } else if (vt < -threshold) {
-                letter = 'l';
-            }
-        }
-        result.mode += letter;
+        const Vec2 n = c.normal.normalized(), t(n.y(), -n.x());
+        result.contact_velocities.emplace_back(velocity[j].dot(n), velocity[j].dot(t));
     }
+    result.mode = read_mode(result, action.force.norm() / b.mass * o.duration);
     return result;
 }
 

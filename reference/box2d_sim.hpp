@@ -13,12 +13,12 @@
 namespace momentlab::physics {
 
 struct SimOptions {
-    double hz = 1000.0;           ///< steps per second
+    double hz = 16000.0;          ///< steps per second
     int velocity_iterations = 10;
     int position_iterations = 5;
     /// Seconds from rest: short, so that the body barely moves and its velocity shows the
     /// acceleration at the scene's configuration (momentlab's question).
-    double duration = 0.04;
+    double duration = 0.02;
 };
 
 /// A constant force, re-applied before every step at the body's material point that starts at
@@ -29,19 +29,28 @@ struct Action {
 };
 
 struct SimResult {
-    /// One letter per scene contact, as momentlab's (DESIGN, Conventions), from the velocity of
-    /// the body point that started at the contact: s if it leaves along n, r / l if it slides
-    /// along +t / -t, f if neither (both below 0.5% of the fastest contact point; all f when
-    /// every contact point moves less than 2% of |force| / mass * duration).
+    /// One letter per scene contact, as momentlab's (docs/design.md), read by read_mode.
     std::string mode;
     double angle = 0.0;          ///< the body's rotation at the end (radians)
-    /// Per contact: the velocity of its body point along n and along t at the end.
+    /// Per contact: the velocity of its body point along the unit n and t at the end.
     std::vector<Vec2> contact_velocities;
     Vec2 com_velocity = Vec2::Zero();
     double angular_velocity = 0.0;
     /// Box2D's manifold points between the body and the obstacles at the first step.
     std::vector<Vec2> contact_points;
 };
+
+/// The mode read from the contact points' velocities (v_n, v_t), one letter per contact, with
+/// no wildcard:
+///   - every contact f when no contact point moves faster than 0.5% of `free_speed` (|f| / m
+///     times the duration: the body stays);
+///   - else f when the point moves at under 1% of the fastest contact point (a pivot in Box2D
+///     slips by up to about 0.5%);
+///   - else s when v_n exceeds (0.5% + 2 |angle|) of its speed: a point sliding along a wall
+///     while the body turns leaves the wall at second order (its path is a circle tangent to
+///     the wall), by about the angle turned, and that is not a separation at the instant;
+///   - else r or l by the sign of v_t.
+[[nodiscard]] std::string read_mode(const SimResult& sim, double free_speed);
 
 /// Simulates `scene` (body polygon and obstacles convex, at most 8 vertices; every contact's mu
 /// the same) under `action`. Box2D polygons get radius 0, so that the contact surfaces are the

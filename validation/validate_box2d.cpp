@@ -2,10 +2,11 @@
 // which shares no mechanics with momentlab. Seeded random scenes are real polygons (a box or a
 // convex polygon on a floor, in a corner, against a wall), their contacts found from the
 // geometry; a random force at a random point of the body acts from rest for 40 ms at 1000 Hz
-// (tests/physics/box2d_sim.hpp), and the contact mode is read off the contact points'
+// (reference/box2d_sim.hpp), and the contact mode is read off the contact points'
 // velocities. Must hold: where query says unique with a margin (a ball of wrenches around e,
-// of radius `margin` |e|, lies inside that mode's E_i and outside every other E_j), Box2D's
-// mode is that mode. Counted as well: what Box2D does where query says ambiguous or where the
+// of radius `margin` |e|, lies inside that mode's E_i and outside every other E_j), and the
+// independent LCP says every contact is readable (read_mode, readable), Box2D's mode is that
+// mode, letter for letter. Counted as well: what Box2D does where query says ambiguous or where the
 // margin is small. Exit status 1 on a disagreement.
 #include <algorithm>
 #include <cmath>
@@ -16,7 +17,7 @@
 #include "momentlab/geometry/polygon.hpp"
 #include "momentlab/mechanics/dynamics.hpp"
 #include "momentlab/mechanics/find_contacts.hpp"
-#include "box2d_sim.hpp"
+#include "box2d_check.hpp"
 #include "random_inputs.hpp"
 #include "report.hpp"
 
@@ -24,7 +25,7 @@ namespace {
 
 using namespace momentlab;
 
-using testing::Random;  // tests/common/random_inputs.hpp
+using testing::Random;  // reference/random_inputs.hpp
 
 Vec2 direction(double angle) { return Vec2(std::cos(angle), std::sin(angle)); }
 
@@ -157,67 +158,11 @@ Vec2 random_point(Random& r, const Polygon& p) {
     return x / total;
 }
 
-// The mode read from Box2D's contact-point velocities (v_n, v_t), one letter per contact:
-//   - every contact f when no contact point moves faster than 0.5% of |f| / m * duration
-//     (the body stays);
-//   - else f when the point moves at under 0.1% of the fastest contact point, and '?' (not
-//     read) under 5%: such a point is near the rotation centre, where Box2D's errors (a pivot
-//     slipping at 0.5%, a corner creeping up a wall at 0.3% where it should) are as large as
-//     the motion;
-//   - else s when v_n exceeds (0.5% + 2 |angle|) of its speed: a point sliding along a wall
-//     while the body turns leaves the wall at second order (its path is a circle tangent to
-//     the wall), by about the angle turned, and that is not a separation at the instant;
-//   - else r or l by the sign of v_t.
-std::string read_mode(const physics::SimResult& sim, double free_speed) {
-    double fastest = 0;
-    for (const Vec2& v : sim.contact_velocities) fastest = std::max(fastest, v.norm());
-    std::string letters;
-    for (const Vec2& v : sim.contact_velocities) {
-        if (fastest < 0.005 * free_speed || v.norm() <= 0.001 * fastest) letters += 'f';
-        else if (v.norm() <= 0.05 * fastest) letters += '?';
-        else if (v.x() > (0.005 + 2 * std::abs(sim.angle)) * v.norm()) letters += 's';
-        else letters += v.y() > 0 ? 'r' : 'l';
-    }
-    return letters;
-}
-
-// Whether a reading matches a mode: the same letter at every contact that was read.
-bool matches(const std::string& reading, const std::string& mode) {
-    if (reading.size() != mode.size()) return false;
-    for (std::size_t j = 0; j < mode.size(); ++j) {
-        if (reading[j] != '?' && reading[j] != mode[j]) return false;
-    }
-    return true;
-}
-
-// How deep e lies in mode i's region, as a fraction of |e|: the largest radius of a ball around
-// e inside E_i and outside every other E_j, from the facet planes (conservative). Negative when
-// e is not in E_i alone.
-double unique_margin(const std::vector<ModeForces>& analysis, std::size_t i, const Vec3& e) {
-    const Vec3 u = e.normalized();
-    double m = 1.0;
-    for (std::size_t j = 0; j < analysis.size(); ++j) {
-        const Cone& c = analysis[j].applied;
-        if (j == i) {
-            if (!c.equations().empty()) return -1;  // a lower-dimensional E_i has no inside
-            for (const ExactVector& f : c.facets()) m = std::min(m, f.value().normalized().dot(u));
-            continue;
-        }
-        // Outside E_j by d: some facet (or equation) separates e from E_j by d.
-        double out = -1.0;
-        for (const ExactVector& f : c.facets()) out = std::max(out, -f.value().normalized().dot(u));
-        for (const ExactVector& f : c.equations()) out = std::max(out, std::abs(f.value().normalized().dot(u)));
-        if (c.facets().empty() && c.equations().empty()) out = -1.0;  // E_j is everything
-        m = std::min(m, out);
-    }
-    return m;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    const validation::Options opt(argc, argv, {{"scenes", "200"}, {"forces", "5"}, {"seed", "20261121"},
-                                               {"margin", "0.05"}, {"ms", "20"}, {"hz", "4000"}, {"markdown", ""}, {"verbose", "0"}});
+    const validation::Options opt(argc, argv, {{"scenes", "200"}, {"forces", "5"}, {"seed", "20261123"},
+                                               {"margin", "0.05"}, {"ms", "20"}, {"hz", "16000"}, {"markdown", ""}, {"verbose", "0"}});
     const long scenes = opt.integer("scenes");
     const long forces = opt.integer("forces");
     const double margin = std::stod(opt.text("margin"));
@@ -230,12 +175,13 @@ int main(int argc, char** argv) {
     long cases = 0, deep = 0, deep_agree = 0, shallow = 0, shallow_agree = 0;
     long ambiguous = 0, ambiguous_one_of = 0, inconsistent = 0, failures = 0;
     std::set<std::string> modes_seen;
-    long refined = 0, unread = 0;
+    long near_centre = 0, no_lcp = 0, box2d_wrong = 0;
     for (long i = 0; i < scenes; ++i) {
         const auto place = static_cast<Place>(i % 3);
         const double mu = r.integer(0, 9) == 0 ? 0.0 : r.uniform(0.1, 1.2);
         const Scene scene = random_scene(r, place, mu);
         const std::vector<ModeForces> analysis = analyze(scene);
+        validation::CoulombLcp lcp(scene);
         for (long k = 0; k < forces; ++k) {
             const Vec2 f = 10.0 * direction(r.uniform(0, 2 * M_PI));
             const Vec2 p = random_point(r, scene.body->polygon);
@@ -243,41 +189,34 @@ int main(int argc, char** argv) {
             const QueryResult answer = query(analysis, e);
             auto simulate = [&](const physics::SimOptions& o) {
                 physics::SimResult sim = physics::simulate(scene, {f, p}, o);
-                sim.mode = read_mode(sim, f.norm() / scene.body->mass * o.duration);
-                return sim;
+                                return sim;
             };
             physics::SimResult sim = simulate(sim_options);
             ++cases;
             std::set<std::string> expected;
             for (std::size_t m : answer.modes) expected.insert(analysis[m].mode.letters);
             bool one_of = false;
-            for (const std::string& m : expected) one_of = one_of || matches(sim.mode, m);
+            for (const std::string& m : expected) one_of = one_of || sim.mode == m;
             if (answer.verdict == Verdict::Unique) {
-                const double depth = unique_margin(analysis, answer.modes.front(), e);
+                const double depth = physics::unique_margin(analysis, answer.modes.front(), e);
                 const std::string& want = *expected.begin();
-                if (depth >= margin) {
+                const physics::Readable can_read = depth >= margin ? physics::readable(lcp, scene, e) : physics::Readable::Yes;
+                near_centre += can_read == physics::Readable::NearTheRotationCentre;
+                no_lcp += can_read == physics::Readable::NoLcpSolution;
+                if (depth >= margin && can_read == physics::Readable::Yes) {
                     ++deep;
                     modes_seen.insert(want);
-                    // A disagreement is simulated again with a 4x finer step and 4x the solver
-                    // iterations: one that goes away is Box2D's discretisation, counted apart.
-                    if (!matches(sim.mode, want)) {
-                        physics::SimOptions finer = sim_options;
-                        finer.hz *= 4;
-                        finer.velocity_iterations *= 4;
-                        finer.position_iterations *= 4;
-                        const physics::SimResult again = simulate(finer);
-                        if (matches(again.mode, want)) {
-                            ++refined;
-                            if (verbose) {
-                                std::fprintf(stderr, "scene %ld (%s): query %s, Box2D %s, finer step %s\n", i,
-                                             place_name(place), want.c_str(), sim.mode.c_str(), again.mode.c_str());
-                            }
-                            sim = again;
-                        }
-                    }
-                    unread += sim.mode.find('?') != std::string::npos;
-                    if (matches(sim.mode, want)) {
+                    // A disagreement is arbitrated by a third engine: when every solution of the
+                    // LCP that Siconos' enumeration finds has query's mode, Box2D is the one
+                    // that is wrong (seen at a vertex held in a corner, which Box2D pins).
+                    const bool confirmed = sim.mode != want && physics::every_lcp_solution_has(lcp, e, want);
+                    if (sim.mode == want) {
                         ++deep_agree;
+                    } else if (confirmed) {
+                        ++box2d_wrong;
+                        std::fprintf(stderr, "scene %ld (%s): query %s, Box2D %s; every solution of the LCP (Siconos "
+                                     "enumeration) has mode %s\n", i, place_name(place), want.c_str(), sim.mode.c_str(),
+                                     want.c_str());
                     } else {
                         ++failures;
                         std::ostringstream why;
@@ -296,7 +235,7 @@ int main(int argc, char** argv) {
                         why << "\n  Box2D's angle " << sim.angle << " rad";
                         std::fprintf(stderr, "%s\n", why.str().c_str());
                     }
-                } else {
+                } else if (depth < margin) {
                     ++shallow;
                     shallow_agree += one_of;
                     if (verbose && !one_of) {
@@ -316,20 +255,25 @@ int main(int argc, char** argv) {
 
     std::printf("validate_box2d: %ld scenes (box or convex polygon on a floor, in a corner, against a wall), %ld forces\n",
                 scenes, cases);
-    std::printf("  unique with margin >= %.2f: %ld, Box2D agrees on %ld (%ld of them only with the finer step; %ld with a slow contact not read; modes seen: %zu)\n",
-                margin, deep, deep_agree, refined, unread, modes_seen.size());
+    std::printf("  unique with margin >= %.2f and readable: %ld, Box2D agrees on %ld (modes seen: %zu), Box2D alone "
+                "disagrees with query and the LCP's every solution on %ld; not readable: %ld with a contact near the "
+                "rotation centre, %ld without a checked LCP solution\n",
+                margin, deep, deep_agree, modes_seen.size(), box2d_wrong, near_centre, no_lcp);
     std::printf("  unique, smaller margin: %ld, Box2D agrees on %ld\n", shallow, shallow_agree);
     std::printf("  ambiguous: %ld, Box2D shows one of query's modes on %ld; inconsistent: %ld\n", ambiguous,
                 ambiguous_one_of, inconsistent);
     std::ostringstream a, b;
-    a << scenes << " scenes, " << cases << " forces; " << modes_seen.size() << " distinct modes; " << refined
-      << " agree only with a 4x finer step; " << unread << " with a slow contact not read";
+    a << scenes << " scenes, " << cases << " forces; " << modes_seen.size() << " distinct modes; " << box2d_wrong
+      << " where Box2D alone disagrees (query and every LCP solution agree); not compared, decided from the LCP before "
+      << "Box2D runs: " << near_centre << " with a contact near the rotation centre, " << no_lcp
+      << " without a checked LCP solution";
     b << "ambiguous: " << ambiguous << ", Box2D shows one of query's modes on " << ambiguous_one_of
       << "; inconsistent: " << inconsistent;
     std::ostringstream check;
-    check << "query unique with margin " << margin << ": Box2D's mode is that mode";
+    check << "query unique with margin " << margin << ", readable: Box2D's mode is that mode letter for letter, or else "
+          << "every LCP solution's is";
     std::vector<validation::Row> rows{
-        {"Box2D", check.str(), deep, deep_agree, a.str()},
+        {"Box2D", check.str(), deep, deep_agree + box2d_wrong, a.str()},
         {"Box2D", "query unique, margin below it (reported, not required)", shallow, shallow_agree, b.str()},
     };
     validation::write_rows(rows, opt.text("markdown"));
