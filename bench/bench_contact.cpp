@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "coulomb_lcp.hpp"
-#include "momentlab/mechanics/dynamics.hpp"
+#include "momentlab/mechanics/query_index.hpp"
 
 namespace {
 

@@ -25,7 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)to_json(labels);
     for (const Vec2& p : {Vec2(0, 0), Vec2(1, 0), Vec2(0, 1), Vec2(-1, -1), Vec2(0.5, 0.25)}) {
         const Label l = labels.at(p);
-        // The definition (DESIGN): + at p when every force of the cone has moment >= 0 about
+        // The definition (docs/design.md): + at p when every force of the cone has moment >= 0 about
         // p, (y, -x, 1) . w >= 0; - when every one has moment <= 0; both when all are zero.
         const Vec3 moment(p.y(), -p.x(), 1.0);
         bool plus = true, minus = true;

@@ -11,7 +11,7 @@
 #include "fuzz_check.hpp"
 #include "mode_oracle.hpp"
 #include "momentlab/io/scene_json.hpp"
-#include "momentlab/mechanics/dynamics.hpp"
+#include "momentlab/mechanics/query_index.hpp"
 
 using namespace momentlab;
 

@@ -10,7 +10,7 @@
 
 #include "box2d_sim.hpp"
 #include "coulomb_lcp.hpp"
-#include "momentlab/mechanics/dynamics.hpp"
+#include "momentlab/mechanics/analysis.hpp"
 
 namespace momentlab::physics {
 

@@ -15,7 +15,7 @@
 #include <sstream>
 
 #include "momentlab/geometry/polygon.hpp"
-#include "momentlab/mechanics/dynamics.hpp"
+#include "momentlab/mechanics/analysis.hpp"
 #include "momentlab/mechanics/find_contacts.hpp"
 #include "box2d_check.hpp"
 #include "random_inputs.hpp"

@@ -130,7 +130,7 @@ nlohmann::json case_json(const PushCase& c) {
     nlohmann::json out = {{"feature", c.feature.name()},
                           {"from", point_json(c.feature.from)},
                           {"to", point_json(c.feature.to)},
-                          {"slip", std::string(1, c.slip)},
+                          {"slip", std::string(1, letter(c.slip))},
                           {"verdict", to_string(c.verdict)},
                           {"feasible", c.feasible()},
                           {"blocked", c.blocked},
@@ -145,7 +145,7 @@ nlohmann::json case_json(const PushCase& c) {
 
 std::string case_line(const PushCase& c) {
     std::ostringstream s;
-    s << "  " << std::left << std::setw(10) << c.feature.name() << std::setw(6) << c.slip << std::setw(10)
+    s << "  " << std::left << std::setw(10) << c.feature.name() << std::setw(6) << letter(c.slip) << std::setw(10)
       << to_string(c.verdict);
     std::string where;
     for (const auto& [p, q] : c.touch) where += (where.empty() ? "" : ", ") + (p == q ? fmt(p) : fmt(p) + " - " + fmt(q));
@@ -180,7 +180,7 @@ int run_push(const PlanOptions& o) {
         const bool is_edge = c.feature.kind == PushFeature::Kind::Edge;
         const bool feature_ok = (!o.edge && !o.vertex) || (o.edge && is_edge && c.feature.index == *o.edge) ||
                                 (o.vertex && !is_edge && c.feature.index == *o.vertex);
-        if (feature_ok && (o.slip.empty() || c.slip == o.slip[0])) cases.push_back(std::move(c));
+        if (feature_ok && (o.slip.empty() || letter(c.slip) == o.slip[0])) cases.push_back(std::move(c));
     }
     const char* interference = o.ignore_interference ? "ignored" : "considered";
     if (o.json) {
@@ -199,7 +199,7 @@ int run_push(const PlanOptions& o) {
     }
     if (!o.picture.files.empty() && !cases.empty()) {
         const PushCase& c = cases.front();
-        const std::string what = c.feature.name() + ", slip " + std::string(1, c.slip);
+        const std::string what = c.feature.name() + ", slip " + std::string(1, letter(c.slip));
         const std::string title =
             o.picture.title.empty() ? stem(o.file) + ": pushing " + what + " to mode " + o.goal : o.picture.title;
         std::vector<Cone> actions, solutions;

@@ -309,10 +309,7 @@ std::string describe_mode(const Scene& scene, const std::string& letters) {
     std::string out;
     for (std::size_t j = 0; j < letters.size(); ++j) {
         const std::string& name = scene.contacts[j].name;
-        const char* what = letters[j] == 's'   ? "separates"
-                           : letters[j] == 'f' ? "fixed"
-                           : letters[j] == 'r' ? "slides along +t"
-                                               : "slides along -t";
+        const char* what = describe(contact_mode(letters[j]));
         out += (j ? ", " : "") + (name.empty() ? "contact " + std::to_string(j + 1) : printable(name)) + " " + what;
     }
     return out;

@@ -316,6 +316,18 @@ bool subset(const Cone& f, const Cone& g) {
     return true;
 }
 
+bool meets_interior(const Cone& c, const Cone& e) {
+    if (e.dimension() < 3 || c.is_zero()) return false;
+    const auto on = [](const ExactVector& facet, const ExactVector& g) { return facet.dot_sign(g) == Sign::Zero; };
+    for (const ExactVector& facet : e.facets()) {
+        const bool inside_facet =
+            std::all_of(c.rays().begin(), c.rays().end(), [&](const ExactVector& r) { return on(facet, r); }) &&
+            std::all_of(c.lineality().begin(), c.lineality().end(), [&](const ExactVector& l) { return on(facet, l); });
+        if (inside_facet) return false;
+    }
+    return true;
+}
+
 bool operator==(const Cone& f, const Cone& g) {
     return f.dimension() == g.dimension() &&
            f.lineality_dimension() == g.lineality_dimension() && subset(f, g) && subset(g, f);

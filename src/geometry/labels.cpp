@@ -155,16 +155,25 @@ Labels::Labels(Cone forces)
     minus_ = sheet(intersection(points_.negated(), upper));
 }
 
-Label Labels::at(const Vec2& point) const {
-    if (!point.allFinite()) throw std::invalid_argument("Labels::at: the point must be finite");
+namespace {
+
+// The label of a point from the dual cone F*: its moment functional (or its negative) in F*.
+Label label_from_dual(const Cone& dual, const Vec2& point) {
+    if (!point.allFinite()) throw std::invalid_argument("the label's point must be finite");
     const Vec3 lambda = moment_functional(point);
-    const bool plus = dual_.has(lambda);
-    const bool minus = dual_.has(-lambda);
+    const bool plus = dual.has(lambda);
+    const bool minus = dual.has(Vec3(-lambda));
     if (plus && minus) return Label::Both;
     if (plus) return Label::Plus;
     if (minus) return Label::Minus;
     return Label::None;
 }
+
+}  // namespace
+
+Label Labels::at(const Vec2& point) const { return label_from_dual(dual_, point); }
+
+Label moment_label(const Cone& forces, const Vec2& point) { return label_from_dual(forces.dual(), point); }
 
 Cone Labels::forces_from_regions(const Region& plus, const Region& minus) {
     std::vector<ExactVector> gens;

@@ -14,6 +14,7 @@
 #include <cassert>
 #include <cmath>
 #include <map>
+#include <ostream>
 #include <stdexcept>
 
 namespace momentlab {
@@ -21,8 +22,6 @@ namespace {
 
 using Q3 = Exact3;
 
-Q3 plus(const Q3& a, const Q3& b) { return a + b; }
-Q3 minus(const Q3& a) { return -a; }
 int sign(const Dyadic& q) { return to_int(q.sign()); }
 int orient(const Q3& x, const Q3& y, const Q3& e) { return sign(det(x, y, e)); }
 
@@ -47,7 +46,7 @@ public:
         const Cone& a = out.feasible_twists;
         std::vector<Q3> lineality;
         for (const ExactVector& l : a.lineality()) lineality.push_back(l.exact());
-        add(std::string(n_.size(), 'f'), {});  // xi = 0: every contact fixed
+        add(std::string(n_.size(), letter(ContactMode::Fixed)), {});  // xi = 0: every contact fixed
         for (const Face& face : a.faces()) {
             std::vector<Q3> rays;
             for (int i : face.rays) rays.push_back(a.rays()[static_cast<std::size_t>(i)].exact());
@@ -74,11 +73,11 @@ public:
 
 private:
     std::string letters(const Q3& xi, const std::vector<bool>& closed) const {
-        std::string s(n_.size(), 's');
+        std::string s(n_.size(), letter(ContactMode::Separating));
         for (std::size_t j = 0; j < n_.size(); ++j) {
             if (!closed[j]) continue;
             const int v = sign(dot(t_[j], xi));
-            s[j] = v > 0 ? 'r' : (v < 0 ? 'l' : 'f');
+            s[j] = letter(v > 0 ? ContactMode::SlidingRight : (v < 0 ? ContactMode::SlidingLeft : ContactMode::Fixed));
         }
         return s;
     }
@@ -97,7 +96,7 @@ private:
         auto with_lines = [&](std::vector<Q3> gens) {
             for (const Q3& l : lineality) {
                 gens.push_back(l);
-                gens.push_back(minus(l));
+                gens.push_back(-l);
             }
             return gens;
         };
@@ -106,12 +105,12 @@ private:
             // rays is interior (pointed cone, wedge x line, half-space); for R^3 any vector.
             assert(std::none_of(closed.begin(), closed.end(), [](bool c) { return c; }));
             Q3 inside = rays.empty() ? lineality.front() : rays.front();
-            for (std::size_t i = 1; i < rays.size(); ++i) inside = plus(inside, rays[i]);
+            for (std::size_t i = 1; i < rays.size(); ++i) inside = inside + rays[i];
             return {{inside, with_lines(rays)}};
         }
         if (dimension == 1) {
             if (!rays.empty()) return {{rays.front(), {rays.front()}}};
-            return {{lineality.front(), {lineality.front()}}, {minus(lineality.front()), {minus(lineality.front())}}};
+            return {{lineality.front(), {lineality.front()}}, {-lineality.front(), {-lineality.front()}}};
         }
         // Dimension 2: a wedge (two rays), a half-plane (a line and a ray) or a plane.
         Q3 start, finish, e;
@@ -126,7 +125,7 @@ private:
         } else if (lineality.size() == 1) {
             shape = Shape::HalfPlane;
             start = lineality[0];
-            finish = minus(start);
+            finish = -start;
             e = cross(start, rays[0]);
         } else {
             shape = Shape::Plane;
@@ -143,7 +142,7 @@ private:
             if (!closed[j]) continue;
             const Q3 u = cross(e, t_[j]);
             if (is_zero(u)) continue;  // T_j vanishes on the whole face
-            for (const Q3& x : {u, minus(u)}) {
+            for (const Q3& x : {u, -u}) {
                 if (inside(x)) critical.push_back(x);
             }
         }
@@ -166,9 +165,9 @@ private:
                        critical.end());
         for (const Q3& c : critical) out.push_back({c, {c}});
         auto sector = [&](const Q3& a, const Q3& b) -> Cell {
-            if (orient(a, b, e) > 0) return {plus(a, b), {a, b}};
+            if (orient(a, b, e) > 0) return {a + b, {a, b}};
             const Q3 perpendicular = cross(e, a);  // a turned by a quarter counter-clockwise
-            return {perpendicular, {a, minus(a), perpendicular}};
+            return {perpendicular, {a, -a, perpendicular}};
         };
         if (shape == Shape::Plane) {
             if (critical.empty()) return {{start, with_lines({})}};
@@ -207,6 +206,28 @@ ModeSet enumerate_modes(const std::vector<Contact>& contacts) {
     }
     return Enumerator(contacts).run();
 }
+
+ContactMode contact_mode(char c) {
+    switch (c) {
+        case 's': return ContactMode::Separating;
+        case 'f': return ContactMode::Fixed;
+        case 'r': return ContactMode::SlidingRight;
+        case 'l': return ContactMode::SlidingLeft;
+        default: throw std::invalid_argument(std::string("contact_mode: expected a letter s, f, r or l, got '") + c + "'");
+    }
+}
+
+const char* describe(ContactMode m) {
+    switch (m) {
+        case ContactMode::Separating: return "separates";
+        case ContactMode::Fixed: return "fixed";
+        case ContactMode::SlidingRight: return "slides along +t";
+        case ContactMode::SlidingLeft: return "slides along -t";
+    }
+    return "?";
+}
+
+std::ostream& operator<<(std::ostream& out, ContactMode m) { return out << letter(m); }
 
 Labels rotation_centres(const Mode& mode) { return Labels(mode.twists.dual()); }
 

@@ -1,6 +1,5 @@
 #include "momentlab/planning/comply.hpp"
 
-#include "momentlab/planning/push.hpp"
 
 namespace momentlab {
 
@@ -16,12 +15,7 @@ const char* to_string(CentreVerdict v) {
 ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre) {
     ComplyPlan plan;
     plan.centre = centre;
-    // The label of c: whether its moment functional or its negative lies in E_goal's dual cone
-    // (the test Labels::at makes, without building the regions).
-    const Cone dual = goal.applied.dual();
-    const Vec3 moment = moment_functional(centre);
-    const bool plus = dual.has(moment), minus = dual.has(Vec3(-moment));
-    plan.label = plus && minus ? Label::Both : plus ? Label::Plus : minus ? Label::Minus : Label::None;
+    plan.label = moment_label(goal.applied, centre);  // without building E_goal's regions
     plan.directions = plan_directions_through(centre, goal.applied);
     // W_c ∩ E_goal is exact: {0} exactly when c is strictly inside a labelled region, and it meets
     // the interior of E_goal (the test plan_push makes) exactly when c is unlabelled and E_goal is

@@ -75,13 +75,14 @@ FreeParts free_parts(const Vec2& a, const Vec2& b, const std::vector<Polygon>& o
 // `cw` to `ccw` (the two edges' normals). An arc of pi or more (a sticking finger on a sharp
 // vertex) is split at the bisector, so that each part is convex. At a notch the sticking
 // finger touches both edges: the sum of their cones.
-std::vector<Cone> vertex_actions(const Vec2& v, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, char slip,
+std::vector<Cone> vertex_actions(const Vec2& v, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, ContactMode slip,
                                  double mu, bool reflex) {
     if (reflex) {
         return {forces_across(v, v, {friction_edge(cw, mu, true), friction_edge(cw, mu, false),
                                      friction_edge(ccw, mu, true), friction_edge(ccw, mu, false)})};
     }
-    if (slip != 'f') return {forces_across(v, v, {friction_edge(cw, mu, slip == 'l'), friction_edge(ccw, mu, slip == 'l')})};
+    const bool left = slip == ContactMode::SlidingLeft;
+    if (slip != ContactMode::Fixed) return {forces_across(v, v, {friction_edge(cw, mu, left), friction_edge(ccw, mu, left)})};
     const Exact2 first = friction_edge(cw, mu, true), last = friction_edge(ccw, mu, false);
     if (cross2(first, last).sign() == Sign::Positive) return {forces_across(v, v, {first, last})};
     return {forces_across(v, v, {first, bisector}), forces_across(v, v, {bisector, last})};
@@ -115,15 +116,15 @@ Push representative(const PushFeature& f, const Cone& solutions) {
 namespace {
 
 // A finger's forces on the segment a-b with the exact inward normal `normal`.
-Cone edge_actions(const Vec2& a, const Vec2& b, const Exact2& normal, char slip, double mu) {
-    if (slip != 'f') return forces_across(a, b, {friction_edge(normal, mu, slip == 'l')});
+Cone edge_actions(const Vec2& a, const Vec2& b, const Exact2& normal, ContactMode slip, double mu) {
+    if (slip != ContactMode::Fixed) return forces_across(a, b, {friction_edge(normal, mu, slip == ContactMode::SlidingLeft)});
     return forces_across(a, b, {friction_edge(normal, mu, true), friction_edge(normal, mu, false)});
 }
 
 }  // namespace
 
-Cone push_actions(const Vec2& a, const Vec2& b, const Vec2& normal, char slip, double mu) {
-    if (slip != 'l' && slip != 'f' && slip != 'r') throw std::invalid_argument("push_actions: slip must be l, f or r");
+Cone push_actions(const Vec2& a, const Vec2& b, const Vec2& normal, ContactMode slip, double mu) {
+    if (slip == ContactMode::Separating) throw std::invalid_argument("push_actions: slip must be l, f or r");
     if (!(mu >= 0.0) || !std::isfinite(mu)) throw std::invalid_argument("push_actions: mu must be finite and >= 0");
     if (!normal.allFinite() || normal.isZero()) throw std::invalid_argument("push_actions: the normal must be non-zero");
     return edge_actions(a, b, exact(normal), slip, mu);
@@ -144,23 +145,11 @@ const char* to_string(PushVerdict v) {
 
 Vec3 Push::wrench() const { return wrench_at(point, direction); }
 
-bool meets_interior(const Cone& c, const Cone& e) {
-    if (e.dimension() < 3 || c.is_zero()) return false;
-    const auto on = [](const ExactVector& facet, const ExactVector& g) { return facet.dot_sign(g) == Sign::Zero; };
-    for (const ExactVector& facet : e.facets()) {
-        const bool inside_facet =
-            std::all_of(c.rays().begin(), c.rays().end(), [&](const ExactVector& r) { return on(facet, r); }) &&
-            std::all_of(c.lineality().begin(), c.lineality().end(), [&](const ExactVector& l) { return on(facet, l); });
-        if (inside_facet) return false;
-    }
-    return true;
-}
-
 namespace {
 
 // The pieces of one case on the given parts of its feature (parameters along an edge).
 std::vector<PushPiece> solve_pieces(const PushFeature& f, const Exact2& cw, const Exact2& ccw, const Exact2& bisector,
-                                    char slip, double mu,
+                                    ContactMode slip, double mu,
                                     const std::vector<std::pair<double, double>>& parts, const Cone& goal,
                                     const std::vector<Polygon>* obstacles) {
     std::vector<PushPiece> pieces;
@@ -223,12 +212,12 @@ void describe(PushCase& c, const std::vector<const PushPiece*>& chosen) {
 
 // One case: solved on the whole feature (its verdict: feasible, boundary or no), then, when
 // obstacles cover part of it and the case is feasible, again on the free parts only.
-PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, char slip, double mu,
+PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, ContactMode slip, double mu,
                     const std::optional<FreeParts>& free, const Cone& goal, const std::vector<Polygon>& obstacles) {
     PushCase c;
     c.feature = f;
     c.slip = slip;
-    if (f.reflex && slip != 'f') {
+    if (f.reflex && slip != ContactMode::Fixed) {
         c.verdict = PushVerdict::Reflex;
         return c;
     }
@@ -303,7 +292,7 @@ std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, cons
             // The parts a finger can reach, once per feature (not when interference is ignored).
             const std::optional<FreeParts> free =
                 options.ignore_interference ? std::nullopt : std::optional(free_parts(f.from, f.to, scene.obstacles));
-            for (char slip : {'l', 'f', 'r'}) {
+            for (ContactMode slip : {ContactMode::SlidingLeft, ContactMode::Fixed, ContactMode::SlidingRight}) {
                 cases.push_back(solve_case(f, cw, ccw_normal, bisector, slip, options.mu, free, goal.applied, scene.obstacles));
             }
         }

@@ -117,7 +117,9 @@ TEST(Reliability, EveryRowOfTheTableInDocs) {
             EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << "expected one line, got: " << o.err;
             EXPECT_EQ(o.err.rfind("momentlab: ", 0), 0U) << o.err;
         }
-        if (row.exit == 0 && row.stderr_contains.empty()) EXPECT_EQ(o.err, "");
+        if (row.exit == 0 && row.stderr_contains.empty()) {
+            EXPECT_EQ(o.err, "");
+        }
     }
     std::cout << "[Reliability] " << rows.size() << " rows of docs/reliability.md run\n";
     std::system(("rm -rf " + dir).c_str());

@@ -1,4 +1,4 @@
-// The paper's Figure 1 and 2 force sets, worked by hand, and the counterexample of DESIGN.md
+// The paper's Figure 1 and 2 force sets, worked by hand, and the counterexample of docs/design.md
 // to the paper's "convex hull of the + regions" shorthand for intersections.
 #include <gtest/gtest.h>
 

@@ -12,7 +12,7 @@
 #include "../common/label_checks.hpp"
 #include "momentlab/geometry/labels.hpp"
 #include "momentlab/io/scene_json.hpp"
-#include "momentlab/mechanics/dynamics.hpp"
+#include "momentlab/mechanics/analysis.hpp"
 
 namespace momentlab {
 namespace {

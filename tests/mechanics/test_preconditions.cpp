@@ -7,7 +7,7 @@
 
 #include "momentlab/geometry/force_sets.hpp"
 #include "momentlab/geometry/labels.hpp"
-#include "momentlab/mechanics/dynamics.hpp"
+#include "momentlab/mechanics/query_index.hpp"
 #include "momentlab/mechanics/find_contacts.hpp"
 
 namespace momentlab {

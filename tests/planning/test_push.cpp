@@ -10,7 +10,7 @@
 #include <random>
 #include <sstream>
 
-#include "momentlab/mechanics/dynamics.hpp"
+#include "momentlab/mechanics/analysis.hpp"
 #include "momentlab/planning/push.hpp"
 
 namespace momentlab {
@@ -47,17 +47,17 @@ std::vector<double> numbers(const std::string& s) {
 // slides along -t (up) past the finger, so friction on it acts along +t (down): n + mu t =
 // (1, -1/2). Slip r: n - mu t = (1, 1/2). Slip f: either, and everything between.
 TEST(Push, EdgeActionsAreTheSlipEdgesAtBothEnds) {
-    const Cone l = push_actions(Vec2(0, 0), Vec2(0, 0.5), Vec2(1, 0), 'l', 0.5);
+    const Cone l = push_actions(Vec2(0, 0), Vec2(0, 0.5), Vec2(1, 0), contact_mode('l'), 0.5);
     EXPECT_TRUE(l.has(wrench_at(Vec2(0, 0.25), Vec2(1, -0.5))));
     EXPECT_FALSE(l.has(wrench_at(Vec2(0, 0.25), Vec2(1, 0.5))));
-    const Cone r = push_actions(Vec2(0, 0), Vec2(0, 0.5), Vec2(1, 0), 'r', 0.5);
+    const Cone r = push_actions(Vec2(0, 0), Vec2(0, 0.5), Vec2(1, 0), contact_mode('r'), 0.5);
     EXPECT_TRUE(r.has(wrench_at(Vec2(0, 0.25), Vec2(1, 0.5))));
-    const Cone f = push_actions(Vec2(0, 0), Vec2(0, 0.5), Vec2(1, 0), 'f', 0.5);
+    const Cone f = push_actions(Vec2(0, 0), Vec2(0, 0.5), Vec2(1, 0), contact_mode('f'), 0.5);
     EXPECT_TRUE(f.has(wrench_at(Vec2(0, 0.1), Vec2(1, 0.5))));
     EXPECT_TRUE(f.has(wrench_at(Vec2(0, 0.4), Vec2(1, -0.5))));
     EXPECT_TRUE(f.has(wrench_at(Vec2(0, 0.4), Vec2(1, 0))));
     EXPECT_FALSE(f.has(wrench_at(Vec2(0, 0.6), Vec2(1, 0))));  // beyond the edge
-    EXPECT_THROW((void)push_actions(Vec2(0, 0), Vec2(0, 1), Vec2(1, 0), 'x', 0.5), std::invalid_argument);
+    EXPECT_THROW((void)contact_mode('x'), std::invalid_argument);
 }
 
 // The golden table (tests/planning/golden/push-block-along-wall-rr.txt) was derived by hand in
@@ -76,7 +76,7 @@ TEST(Push, BlockAlongTheWallMatchesTheTwentyFourCasesDerivedByHand) {
         const PushCase& c = cases[k++];
         SCOPED_TRACE(line);
         EXPECT_EQ(c.feature.name(), f[0]);
-        EXPECT_EQ(std::string(1, c.slip), f[1]);
+        EXPECT_EQ(std::string(1, letter(c.slip)), f[1]);
         EXPECT_EQ(to_string(c.verdict), f[2]);
         EXPECT_EQ(c.blocked, f[3]);
         const std::vector<double> touch = numbers(f[4]), dirs = numbers(f[5]);
@@ -109,7 +109,7 @@ TEST(Push, IgnoringInterferenceChangesNoVerdictOfTheBlockButMarksIt) {
     const auto without = plan_push(scene, rr, PushOptions{0.5, true});
     ASSERT_EQ(with.size(), without.size());
     for (std::size_t i = 0; i < with.size(); ++i) {
-        EXPECT_EQ(with[i].verdict, without[i].verdict) << with[i].feature.name() << " " << with[i].slip;
+        EXPECT_EQ(with[i].verdict, without[i].verdict) << with[i].feature.name() << " " << letter(with[i].slip);
         EXPECT_EQ(without[i].blocked, "ignored");
     }
 }
@@ -123,7 +123,7 @@ TEST(Push, ObstaclesBlockSolutionsOrShortenTheTouchInterval) {
     const auto& rr = mode(analysis, "rr");
     const auto find = [](const std::vector<PushCase>& cases, const std::string& feature, char slip) {
         for (const PushCase& c : cases) {
-            if (c.feature.name() == feature && c.slip == slip) return c;
+            if (c.feature.name() == feature && letter(c.slip) == slip) return c;
         }
         throw std::logic_error("no case");
     };
@@ -161,7 +161,7 @@ TEST(Push, OrientationOfTheOutlineDoesNotMatter) {
         Vec2 p = c.feature.from, q = c.feature.to;
         if (q.x() < p.x() || (q.x() == p.x() && q.y() < p.y())) std::swap(p, q);
         std::ostringstream s;
-        s << p.transpose() << " " << q.transpose() << " " << c.slip;
+        s << p.transpose() << " " << q.transpose() << " " << letter(c.slip);
         return s.str();
     };
     std::map<std::string, PushVerdict> verdicts;
@@ -183,11 +183,11 @@ TEST(Push, NotchVerticesAreReportedAndAStuckFingerUsesBothEdges) {
     for (const PushCase& c : cases) {
         const bool notch = c.feature.kind == PushFeature::Kind::Vertex && c.feature.index == 3;
         EXPECT_EQ(c.feature.reflex, notch) << c.feature.name();
-        if (notch && c.slip != 'f') {
+        if (notch && letter(c.slip) != 'f') {
             EXPECT_EQ(c.verdict, PushVerdict::Reflex);
             ++reflex;
         }
-        if (notch && c.slip == 'f') {
+        if (notch && letter(c.slip) == 'f') {
             // At (1/2, 1/4) the edges' inward normals are (0, -1) and (-1, 0); with mu = 1/2
             // the two cones together span the directions clockwise from (1/2, -1) to (-1, 1/2).
             ASSERT_EQ(c.pieces.size(), 1u);
@@ -280,7 +280,7 @@ TEST(Push, EveryCaseAgreesWithPushesSampledFromTheDefinition) {
             for (const ModeForces& goal : analyze(scene)) {
                 const Cone& e = goal.applied;
                 for (const PushCase& c : plan_push(scene, goal, PushOptions{mu, true})) {
-                    SCOPED_TRACE(name + " mode " + goal.mode.letters + " " + c.feature.name() + " slip " + c.slip +
+                    SCOPED_TRACE(name + " mode " + goal.mode.letters + " " + c.feature.name() + " slip " + letter(c.slip) +
                                  " mu " + std::to_string(mu));
                     if (c.feature.reflex) continue;
                     const std::size_t n = ccw.size();
@@ -290,7 +290,7 @@ TEST(Push, EveryCaseAgreesWithPushesSampledFromTheDefinition) {
                                               : vertex  ? n - 1 - c.feature.index
                                                         : (2 * n - 2 - c.feature.index) % n;
                     bool in_e = false, in_interior = false;
-                    for (const Vec3& w : sample_pushes(ccw, index, vertex, c.slip, mu, rng, 150)) {
+                    for (const Vec3& w : sample_pushes(ccw, index, vertex, letter(c.slip), mu, rng, 150)) {
                         in_e = in_e || robustly_in(e, w, false);
                         in_interior = in_interior || robustly_in(e, w, true);
                     }
@@ -324,8 +324,8 @@ TEST(Push, EveryCaseAgreesWithPushesSampledFromTheDefinition) {
                     const double width = std::atan2(first.x() * last.y() - first.y() * last.x(), first.dot(last));
                     const double middle = std::atan2(first.y(), first.x()) + width / 2;
                     const double friction = std::atan(mu);
-                    const double offset = c.slip == 'l' ? -friction : c.slip == 'r' ? friction : 0.0;
-                    const double spread = c.slip == 'f' ? friction : 0.0;
+                    const double offset = letter(c.slip) == 'l' ? -friction : letter(c.slip) == 'r' ? friction : 0.0;
+                    const double spread = letter(c.slip) == 'f' ? friction : 0.0;
                     const Vec2 d = c.best->direction;
                     const double rel = std::remainder(std::atan2(d.y(), d.x()) - middle - offset, 2 * M_PI);
                     EXPECT_LE(std::abs(rel), width / 2 + spread + 1e-12);

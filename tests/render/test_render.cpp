@@ -15,7 +15,7 @@
 
 #include "momentlab/geometry/force_sets.hpp"
 #include "momentlab/io/scene_json.hpp"
-#include "momentlab/mechanics/dynamics.hpp"
+#include "momentlab/mechanics/analysis.hpp"
 #include "momentlab/render/figure.hpp"
 #include "momentlab/render/pictures.hpp"
 
@@ -46,7 +46,7 @@ Expected label_by_definition(const std::vector<Force>& forces, const Vec2& x) {
     return all_pos ? Expected::Plus : (all_neg ? Expected::Minus : Expected::None);
 }
 
-// Coulomb cone edges n +- mu t, t = (n.y, -n.x) (DESIGN, Conventions).
+// Coulomb cone edges n +- mu t, t = (n.y, -n.x) (docs/design.md, Conventions).
 std::vector<Force> cone_edges(const Vec2& p, const Vec2& n, double mu) {
     const Vec2 t(n.y(), -n.x());
     return {{p, n + mu * t}, {p, n - mu * t}};

@@ -5,7 +5,7 @@
 
 namespace momentlab {
 
-/// The exact sign of a real number computed from stored doubles (DESIGN, Robustness policy).
+/// The exact sign of a real number computed from stored doubles (docs/design.md, Robustness).
 enum class Sign : int { Negative = -1, Zero = 0, Positive = 1 };
 
 /// The sign of -x when x has sign `s`.

@@ -1,7 +1,7 @@
 #pragma once
 
 /// \file
-/// Small fixed-size vectors (Eigen) and the planar conventions of DESIGN.md.
+/// Small fixed-size vectors (Eigen) and the planar conventions of docs/design.md.
 
 #include <Eigen/Dense>
 

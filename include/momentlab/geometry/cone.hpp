@@ -2,7 +2,7 @@
 
 /// \file
 /// Closed polyhedral convex cones of R^3 (planar wrenches, twists, covectors), kept in both
-/// representations at once, each minimal (DESIGN, "The mathematics in one page").
+/// representations at once, each minimal (docs/design.md, "The mathematics in one page").
 
 #include <array>
 #include <initializer_list>
@@ -173,6 +173,9 @@ private:
 [[nodiscard]] Cone intersection(const Cone& f, const Cone& g);
 /// True when F is a subset of G. Exact (F's generators against G's half-spaces, both exact).
 [[nodiscard]] bool subset(const Cone& f, const Cone& g);
+/// True when the cone c (a subset of e) contains a point of the interior of e: c lies in no
+/// facet of e. False whenever e is not full-dimensional. Exact.
+[[nodiscard]] bool meets_interior(const Cone& c, const Cone& e);
 /// Set equality (subset both ways).
 [[nodiscard]] bool operator==(const Cone& f, const Cone& g);
 

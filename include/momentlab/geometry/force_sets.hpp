@@ -2,7 +2,7 @@
 
 /// \file
 /// Builders of the force sets of the paper (Mason 1991, Figure 1) as wrench cones.
-/// Wrenches are (fx, fy, tau) with tau about the world origin (DESIGN, Conventions).
+/// Wrenches are (fx, fy, tau) with tau about the world origin (docs/design.md, Conventions).
 
 #include <array>
 #include <vector>

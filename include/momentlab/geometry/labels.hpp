@@ -2,7 +2,7 @@
 
 /// \file
 /// Moment labels (Mason 1991, section 2): the F+ and F- regions of a force set F, which are the
-/// two sheets of the dual cone F* seen through X = (x, y, s) -> (y, -x, s) (DESIGN).
+/// two sheets of the dual cone F* seen through X = (x, y, s) -> (y, -x, s) (docs/design.md).
 
 #include <string>
 #include <vector>
@@ -83,6 +83,11 @@ private:
     Region plus_;
     Region minus_;
 };
+
+/// The exact label of a point for the force set `forces`, without building its regions: + if
+/// every force has moment >= 0 about it, - if <= 0 (the test Labels::at makes). Throws
+/// std::invalid_argument for a non-finite point.
+[[nodiscard]] Label moment_label(const Cone& forces, const Vec2& point);
 
 /// The moment functional of the point (x, y): lambda(w) = y fx - x fy + tau, as a covector.
 [[nodiscard]] inline Vec3 moment_functional(const Vec2& point) {

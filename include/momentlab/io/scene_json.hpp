@@ -1,7 +1,7 @@
 #pragma once
 
 /// \file
-/// Scene files (DESIGN, "Interfaces"):
+/// Scene files (docs/formats.md):
 /// {"body": {"mass", "com", "inertia" | "radius_of_gyration", "polygon"},
 ///  "contacts": [{"point", "normal", "mu", "mu_kinetic", "name"}], "obstacles": [{"polygon"}]}.
 

@@ -1,11 +1,12 @@
 #pragma once
 
 /// \file
-/// Contact modes of a body at rest (DESIGN, "Contact modes"): the relatively open faces of the
+/// Contact modes of a body at rest (docs/design.md, "Contact modes"): the relatively open faces of the
 /// cone A of feasible twists, refined by the sign of the tangential velocity at the contacts
 /// that stay closed. Letters per contact, in input order: s separating, f fixed, r sliding
 /// with t . v > 0, l sliding with t . v < 0.
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -15,12 +16,28 @@
 
 namespace momentlab {
 
+/// What one contact does in a mode, with its letter (docs/design.md, Conventions): it separates
+/// (the paper's parting), stays fixed (rolls or sticks), or slides with t . v > 0 (r) or
+/// t . v < 0 (l), t = (n.y, -n.x).
+enum class ContactMode : char { Separating = 's', Fixed = 'f', SlidingRight = 'r', SlidingLeft = 'l' };
+
+/// The letter of a contact mode.
+[[nodiscard]] constexpr char letter(ContactMode m) { return static_cast<char>(m); }
+/// The contact mode of a letter s, f, r or l; throws std::invalid_argument for another one.
+[[nodiscard]] ContactMode contact_mode(char letter);
+/// "separates", "fixed", "slides along +t" or "slides along -t".
+[[nodiscard]] const char* describe(ContactMode m);
+/// Writes the letter.
+std::ostream& operator<<(std::ostream& out, ContactMode m);
+
 /// One contact mode.
 struct Mode {
-    /// One letter per contact: 's', 'f', 'r' or 'l'.
+    /// One letter per contact: 's', 'f', 'r' or 'l' (ContactMode).
     std::string letters;
     /// The closure of the mode's twists (velocities, or accelerations at rest), exact.
     Cone twists;
+    /// What contact j does.
+    [[nodiscard]] ContactMode at(std::size_t j) const { return contact_mode(letters.at(j)); }
 };
 
 /// Every kinematically feasible mode of a scene.

@@ -2,7 +2,7 @@
 
 /// \file
 /// The planar contact problem as an immutable value: a rigid body touching fixed polygons at
-/// point contacts with Coulomb friction (DESIGN, Conventions).
+/// point contacts with Coulomb friction (docs/design.md, Conventions).
 
 #include <optional>
 #include <string>
@@ -49,7 +49,7 @@ struct Body {
     double inertia = 1.0;
     Polygon polygon;
     /// When set, the inertia is exactly mass * radius_of_gyration^2 (`inertia` is its rounding).
-    std::optional<double> radius_of_gyration;
+    std::optional<double> radius_of_gyration = std::nullopt;
 };
 
 /// The planar inertia at the world origin, exactly: M = [[m, 0, -m c.y], [0, m, m c.x],

@@ -1,7 +1,7 @@
 #pragma once
 
 /// \file
-/// Synthesis by compliance (Mason 1991, section 3; DESIGN, Synthesis): a linear spring with a
+/// Synthesis by compliance (Mason 1991, section 3; docs/design.md, Synthesis): a linear spring with a
 /// compliance centre c. The spring force acts along the line through c in the direction of the
 /// effector's offset, so the achievable applied wrenches are the plane W_c of forces through c,
 /// and the offsets that produce a goal mode i are the directions of W_c ∩ E_i: the lines of E_i
@@ -15,7 +15,7 @@
 /// full-dimensional), and an interval of offsets works with a margin.
 
 #include "momentlab/geometry/labels.hpp"
-#include "momentlab/mechanics/dynamics.hpp"
+#include "momentlab/mechanics/analysis.hpp"
 #include "momentlab/planning/tilt.hpp"
 
 namespace momentlab {
@@ -45,7 +45,7 @@ struct ComplyPlan {
 [[nodiscard]] ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre);
 
 /// The labels of E_goal: the compliance centres that work are the points outside both regions
-/// (DESIGN, Synthesis); the regions are drawn and written as for any force set.
+/// (docs/design.md, Synthesis); the regions are drawn and written as for any force set.
 [[nodiscard]] Labels compliance_labels(const ModeForces& goal);
 
 }  // namespace momentlab

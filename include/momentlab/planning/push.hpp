@@ -1,7 +1,7 @@
 #pragma once
 
 /// \file
-/// Synthesis by pushing (Mason 1991, section 3, Example 2; DESIGN, Synthesis): a finger touches
+/// Synthesis by pushing (Mason 1991, section 3, Example 2; docs/design.md, Synthesis): a finger touches
 /// a feature of the body (an edge or a vertex) and slips along it (l, r) or sticks (f); its
 /// force set on that feature is a cone W (or a union of cones), and the pushes that produce a
 /// goal mode i are W ∩ E_i. Letters as for contacts, the finger being the fixed side: n points
@@ -15,16 +15,18 @@
 #include <vector>
 
 #include "momentlab/geometry/cone.hpp"
-#include "momentlab/mechanics/dynamics.hpp"
+#include "momentlab/mechanics/analysis.hpp"
+#include "momentlab/mechanics/modes.hpp"
+#include "momentlab/planning/directions.hpp"
 #include "momentlab/mechanics/scene.hpp"
 
 namespace momentlab {
 
 /// The finger's forces on the body anywhere along the segment a-b, with inward normal `normal`
-/// and friction coefficient mu >= 0, for slip 'l', 'f' or 'r': the positive combinations of the
+/// and friction coefficient mu >= 0, for slip l, f or r: the positive combinations of the
 /// slip's friction-cone edges at a and at b (a force at a point between them is such a
-/// combination). Throws std::invalid_argument for another slip letter, a zero normal or mu < 0.
-[[nodiscard]] Cone push_actions(const Vec2& a, const Vec2& b, const Vec2& normal, char slip, double mu);
+/// combination). Throws std::invalid_argument for a separating slip, a zero normal or mu < 0.
+[[nodiscard]] Cone push_actions(const Vec2& a, const Vec2& b, const Vec2& normal, ContactMode slip, double mu);
 
 /// A feature of the body polygon, numbered in the polygon's own order: edge i runs from vertex
 /// i to vertex i + 1.
@@ -75,17 +77,10 @@ struct PushPiece {
     std::optional<Push> representative;
 };
 
-/// Force directions counter-clockwise from `from` to `to` (radians from +x, from in [-pi, pi),
-/// to - from in [0, 2 pi)).
-struct DirectionRange {
-    double from = 0.0;
-    double to = 0.0;
-};
-
 /// One pushing case: a feature and a slip.
 struct PushCase {
     PushFeature feature;
-    char slip = 'f';
+    ContactMode slip = ContactMode::Fixed;
     /// The parts of the feature the case was solved on: the whole feature, or its parts free of
     /// obstacles; a vertex whose arc of forces is pi or more wide has two parts.
     std::vector<PushPiece> pieces;
@@ -118,9 +113,5 @@ struct PushOptions {
 /// that order: 6 n cases for n vertices. Throws std::invalid_argument if the scene has no body
 /// polygon or mu is negative or not finite.
 [[nodiscard]] std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options = {});
-
-/// True when the cone c (a subset of e) contains a point of the interior of e: c lies in no
-/// facet of e. False whenever e is not full-dimensional. Exact.
-[[nodiscard]] bool meets_interior(const Cone& c, const Cone& e);
 
 }  // namespace momentlab

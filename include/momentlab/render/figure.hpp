@@ -3,7 +3,7 @@
 /// \file
 /// A figure as a display list (panels of shapes and texts in world coordinates) and one Cairo
 /// painter that writes it as SVG, PDF or PNG. Everything here is for looking at: coordinates
-/// are rounded doubles and nothing is decided from them (DESIGN, Robustness).
+/// are rounded doubles and nothing is decided from them (docs/design.md, Robustness).
 
 #include <optional>
 #include <string>

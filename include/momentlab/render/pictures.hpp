@@ -11,7 +11,7 @@
 
 #include "momentlab/geometry/cone.hpp"
 #include "momentlab/geometry/labels.hpp"
-#include "momentlab/mechanics/dynamics.hpp"
+#include "momentlab/mechanics/analysis.hpp"
 #include "momentlab/mechanics/scene.hpp"
 #include "momentlab/render/figure.hpp"
 

@@ -1,14 +1,14 @@
-#include "momentlab/mechanics/dynamics.hpp"
+// QueryIndex (mechanics/query_index.hpp): every distinct plane of the E_i once, a certified
+// single-precision filter over them, and the exact path where it cannot decide.
+#include "momentlab/mechanics/query_index.hpp"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <unordered_map>
 #include <stdexcept>
-
-#include "momentlab/geometry/force_sets.hpp"
+#include <unordered_map>
 
 // The 256-bit vectors of QueryIndex::query never cross a call (load is always inlined), so
 // the compiler's note that their ABI differs without AVX (-Wpsabi) does not apply here.
@@ -17,7 +17,6 @@
 #endif
 
 namespace momentlab {
-
 namespace {
 
 // A hash of the plane of v up to sign, from its rounded direction: equal planes usually share
@@ -42,62 +41,6 @@ Verdict verdict_of(std::size_t count) {
 }
 
 }  // namespace
-
-std::vector<ModeForces> analyze(const Scene& scene) {
-    if (!scene.body) throw std::invalid_argument("analyze: the scene needs a body (mass, com, inertia)");
-    const Body& b = *scene.body;
-    if (!b.com.allFinite() || !(b.mass > 0.0) || !(b.inertia > 0.0) || !std::isfinite(b.mass) || !std::isfinite(b.inertia)) {
-        throw std::invalid_argument("analyze: the body needs a finite com, 0 < mass < inf and 0 < inertia < inf");
-    }
-    const ExactMatrix m = inertia_at_origin(*scene.body);
-    const ModeSet modes = enumerate_modes(scene.contacts);
-    std::vector<ModeForces> out;
-    out.reserve(modes.modes.size());
-    for (const Mode& mode : modes.modes) {
-        std::vector<ExactVector> contact_generators;
-        for (std::size_t j = 0; j < scene.contacts.size(); ++j) {
-            const Contact& c = scene.contacts[j];
-            switch (mode.letters[j]) {
-                case 'f': {  // anywhere in the friction cone (static mu)
-                    const auto edges = friction_cone_edges(c.point, c.normal, c.mu);
-                    contact_generators.insert(contact_generators.end(), edges.begin(), edges.end());
-                    break;
-                }
-                case 'r':  // friction opposes sliding along +t: n - mu_k t
-                    contact_generators.push_back(friction_cone_edges(c.point, c.normal, c.mu_kinetic)[1]);
-                    break;
-                case 'l':  // n + mu_k t
-                    contact_generators.push_back(friction_cone_edges(c.point, c.normal, c.mu_kinetic)[0]);
-                    break;
-                default:
-                    break;
-            }
-        }
-        ModeForces f{mode, mode.twists.linear_image(m), Cone::from_generators(contact_generators), Cone()};
-        f.applied = sum(f.total, f.contact.negated());
-        out.push_back(std::move(f));
-    }
-    return out;
-}
-
-const char* to_string(Verdict v) {
-    switch (v) {
-        case Verdict::Unique: return "unique";
-        case Verdict::Ambiguous: return "ambiguous";
-        default: return "inconsistent";
-    }
-}
-
-QueryResult query(const std::vector<ModeForces>& analysis, const Vec3& e) {
-    if (!e.allFinite()) throw std::invalid_argument("query: the wrench must be finite");
-    QueryResult r;
-    for (std::size_t i = 0; i < analysis.size(); ++i) {
-        if (analysis[i].applied.has(e)) r.modes.push_back(i);
-    }
-    r.verdict = verdict_of(r.modes.size());
-    return r;
-}
-
 
 QueryIndex::QueryIndex(const std::vector<ModeForces>& analysis) : mode_count_(analysis.size()) {
     // hash -> planes stored with it; a plane is merged with a stored one when they are exactly

@@ -9,7 +9,7 @@
 #include "../common/scenes.hpp"
 #include "mode_oracle.hpp"
 #include "random_inputs.hpp"
-#include "momentlab/mechanics/dynamics.hpp"
+#include "momentlab/mechanics/query_index.hpp"
 
 namespace momentlab {
 namespace {
@@ -39,7 +39,7 @@ Contact random_contact(testing::Random& rnd, bool integral) {
     return Contact::make(p, nrm.norm() > 0 ? nrm : Vec2(0, 1), mu, mk);
 }
 
-TEST(Dynamics, BlockOnATable) {
+TEST(Analysis, BlockOnATable) {
     const auto a = analyze(block_on_table(0.5));
     const double g = 9.81;
     const Vec3 weight = force_at(Vec2(0.5, 0.25), Vec2(0, -g));
@@ -55,7 +55,7 @@ TEST(Dynamics, BlockOnATable) {
     EXPECT_EQ(answer(a, weight + force_at(Vec2(0.5, 0.25), Vec2(0, 2 * g))), (std::set<std::string>{"ss"}));
 }
 
-TEST(Dynamics, AllFixedModeResistsTheNegatedMultiContactFrictionCone) {
+TEST(Analysis, AllFixedModeResistsTheNegatedMultiContactFrictionCone) {
     const auto a = analyze(block_on_table(0.5));
     ASSERT_EQ(a.front().mode.letters, "ff");
     EXPECT_EQ(a.front().total.kind(), "{0}");
@@ -63,7 +63,7 @@ TEST(Dynamics, AllFixedModeResistsTheNegatedMultiContactFrictionCone) {
 }
 
 // Random scenes: body and 1..4 contacts; every query checked against the LP oracle.
-TEST(Dynamics, QueryAgreesWithExactLpOracle) {
+TEST(Analysis, QueryAgreesWithExactLpOracle) {
     testing::Random rnd(2718);
     int wrenches = 0, failures = 0;
     std::map<std::string, int> verdicts;
@@ -98,7 +98,7 @@ TEST(Dynamics, QueryAgreesWithExactLpOracle) {
             }
         }
     }
-    std::cout << "[Dynamics] " << wrenches << " random wrenches, " << failures << " disagreements; verdicts:";
+    std::cout << "[Analysis] " << wrenches << " random wrenches, " << failures << " disagreements; verdicts:";
     for (const auto& [k, v] : verdicts) std::cout << " " << k << "=" << v;
     std::cout << "\n";
     EXPECT_EQ(failures, 0);
@@ -108,7 +108,7 @@ TEST(Dynamics, QueryAgreesWithExactLpOracle) {
 // QueryIndex against the per-mode test (query, checked against the oracle above) where its
 // filter is weakest: wrenches on and next to the planes of the E_i, at extreme magnitudes, and
 // scenes with more than the 32 modes of its filtered path.
-TEST(Dynamics, QueryIndexAgreesWithPerModeQueryOnHardWrenches) {
+TEST(Analysis, QueryIndexAgreesWithPerModeQueryOnHardWrenches) {
     testing::Random rnd(31415);
     int checked = 0, on_boundary = 0, exact_path_scenes = 0;
     for (int s = 0; s < 80; ++s) {
@@ -157,13 +157,13 @@ TEST(Dynamics, QueryIndexAgreesWithPerModeQueryOnHardWrenches) {
             ++checked;
         }
     }
-    std::cout << "[Dynamics] QueryIndex: " << checked << " wrenches (" << on_boundary << " in several modes), "
+    std::cout << "[Analysis] QueryIndex: " << checked << " wrenches (" << on_boundary << " in several modes), "
               << exact_path_scenes << " scenes with > 32 modes\n";
     EXPECT_GE(exact_path_scenes, 5);
     EXPECT_GE(on_boundary, 1000);
 }
 
-TEST(Dynamics, QueryIndexRejectsNonFiniteWrenches) {
+TEST(Analysis, QueryIndexRejectsNonFiniteWrenches) {
     Scene s;
     s.body = Body{1.0, Vec2(0, 0.5), 0.1, {}};
     s.contacts = {Contact::make(Vec2(0, 0), Vec2(0, 1), 0.5)};
@@ -179,7 +179,7 @@ TEST(Dynamics, QueryIndexRejectsNonFiniteWrenches) {
 // (closing one and fixing the first), and integer lambda on the friction generators of a random
 // labelling. Such wrenches lie on the faces where modes meet; integer scenes make each an exact
 // double, so query and QueryIndex are compared with the exact LP oracle where it matters most.
-TEST(Dynamics, BoundaryWrenchesAgreeWithExactLpOracle) {
+TEST(Analysis, BoundaryWrenchesAgreeWithExactLpOracle) {
     testing::Random rnd(1618);
     int wrenches = 0, several = 0, failures = 0;
     for (int s = 0; s < 160 && failures < 10; ++s) {
@@ -225,7 +225,7 @@ TEST(Dynamics, BoundaryWrenchesAgreeWithExactLpOracle) {
             }
         }
     }
-    std::cout << "[Dynamics] " << wrenches << " boundary wrenches (" << several << " in several modes), " << failures
+    std::cout << "[Analysis] " << wrenches << " boundary wrenches (" << several << " in several modes), " << failures
               << " disagreements\n";
     EXPECT_EQ(failures, 0);
     EXPECT_GE(wrenches, 3000);
@@ -234,7 +234,7 @@ TEST(Dynamics, BoundaryWrenchesAgreeWithExactLpOracle) {
 
 // The verdicts of random wrenches on the slanted-normal families are the same after an exact
 // transform of the scene and the wrench (modes renamed).
-TEST(Dynamics, QueriesAreInvariantUnderExactTransforms) {
+TEST(Analysis, QueriesAreInvariantUnderExactTransforms) {
     testing::Random rnd(4242);
     const testing::SceneFamily families[] = {testing::SceneFamily::Concurrent, testing::SceneFamily::OnACircle,
                                              testing::SceneFamily::Parallel, testing::SceneFamily::Collinear,
@@ -266,14 +266,14 @@ TEST(Dynamics, QueriesAreInvariantUnderExactTransforms) {
             ++checked;
         }
     }
-    std::cout << "[Dynamics] " << checked << " wrenches compared under exact transforms\n";
+    std::cout << "[Analysis] " << checked << " wrenches compared under exact transforms\n";
     EXPECT_GE(checked, 3000);
 }
 
 // Far from the origin: the block on a table moved by (1e8, 0) gives the same answers for the
 // same forces (the inertia at the origin, I_c + m |c|^2, keeps I_c exactly), and a mass of 1e16
 // is an ordinary input.
-TEST(Dynamics, FarFromTheOriginAndHeavy) {
+TEST(Analysis, FarFromTheOriginAndHeavy) {
     Scene near = block_on_table(0.5);
     Scene far = near;
     const Vec2 d(1e8, 0);

@@ -1,0 +1,51 @@
+#pragma once
+
+/// \file
+/// Per-mode force sets of a body at rest (analyze: F, T and E of every mode) and the inverse
+/// question "which mode follows from this applied wrench?" (query) (Mason 1991, section 2.1;
+/// docs/design.md, "Per-mode force sets"). For many questions about one analysis, QueryIndex
+/// (mechanics/query_index.hpp).
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "momentlab/geometry/cone.hpp"
+#include "momentlab/mechanics/modes.hpp"
+#include "momentlab/mechanics/scene.hpp"
+
+namespace momentlab {
+
+/// The sets of one mode: twists A, total wrenches F = M A, contact wrenches T, applied
+/// wrenches E = F + (-T). All are closed cones (the closures of the mode's sets).
+struct ModeForces {
+    Mode mode;
+    Cone total;    ///< F_i
+    Cone contact;  ///< T_i: {0} for s, the friction cone (static mu) for f, the ray n -+ mu_k t for r / l
+    Cone applied;  ///< E_i
+};
+
+/// Every mode with its force sets. Needs the body (mass, centre of mass, inertia).
+/// Throws std::invalid_argument if the scene has no body, or its com is not finite, or its
+/// mass or inertia is not finite and > 0 (and, through enumerate_modes, for bad contacts).
+[[nodiscard]] std::vector<ModeForces> analyze(const Scene& scene);
+
+/// How many modes an applied wrench produces.
+enum class Verdict { Unique, Ambiguous, Inconsistent };
+
+/// "unique", "ambiguous" or "inconsistent".
+[[nodiscard]] const char* to_string(Verdict v);
+
+/// The modes whose (closed) E_i contains the applied wrench e, exactly. A wrench on the
+/// boundary between modes belongs to each of them, so boundary wrenches can be "ambiguous";
+/// for a generic wrench the closures make no difference.
+struct QueryResult {
+    std::vector<std::size_t> modes;  ///< indices into the analysis, increasing
+    Verdict verdict = Verdict::Inconsistent;
+};
+
+/// Which modes the applied wrench e (fx, fy, tau about the origin) can produce. Throws
+/// std::invalid_argument for a non-finite wrench.
+[[nodiscard]] QueryResult query(const std::vector<ModeForces>& analysis, const Vec3& e);
+
+}  // namespace momentlab

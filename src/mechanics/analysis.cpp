@@ -1,0 +1,79 @@
+// analyze and query (mechanics/analysis.hpp): every mode's F, T and E, and the modes whose
+// closed E holds an applied wrench.
+#include "momentlab/mechanics/analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "momentlab/geometry/force_sets.hpp"
+
+namespace momentlab {
+
+namespace {
+
+Verdict verdict_of(std::size_t count) {
+    return count == 0 ? Verdict::Inconsistent : (count == 1 ? Verdict::Unique : Verdict::Ambiguous);
+}
+
+}  // namespace
+
+std::vector<ModeForces> analyze(const Scene& scene) {
+    if (!scene.body) throw std::invalid_argument("analyze: the scene needs a body (mass, com, inertia)");
+    const Body& b = *scene.body;
+    const bool inertia_ok = b.radius_of_gyration ? *b.radius_of_gyration > 0.0 && std::isfinite(*b.radius_of_gyration)
+                                                 : b.inertia > 0.0 && std::isfinite(b.inertia);
+    if (!b.com.allFinite() || !(b.mass > 0.0) || !std::isfinite(b.mass) || !inertia_ok) {
+        throw std::invalid_argument(
+            "analyze: the body needs a finite com, 0 < mass < inf and 0 < inertia < inf (or radius of gyration)");
+    }
+    const ExactMatrix m = inertia_at_origin(*scene.body);
+    const ModeSet modes = enumerate_modes(scene.contacts);
+    std::vector<ModeForces> out;
+    out.reserve(modes.modes.size());
+    for (const Mode& mode : modes.modes) {
+        std::vector<ExactVector> contact_generators;
+        for (std::size_t j = 0; j < scene.contacts.size(); ++j) {
+            const Contact& c = scene.contacts[j];
+            switch (mode.at(j)) {
+                case ContactMode::Fixed: {  // anywhere in the friction cone (static mu)
+                    const auto edges = friction_cone_edges(c.point, c.normal, c.mu);
+                    contact_generators.insert(contact_generators.end(), edges.begin(), edges.end());
+                    break;
+                }
+                case ContactMode::SlidingRight:  // friction opposes sliding along +t: n - mu_k t
+                    contact_generators.push_back(friction_cone_edges(c.point, c.normal, c.mu_kinetic)[1]);
+                    break;
+                case ContactMode::SlidingLeft:  // n + mu_k t
+                    contact_generators.push_back(friction_cone_edges(c.point, c.normal, c.mu_kinetic)[0]);
+                    break;
+                case ContactMode::Separating:
+                    break;
+            }
+        }
+        ModeForces f{mode, mode.twists.linear_image(m), Cone::from_generators(contact_generators), Cone()};
+        f.applied = sum(f.total, f.contact.negated());
+        out.push_back(std::move(f));
+    }
+    return out;
+}
+
+const char* to_string(Verdict v) {
+    switch (v) {
+        case Verdict::Unique: return "unique";
+        case Verdict::Ambiguous: return "ambiguous";
+        default: return "inconsistent";
+    }
+}
+
+QueryResult query(const std::vector<ModeForces>& analysis, const Vec3& e) {
+    if (!e.allFinite()) throw std::invalid_argument("query: the wrench must be finite");
+    QueryResult r;
+    for (std::size_t i = 0; i < analysis.size(); ++i) {
+        if (analysis[i].applied.has(e)) r.modes.push_back(i);
+    }
+    r.verdict = verdict_of(r.modes.size());
+    return r;
+}
+
+}  // namespace momentlab
