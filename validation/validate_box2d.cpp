@@ -1,7 +1,7 @@
 // validate_box2d: momentlab's `query` against Box2D (Erin Catto's engine, Debian libbox2d-dev),
 // which shares no mechanics with momentlab. Seeded random scenes are real polygons (a box or a
 // convex polygon on a floor, in a corner, against a wall), their contacts found from the
-// geometry; a random force at a random point of the body acts from rest for 40 ms at 1000 Hz
+// geometry; a random force at a random point of the body acts from rest for 20 ms at 16 kHz
 // (reference/box2d_sim.hpp), and the contact mode is read off the contact points'
 // velocities. Must hold: where query says unique with a margin (a ball of wrenches around e,
 // of radius `margin` |e|, lies inside that mode's E_i and outside every other E_j), and the

@@ -1,10 +1,10 @@
 // validate_cdd: the cone kernel against cddlib (Komei Fukuda) in exact GMP rational mode, on
-// seeded random cones of every family of tests/common/random_inputs.hpp: general doubles,
+// seeded random cones of every family of reference/random_inputs.hpp: general doubles,
 // doubles in a half-space, and exactly degenerate small-integer sets (coplanar, collinear,
 // antipodal, pure moments, mixed repeats). Each input is built both ways, as the cone its
 // vectors generate and as the cone of their half-spaces, and must agree with cddlib's minimal
 // representation: dimension, lineality, the number of extreme rays and facets, and which input
-// vectors lie on which facet (tests/geometry/cone_checks.hpp). Exit status 1 on a disagreement.
+// vectors lie on which facet (reference/cone_checks.hpp). Exit status 1 on a disagreement.
 #include <cstdio>
 #include <map>
 #include <sstream>

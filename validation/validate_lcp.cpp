@@ -27,7 +27,7 @@ namespace {
 using namespace momentlab;
 using validation::CoulombLcp;
 
-using testing::Random;  // tests/common/random_inputs.hpp
+using testing::Random;  // reference/random_inputs.hpp
 
 // mu in [0, 2]: exactly 0 one time in ten, exactly 2 one time in twenty, else uniform.
 double random_mu(Random& r) {

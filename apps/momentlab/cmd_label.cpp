@@ -89,7 +89,7 @@ std::function<int()> add_label_command(CLI::App& app) {
     cmd->add_option("--at", opts->at, "X Y: also print the label of this point (repeatable)")
         ->expected(2, 2)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
-        ->check(number_check());
+        ->transform(number_check());
     add_picture_options(cmd, opts->picture, false);
     return [opts] { return run(*opts); };
 }

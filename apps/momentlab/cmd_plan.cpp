@@ -228,9 +228,9 @@ std::function<int()> add_plan_command(CLI::App& app) {
     CLI::App* push = plan->add_subcommand("push", "The features (edges, vertices) and finger slips that push the body into the goal mode");
     push->add_option("scene", opts->file, "scene JSON (docs/formats.md)")->required();
     push->add_option("--goal", opts->goal, "the goal mode's letters, e.g. rr")->required();
-    push->add_option("--mu", opts->mu, "the finger's friction coefficient (default 0.5)")->check(number_check());
-    push->add_option("--edge", opts->edge, "only this edge (from vertex I to the next)");
-    push->add_option("--vertex", opts->vertex, "only this vertex");
+    push->add_option("--mu", opts->mu, "the finger's friction coefficient (default 0.5)")->transform(number_check());
+    push->add_option("--edge", opts->edge, "only this edge (from vertex I to the next)")->check(index_check());
+    push->add_option("--vertex", opts->vertex, "only this vertex")->check(index_check());
     push->add_flag("--ignore-interference", opts->ignore_interference,
                    "let the finger touch where obstacles are (as the paper's Figure 6 does)");
     push->add_option("--slip", opts->slip, "only this slip")->check(CLI::IsMember({"l", "f", "r"}));
@@ -239,7 +239,7 @@ std::function<int()> add_plan_command(CLI::App& app) {
     CLI::App* comply = plan->add_subcommand("comply", "The spring directions through a compliance centre, and the centres that work");
     comply->add_option("scene", opts->file, "scene JSON (docs/formats.md)")->required();
     comply->add_option("--goal", opts->goal, "the goal mode's letters, e.g. rr")->required();
-    comply->add_option("--centre", opts->centre, "the compliance centre X Y")->expected(2, 2)->check(number_check());
+    comply->add_option("--centre", opts->centre, "the compliance centre X Y")->expected(2, 2)->transform(number_check());
     comply->add_flag("--json", opts->json, "machine-readable output: {\"labels\": ..., \"centre\": {\"intervals\": ...}}");
     add_picture_options(comply, opts->picture, false);
     return [opts, tilt, push, comply] {

@@ -36,6 +36,10 @@ void answer_file(const Problem& p, const std::string& path) {
         } catch (const nlohmann::json::exception&) {  // malformed, or a number like 1e999
             throw InputError(where, "expected [fx, fy, tau] of finite numbers");
         }
+        if (const std::optional<std::string> tiny = underflowing_number(line)) {
+            throw InputError(where, "\"" + printable(*tiny) + "\" is too small for a double: it would be taken as 0 "
+                                    "(expected 0 or a magnitude 1e-60 .. 1e60)");
+        }
         if (!w.is_array() || w.size() != 3 || !w[0].is_number() || !w[1].is_number() || !w[2].is_number()) {
             throw InputError(where, "expected [fx, fy, tau]");
         }
@@ -78,8 +82,11 @@ std::function<int()> add_query_command(CLI::App& app) {
     auto* one = cmd->add_option("--wrench", opts->wrench, "FX FY TAU: the applied wrench (torque about the origin)")
                     ->expected(3)
                     ->allow_extra_args(false)
-                    ->check(number_check());
-    auto* many = cmd->add_option("--wrenches", opts->wrenches, "file with one [fx, fy, tau] per line; JSON lines out");
+                    ->transform(number_check());
+    auto* many = cmd->add_option("--wrenches", opts->wrenches, "file with one [fx, fy, tau] per line; JSON lines out")
+                     ->check(CLI::Validator(
+                         [](std::string& s) { return s.empty() ? std::string("expected a file name, got an empty string") : ""; },
+                         "FILE"));
     one->excludes(many);
     cmd->add_flag("--json", opts->json, "machine-readable output");
     return [opts] { return run(*opts); };

@@ -171,13 +171,38 @@ const ModeForces& find_mode(const std::vector<ModeForces>& analysis, const std::
 // ---------------------------------------------------------------------------------------------
 // Options.
 
+// The longest --title drawn: a line of about 1,000 characters is already wider than any panel.
+constexpr std::size_t kMaxTitleBytes = 1000;
+
 const CLI::Validator& number_check() {
     static const CLI::Validator check(
         [](std::string& s) -> std::string {
-            if (s.find_first_not_of(" \t\r\n") == std::string::npos) return "expected a number, got an empty string";
+            const std::size_t first = s.find_first_not_of(" \t\r\n");
+            if (first == std::string::npos) return "expected a number, got an empty string";
+            s.erase(s.find_last_not_of(" \t\r\n") + 1);  // blanks around a number are not part of it
+            s.erase(0, first);
+            char* end = nullptr;
+            const double x = std::strtod(s.c_str(), &end);
+            if (end != s.c_str() + s.size()) return "expected a number, got \"" + printable(s) + "\"";
+            if (x == 0.0 && nonzero_digits(s)) {
+                return "\"" + printable(s) + "\" is too small for a double: it would be taken as 0 (expected 0 or a "
+                       "magnitude 1e-60 .. 1e60)";
+            }
             return {};
         },
         "NUMBER");
+    return check;
+}
+
+const CLI::Validator& index_check() {
+    static const CLI::Validator check(
+        [](std::string& s) -> std::string {
+            if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos) {
+                return "expected an index 0, 1, 2 ..., got \"" + printable(s) + "\"";
+            }
+            return {};
+        },
+        "INDEX");
     return check;
 }
 
@@ -213,11 +238,15 @@ void add_picture_options(CLI::App* cmd, PictureOptions& options, bool required) 
     if (required) out->required();
     cmd->add_option("--view", options.view, "XMIN YMIN XMAX YMAX: the part of the plane drawn (default: fitted)")
         ->expected(4)
-        ->check(number_check());
+        ->transform(number_check());
     cmd->add_option("--title", options.title, "the picture's title");
 }
 
 std::optional<Box> checked_picture_options(const PictureOptions& options, const std::vector<std::string>& inputs) {
+    if (options.title.size() > kMaxTitleBytes) {
+        throw InputError("--title", "a title of " + std::to_string(options.title.size()) + " bytes is too long to draw (at most " +
+                                        std::to_string(kMaxTitleBytes) + ")");
+    }
     for (const std::string& f : options.files) {
         for (const std::string& in : inputs) {
             if (same_file(f, in)) throw InputError("-o", "\"" + f + "\" is the input file: refusing to write a picture over it");

@@ -80,8 +80,12 @@ const ModeForces& find_mode(const std::vector<ModeForces>& analysis, const std::
 // ---------------------------------------------------------------------------------------------
 // Options.
 
-/// A CLI11 check for numeric options: an empty (or blank) string is not a number.
+/// A CLI11 check for numeric options: an empty (or blank) string is not a number, blanks around
+/// a number are dropped, anything else strtod does not read whole is refused, and so is a
+/// non-zero number that would round to 0 (1e-400).
 const CLI::Validator& number_check();
+/// A CLI11 check for index options (--edge, --vertex): digits only, not empty.
+const CLI::Validator& index_check();
 
 /// An applied wrench read from the command line or a wrench file: finite, 0 or with its largest
 /// coordinate of magnitude 1e-60 .. 1e60, like every vector read (docs/reliability.md).

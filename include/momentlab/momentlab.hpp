@@ -46,6 +46,7 @@
 #include "momentlab/mechanics/modes.hpp"
 #include "momentlab/mechanics/scene.hpp"
 #include "momentlab/planning/comply.hpp"
+#include "momentlab/planning/directions.hpp"
 #include "momentlab/planning/push.hpp"
 #include "momentlab/planning/tilt.hpp"
 #include "momentlab/render/figure.hpp"

@@ -60,13 +60,7 @@ bool det_filter(const ExactVector::Approximation& pa, const ExactVector::Approxi
                 const ExactVector::Approximation& pc, Sign& out) {
     if (!(pa.err < kInf && pb.err < kInf && pc.err < kInf)) return false;
     const Vec3 &a = pa.approx, &b = pb.approx, &c = pc.approx;
-    const double m0 = b.y() * c.z(), m1 = b.z() * c.y();
-    const double m2 = b.z() * c.x(), m3 = b.x() * c.z();
-    const double m4 = b.x() * c.y(), m5 = b.y() * c.x();
-    const double value = a.x() * (m0 - m1) + a.y() * (m2 - m3) + a.z() * (m4 - m5);
-    const double permanent = std::fabs(a.x()) * (std::fabs(m0) + std::fabs(m1)) +
-                             std::fabs(a.y()) * (std::fabs(m2) + std::fabs(m3)) +
-                             std::fabs(a.z()) * (std::fabs(m4) + std::fabs(m5));
+    const auto [value, permanent] = detail::det_terms(a, b, c);
     const double na = norm1(a), nb = norm1(b), nc = norm1(c);
     const double propagated = pa.err * (nb + 3 * pb.err) * (nc + 3 * pc.err) + pb.err * na * (nc + 3 * pc.err) +
                               pc.err * na * nb;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace momentlab::json_read {
 
@@ -108,9 +109,52 @@ struct Frame {
 std::string path_of(const std::vector<Frame>& stack) {
     std::string path = "$";
     for (std::size_t i = 0; i + 1 < stack.size(); ++i) {
-        path += stack[i].is_array ? "[" + std::to_string(stack[i].count - 1) + "]" : "." + stack[i].key;
+        if (stack[i].is_array) {
+            path.append(1, '[').append(std::to_string(stack[i].count - 1)).append(1, ']');
+        } else {
+            path.append(1, '.').append(stack[i].key);
+        }
     }
     return path;
+}
+
+// Calls f(token) for each number of a JSON text, in order: the tokens outside strings that
+// start with '-' or a digit.
+template <class F>
+void for_each_number(std::string_view text, F f) {
+    bool in_string = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (in_string) {
+            if (c == '\\') ++i;
+            else if (c == '"') in_string = false;
+            continue;
+        }
+        if (c == '"') {
+            in_string = true;
+        } else if (c == '-' || (c >= '0' && c <= '9')) {
+            const std::size_t end = std::min(text.find_first_not_of("0123456789+-.eE", i), text.size());
+            f(text.substr(i, end - i));
+            i = end - 1;
+        }
+    }
+}
+
+bool underflows(std::string_view token) {
+    return std::strtod(std::string(token).c_str(), nullptr) == 0.0 && nonzero_digits(token);
+}
+
+// For each number of the text, in order: whether it underflows. Empty when none does, the
+// usual case.
+std::vector<bool> underflowing_numbers(std::string_view text) {
+    std::vector<bool> flags;
+    bool any = false;
+    for_each_number(text, [&](std::string_view token) {
+        flags.push_back(underflows(token));
+        any = any || flags.back();
+    });
+    if (!any) flags.clear();
+    return flags;
 }
 
 }  // namespace
@@ -119,7 +163,9 @@ json parse(const std::string& text) {
     // Duplicate keys are an error: JSON parsers differ on which one wins, so a file with two
     // "mu" fields means different scenes to different programs.
     std::vector<Frame> stack;
-    const json::parser_callback_t callback = [&stack](int, json::parse_event_t event, json& parsed) {
+    const std::vector<bool> underflow = underflowing_numbers(text);
+    std::size_t numbers = 0;
+    const json::parser_callback_t callback = [&stack, &underflow, &numbers](int, json::parse_event_t event, json& parsed) {
         switch (event) {
             case json::parse_event_t::object_start:
             case json::parse_event_t::array_start:
@@ -142,6 +188,13 @@ json parse(const std::string& text) {
             }
             case json::parse_event_t::value:
                 if (!stack.empty() && stack.back().is_array) ++stack.back().count;
+                if (parsed.is_number() && !underflow.empty() && underflow[numbers++]) {
+                    const std::string at = stack.empty()            ? "$"
+                                           : stack.back().is_array ? path_of(stack) + "[" + std::to_string(stack.back().count - 1) + "]"
+                                                                    : path_of(stack) + "." + stack.back().key;
+                    throw InputError(at, "a number too small for a double: it would be taken as 0 (expected 0 or a "
+                                         "magnitude 1e-60 .. 1e60)");
+                }
                 break;
         }
         return true;
@@ -156,3 +209,29 @@ json parse(const std::string& text) {
 }
 
 }  // namespace momentlab::json_read
+
+namespace momentlab {
+
+std::optional<std::string> underflowing_number(std::string_view json_text) {
+    std::optional<std::string> first;
+    json_read::for_each_number(json_text, [&](std::string_view token) {
+        if (!first && json_read::underflows(token)) first = std::string(token);
+    });
+    return first;
+}
+
+bool nonzero_digits(std::string_view number) {
+    std::size_t i = 0;
+    if (i < number.size() && (number[i] == '-' || number[i] == '+')) ++i;
+    const bool hex = number.size() >= i + 2 && number[i] == '0' && (number[i + 1] == 'x' || number[i + 1] == 'X');
+    if (hex) i += 2;
+    for (; i < number.size(); ++i) {
+        const char c = number[i];
+        if (hex ? (c == 'p' || c == 'P') : (c == 'e' || c == 'E')) break;
+        if (c >= '1' && c <= '9') return true;
+        if (hex && ((c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'))) return true;
+    }
+    return false;
+}
+
+}  // namespace momentlab

@@ -149,7 +149,13 @@ json to_json(const Scene& scene) {
     };
     json doc = json::object();
     if (scene.body) {
-        doc["body"] = {{"mass", scene.body->mass}, {"com", xy(scene.body->com)}, {"inertia", scene.body->inertia}};
+        doc["body"] = {{"mass", scene.body->mass}, {"com", xy(scene.body->com)}};
+        // The radius of gyration when the scene gave one: the inertia is its rounded square.
+        if (scene.body->radius_of_gyration) {
+            doc["body"]["radius_of_gyration"] = *scene.body->radius_of_gyration;
+        } else {
+            doc["body"]["inertia"] = scene.body->inertia;
+        }
         if (!scene.body->polygon.empty()) doc["body"]["polygon"] = polygon(scene.body->polygon);
     }
     doc["contacts"] = json::array();

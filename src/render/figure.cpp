@@ -60,6 +60,52 @@ FrameSize frame_size(const Box& view) {
     return {std::max(kMinPanelSide, kPanelSize * w / h), kPanelSize};
 }
 
+// A text as it can be shown: a control character (which XML 1.0 cannot hold and a font has no
+// glyph for) as its escape \xNN, and a byte that is not part of valid UTF-8 (which Cairo
+// refuses) as U+FFFD. Names and titles come from users' files and options.
+std::string displayable(const std::string& s) {
+    std::string out;
+    const auto* p = reinterpret_cast<const unsigned char*>(s.data());
+    const std::size_t n = s.size();
+    for (std::size_t i = 0; i < n;) {
+        const unsigned char c = p[i];
+        if (c < 0x20 || c == 0x7F) {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02x", c);
+            out += hex;
+            ++i;
+            continue;
+        }
+        if (c < 0x80) {
+            out += static_cast<char>(c);
+            ++i;
+            continue;
+        }
+        // The length of a well-formed UTF-8 sequence starting with c, and the range of its
+        // second byte (no overlong forms, no surrogates, nothing above U+10FFFF).
+        std::size_t len = 0;
+        unsigned char lo = 0x80, hi = 0xBF;
+        if (c >= 0xC2 && c <= 0xDF) len = 2;
+        else if (c == 0xE0) len = 3, lo = 0xA0;
+        else if (c >= 0xE1 && c <= 0xEC) len = 3;
+        else if (c == 0xED) len = 3, hi = 0x9F;
+        else if (c >= 0xEE && c <= 0xEF) len = 3;
+        else if (c == 0xF0) len = 4, lo = 0x90;
+        else if (c >= 0xF1 && c <= 0xF3) len = 4;
+        else if (c == 0xF4) len = 4, hi = 0x8F;
+        bool ok = len > 0 && i + len <= n && p[i + 1] >= lo && p[i + 1] <= hi;
+        for (std::size_t k = 2; ok && k < len; ++k) ok = p[i + k] >= 0x80 && p[i + k] <= 0xBF;
+        if (ok) {
+            out.append(s, i, len);
+            i += len;
+        } else {
+            out += "\xEF\xBF\xBD";
+            ++i;
+        }
+    }
+    return out;
+}
+
 std::string xml_escaped(const std::string& s) {
     std::string out;
     for (char c : s) {
@@ -183,8 +229,9 @@ private:
     }
 
     // Text centred at a page point.
-    void text_at(const Vec2& centre, const std::string& text, double size, bool bold, const Colour& colour) {
-        if (text.empty()) return;
+    void text_at(const Vec2& centre, const std::string& raw, double size, bool bold, const Colour& colour) {
+        if (raw.empty()) return;
+        const std::string text = displayable(raw);
         cairo_select_font_face(cr_, kFont, CAIRO_FONT_SLANT_NORMAL,
                                bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
         cairo_set_font_size(cr_, size);
@@ -196,7 +243,8 @@ private:
     }
 
     // Text with its baseline starting at (x, y).
-    void text_from(double x, double y, const std::string& text, double size, bool bold, const Colour& colour) {
+    void text_from(double x, double y, const std::string& raw, double size, bool bold, const Colour& colour) {
+        const std::string text = displayable(raw);
         cairo_select_font_face(cr_, kFont, CAIRO_FONT_SLANT_NORMAL,
                                bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
         cairo_set_font_size(cr_, size);
@@ -266,7 +314,7 @@ std::string with_text_layer(std::string svg, const Figure& f, const std::vector<
     const std::size_t open = svg.find("<svg");
     const std::size_t open_end = open == std::string::npos ? open : svg.find('>', open);
     if (open_end == std::string::npos) throw std::runtime_error("render: cairo wrote no SVG start tag");
-    svg.insert(open_end + 1, "\n<title>" + xml_escaped(f.title) + "</title>");
+    svg.insert(open_end + 1, "\n<title>" + xml_escaped(displayable(f.title)) + "</title>");
     return svg;
 }
 
@@ -341,7 +389,7 @@ std::string render(const Figure& figure, Format format) {
                                          " points on a side: draw fewer panels");
             }
             surface.reset(cairo_pdf_surface_create_for_stream(append_to_string, &bytes, page.width, page.height));
-            cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, figure.title.c_str());
+            cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, displayable(figure.title).c_str());
             cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "momentlab");
             break;
         case Format::Png: {

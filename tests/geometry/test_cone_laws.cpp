@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <map>
 
+#include "../common/sizes.hpp"
 #include "cone_checks.hpp"
 #include "random_inputs.hpp"
 #include "geometry/cone_build.hpp"
@@ -17,7 +18,7 @@ namespace {
 
 using testing::Family;
 
-constexpr int kPairs = 5000;  // two cones each: 10,000 random cones
+const int kPairs = testing::sized(5000);  // two cones each: 10,000 random cones
 
 Family family_of(int i) {
     static const Family integral[] = {Family::SmallIntegers, Family::Coplanar, Family::Collinear,
@@ -136,6 +137,7 @@ TEST(ConeLaws, AgreeWithExactOracleOnRandomAndDegenerateCones) {
     for (const auto& [k, n] : kinds) std::cout << " " << k << "=" << n;
     std::cout << "\n";
     EXPECT_EQ(tally.failures, 0);
+    EXPECT_EQ(tally.cases, 6 * kPairs);  // 30,000 in the release build, the count README.md states
     // Every kind of cone must have been exercised.
     for (const char* k : {"{0}", "ray", "line", "wedge", "half-plane", "plane", "pointed cone",
                           "wedge x line", "half-space", "R^3"}) {
@@ -149,7 +151,7 @@ TEST(ConeLaws, AgreeWithExactOracleOnRandomAndDegenerateCones) {
 TEST(ConeLaws, FacesAreConsistentWithExactIncidence) {
     testing::Random rnd(11);
     int checked = 0, cones = 0;
-    for (int i = 0; i < 2000; ++i) {
+    for (int i = 0; i < testing::sized(2000); ++i) {
         const auto g = testing::random_generators(rnd, family_of(i), 8);
         const Cone c = Cone::from_generators(g);
         ++cones;
@@ -168,8 +170,8 @@ TEST(ConeLaws, FacesAreConsistentWithExactIncidence) {
             }
         }
     }
-    EXPECT_EQ(cones, 2000);
-    EXPECT_GT(checked, 10000);
+    EXPECT_EQ(cones, testing::sized(2000));
+    EXPECT_GT(checked, testing::sized(10000));
 }
 
 // More than 64 generators: the construction then starts from a floating-point guess of an
@@ -179,7 +181,7 @@ TEST(ConeLaws, ManyGeneratorsAgreeWithExactOracle) {
     ConeBuilder::stats() = {};
     int failures = 0;
     std::map<std::string, int> kinds;
-    for (int i = 0; i < 600; ++i) {
+    for (int i = 0; i < testing::sized(600); ++i) {
         const Family family = family_of(i);
         std::vector<Vec3> g;
         const int target = rnd.integer(65, 160);
@@ -211,8 +213,8 @@ TEST(ConeLaws, ManyGeneratorsAgreeWithExactOracle) {
     for (const auto& [k, n] : kinds) std::cout << " " << k << "=" << n;
     std::cout << "; rank-3 paths: by pivot " << paths.by_pivot << ", retries " << paths.retries
               << ", dual clip " << paths.dual_clip << "\n";
-    EXPECT_GE(kinds["pointed cone"], 50);
-    EXPECT_GE(kinds["wedge x line"] + kinds["half-space"], 20);
+    EXPECT_GE(kinds["pointed cone"], testing::sized(50));
+    EXPECT_GE(kinds["wedge x line"] + kinds["half-space"], testing::sized(20));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "../common/scenes.hpp"
+#include "../common/sizes.hpp"
 #include "mode_oracle.hpp"
 #include "random_inputs.hpp"
 #include "momentlab/mechanics/query_index.hpp"
@@ -67,7 +68,7 @@ TEST(Analysis, QueryAgreesWithExactLpOracle) {
     testing::Random rnd(2718);
     int wrenches = 0, failures = 0;
     std::map<std::string, int> verdicts;
-    for (int s = 0; s < 120 && failures < 10; ++s) {
+    for (int s = 0; s < testing::sized(120) && failures < 10; ++s) {
         Scene scene;
         scene.body = Body{rnd.uniform(0.5, 2), Vec2(rnd.uniform(-1, 1), rnd.uniform(0, 1)), rnd.uniform(0.1, 1), {}};
         const int n = rnd.integer(1, 4);
@@ -102,7 +103,7 @@ TEST(Analysis, QueryAgreesWithExactLpOracle) {
     for (const auto& [k, v] : verdicts) std::cout << " " << k << "=" << v;
     std::cout << "\n";
     EXPECT_EQ(failures, 0);
-    EXPECT_GE(wrenches, 10000);
+    EXPECT_GE(wrenches, testing::sized(10000));
 }
 
 // QueryIndex against the per-mode test (query, checked against the oracle above) where its
@@ -111,7 +112,7 @@ TEST(Analysis, QueryAgreesWithExactLpOracle) {
 TEST(Analysis, QueryIndexAgreesWithPerModeQueryOnHardWrenches) {
     testing::Random rnd(31415);
     int checked = 0, on_boundary = 0, exact_path_scenes = 0;
-    for (int s = 0; s < 80; ++s) {
+    for (int s = 0; s < testing::sized(80); ++s) {
         Scene scene;
         const bool integral = s % 2 == 0;
         scene.body = Body{1.0, integral ? Vec2(rnd.integer(-1, 1), rnd.integer(0, 1)) : Vec2(rnd.uniform(-1, 1), rnd.uniform(0, 1)),
@@ -159,8 +160,8 @@ TEST(Analysis, QueryIndexAgreesWithPerModeQueryOnHardWrenches) {
     }
     std::cout << "[Analysis] QueryIndex: " << checked << " wrenches (" << on_boundary << " in several modes), "
               << exact_path_scenes << " scenes with > 32 modes\n";
-    EXPECT_GE(exact_path_scenes, 5);
-    EXPECT_GE(on_boundary, 1000);
+    EXPECT_GE(exact_path_scenes, testing::sized(5));
+    EXPECT_GE(on_boundary, testing::sized(1000));
 }
 
 TEST(Analysis, QueryIndexRejectsNonFiniteWrenches) {
@@ -182,7 +183,7 @@ TEST(Analysis, QueryIndexRejectsNonFiniteWrenches) {
 TEST(Analysis, BoundaryWrenchesAgreeWithExactLpOracle) {
     testing::Random rnd(1618);
     int wrenches = 0, several = 0, failures = 0;
-    for (int s = 0; s < 160 && failures < 10; ++s) {
+    for (int s = 0; s < testing::sized(160) && failures < 10; ++s) {
         Scene scene;
         scene.body = Body{static_cast<double>(rnd.integer(1, 3)), Vec2(rnd.integer(-2, 2), rnd.integer(-1, 2)),
                           static_cast<double>(rnd.integer(1, 4)), {}};
@@ -228,8 +229,8 @@ TEST(Analysis, BoundaryWrenchesAgreeWithExactLpOracle) {
     std::cout << "[Analysis] " << wrenches << " boundary wrenches (" << several << " in several modes), " << failures
               << " disagreements\n";
     EXPECT_EQ(failures, 0);
-    EXPECT_GE(wrenches, 3000);
-    EXPECT_GE(several, 1000);
+    EXPECT_GE(wrenches, testing::sized(3000));
+    EXPECT_GE(several, testing::sized(1000));
 }
 
 // The verdicts of random wrenches on the slanted-normal families are the same after an exact
@@ -240,7 +241,7 @@ TEST(Analysis, QueriesAreInvariantUnderExactTransforms) {
                                              testing::SceneFamily::Parallel, testing::SceneFamily::Collinear,
                                              testing::SceneFamily::SlantedIntegers};
     int checked = 0;
-    for (int s = 0; s < 300; ++s) {
+    for (int s = 0; s < testing::sized(300); ++s) {
         const Scene scene = testing::random_scene(rnd, families[s % 5], 4, s % 3 == 2);
         const testing::Transform t = testing::random_transform(rnd, scene.contacts.size());
         if (!testing::exactly_representable(t, scene)) continue;
@@ -267,7 +268,7 @@ TEST(Analysis, QueriesAreInvariantUnderExactTransforms) {
         }
     }
     std::cout << "[Analysis] " << checked << " wrenches compared under exact transforms\n";
-    EXPECT_GE(checked, 3000);
+    EXPECT_GE(checked, testing::sized(3000));
 }
 
 // Far from the origin: the block on a table moved by (1e8, 0) gives the same answers for the

@@ -16,7 +16,7 @@ for f in bin/momentlab include/momentlab/momentlab.hpp lib/cmake/momentlab/momen
          lib/pkgconfig/momentlab.pc; do
     [ -e "$prefix/$f" ] || { echo "not installed: $f"; exit 1; }
 done
-if grep -rl "DESIGN.md" "$prefix/include" "$prefix/lib/cmake"; then
+if grep -rlE "DESIGN[.]md" "$prefix/include" "$prefix/lib/cmake"; then
     echo "an installed file cites a document outside the repository"; exit 1
 fi
 

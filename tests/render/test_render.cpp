@@ -362,6 +362,29 @@ TEST(Svg, Figure3PanelsAreTotalContactAppliedForModeRr) {
 
 // ---------------------------------------------------------------- files
 
+// Titles and names come from users: a control character (which XML 1.0 cannot hold) or a byte
+// that is not UTF-8 (which Cairo refuses) is drawn as text, and the SVG stays well-formed: no
+// byte below 0x20 but blanks, and valid UTF-8 throughout (checked byte by byte here).
+TEST(Svg, ControlCharactersAndBadUtf8InTextsAreDrawnAsText) {
+    const Cone f = force_ray(Vec2(0, 0), Vec2(1, 0));
+    const Figure fig = labels_figure(std::string("a\x01" "b\x1b" "c\xff" "d<&"), {panel_of(std::string("F\x02\xc3"), f)},
+                                     false, f, Box{Vec2(-3, -3), Vec2(3, 3)});
+    const std::string svg = render(fig, Format::Svg);
+    for (std::size_t i = 0; i < svg.size();) {
+        const auto c = static_cast<unsigned char>(svg[i]);
+        ASSERT_FALSE(c < 0x20 && c != '\n' && c != '\t' && c != '\r') << "control byte at " << i;
+        std::size_t len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+        ASSERT_NE(len, 0U) << "not UTF-8 at " << i;
+        for (std::size_t k = 1; k < len; ++k) {
+            ASSERT_EQ(static_cast<unsigned char>(svg.at(i + k)) >> 6, 2U) << "not UTF-8 at " << i + k;
+        }
+        i += len;
+    }
+    EXPECT_NE(svg.find("<title>a\\x01b\\x1bc\xEF\xBF\xBD" "d&lt;&amp;</title>"), std::string::npos);
+    EXPECT_NO_THROW((void)render(fig, Format::Pdf));
+    EXPECT_NO_THROW((void)render(fig, Format::Png));
+}
+
 TEST(Write, FormatComesFromTheExtension) {
     EXPECT_EQ(format_for("a.svg"), Format::Svg);
     EXPECT_EQ(format_for("dir.x/a.PDF"), Format::Pdf);

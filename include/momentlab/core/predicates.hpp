@@ -42,6 +42,21 @@ inline bool filter_decides(double value, double permanent) {
     return std::fabs(value) > kErrorBound * permanent && permanent > kMinPermanent &&
            permanent < 0x1p1000;
 }
+/// det[a b c] evaluated in doubles, and its permanent (the same sum with every term made
+/// positive), which scales the evaluation's error: the floating-point filters' common part.
+struct DetTerms {
+    double value;
+    double permanent;
+};
+[[nodiscard]] inline DetTerms det_terms(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const double m0 = b.y() * c.z(), m1 = b.z() * c.y();
+    const double m2 = b.z() * c.x(), m3 = b.x() * c.z();
+    const double m4 = b.x() * c.y(), m5 = b.y() * c.x();
+    return {a.x() * (m0 - m1) + a.y() * (m2 - m3) + a.z() * (m4 - m5),
+            std::fabs(a.x()) * (std::fabs(m0) + std::fabs(m1)) + std::fabs(a.y()) * (std::fabs(m2) + std::fabs(m3)) +
+                std::fabs(a.z()) * (std::fabs(m4) + std::fabs(m5))};
+}
+
 }  // namespace detail
 
 /// The exact sign of the dot product a . b.
@@ -54,13 +69,7 @@ inline bool filter_decides(double value, double permanent) {
 
 /// The exact sign of det[a b c] = a . (b x c) (the orientation of three vectors from the origin).
 [[nodiscard]] inline Sign det_sign(const Vec3& a, const Vec3& b, const Vec3& c) {
-    const double m0 = b.y() * c.z(), m1 = b.z() * c.y();
-    const double m2 = b.z() * c.x(), m3 = b.x() * c.z();
-    const double m4 = b.x() * c.y(), m5 = b.y() * c.x();
-    const double value = a.x() * (m0 - m1) + a.y() * (m2 - m3) + a.z() * (m4 - m5);
-    const double permanent = std::fabs(a.x()) * (std::fabs(m0) + std::fabs(m1)) +
-                             std::fabs(a.y()) * (std::fabs(m2) + std::fabs(m3)) +
-                             std::fabs(a.z()) * (std::fabs(m4) + std::fabs(m5));
+    const auto [value, permanent] = detail::det_terms(a, b, c);
     // A product of b and c below the normal range errs by up to 2^-1075 absolutely, and a's
     // coordinates scale that error: the bound needs an absolute term (found by fuzz_cone with
     // coordinates near 1e231 and 1e-322).

@@ -2,7 +2,7 @@
 
 /// \file
 /// Closed polyhedral convex cones of R^3 (planar wrenches, twists, covectors), kept in both
-/// representations at once, each minimal (docs/design.md, "The mathematics in one page").
+/// representations at once, each minimal (docs/design.md, "The mathematics").
 
 #include <array>
 #include <initializer_list>

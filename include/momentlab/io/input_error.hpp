@@ -3,8 +3,10 @@
 /// \file
 /// The error for bad user input read from JSON.
 
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace momentlab {
@@ -41,5 +43,14 @@ inline constexpr double kLargestMagnitude = 1e60;
 inline bool magnitude_in_range(double m) {
     return m == 0.0 || (m >= kSmallestMagnitude && m <= kLargestMagnitude);
 }
+
+/// True when the text of a number (decimal, or hexadecimal 0x..p..) has a non-zero digit
+/// before its exponent: a number that reads as 0.0 although it is not zero (1e-400, 0x1p-2000)
+/// has underflowed, and is refused rather than taken as 0.
+[[nodiscard]] bool nonzero_digits(std::string_view number);
+
+/// The first number of a JSON text that underflows (reads as 0.0 though it is not zero), if
+/// any. read_scene_text and the force-set readers refuse such numbers with their JSON path.
+[[nodiscard]] std::optional<std::string> underflowing_number(std::string_view json_text);
 
 }  // namespace momentlab

@@ -22,7 +22,9 @@ namespace momentlab {
 /// `warnings`, when given.
 [[nodiscard]] Scene read_scene(const nlohmann::json& doc, InputWarnings* warnings = nullptr);
 
-/// The scene as JSON, in the same format (contacts always written out, mu_kinetic included).
+/// The scene as JSON, in the same format (contacts always written out, mu_kinetic included),
+/// so that read_scene gives back the same scene: normals as given, and the radius of gyration
+/// instead of the inertia when the scene was given one.
 [[nodiscard]] nlohmann::json to_json(const Scene& scene);
 
 /// Parses `text` as JSON and reads the scene.
