@@ -91,25 +91,19 @@ inline bool same_directions(const std::vector<reference::QVec>& ours, const std:
     return true;
 }
 
-/// The oracle's generators (rays, then +-lineality) and half-space normals (facets, then
-/// +-equations), exactly.
-inline std::vector<reference::QVec> oracle_generators(const oracle::OracleCone& o) {
-    std::vector<reference::QVec> out = o.rays;
-    for (const auto& l : o.lineality) {
+/// `out` followed by each vector of a basis of a space and its negative: the space as a cone.
+inline std::vector<reference::QVec> with_spans(std::vector<reference::QVec> out, const std::vector<reference::QVec>& basis) {
+    for (const auto& l : basis) {
         out.push_back(l);
         out.push_back(reference::neg(l));
     }
     return out;
 }
 
-inline std::vector<reference::QVec> oracle_halfspaces(const oracle::OracleCone& o) {
-    std::vector<reference::QVec> out = o.facets;
-    for (const auto& e : o.equations) {
-        out.push_back(e);
-        out.push_back(reference::neg(e));
-    }
-    return out;
-}
+/// The oracle's generators (rays, then +-lineality) and half-space normals (facets, then
+/// +-equations), exactly.
+inline std::vector<reference::QVec> oracle_generators(const oracle::OracleCone& o) { return with_spans(o.rays, o.lineality); }
+inline std::vector<reference::QVec> oracle_halfspaces(const oracle::OracleCone& o) { return with_spans(o.facets, o.equations); }
 
 /// Empty when `x` equals the oracle's cone exactly: the same dimension and lineality, the same
 /// extreme rays and facets (as directions, one to one), the same lineality space and the same

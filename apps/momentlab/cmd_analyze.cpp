@@ -51,9 +51,8 @@ int run(const AnalyzeOptions& o) {
 
 std::function<int()> add_analyze_command(CLI::App& app) {
     auto opts = std::make_shared<AnalyzeOptions>();
-    CLI::App* cmd = app.add_subcommand("analyze", "Every mode with its twists, total, contact and applied wrenches");
-    cmd->add_option("scene", opts->file, "scene JSON (docs/formats.md)")->required();
-    cmd->add_flag("--json", opts->json, "machine-readable output");
+    add_scene_command(app, opts, "analyze", "Every mode with its twists, total, contact and applied wrenches",
+                      "machine-readable output");
     return [opts] { return run(*opts); };
 }
 

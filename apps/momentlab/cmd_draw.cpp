@@ -56,8 +56,7 @@ int run(const DrawOptions& o) {
 
 std::function<int()> add_draw_command(CLI::App& app) {
     auto opts = std::make_shared<DrawOptions>();
-    CLI::App* cmd = app.add_subcommand("draw", "Draw a scene: its modes, the forces of some modes, or its friction cones");
-    cmd->add_option("scene", opts->file, "scene JSON (docs/formats.md)")->required();
+    CLI::App* cmd = add_scene_command(app, opts, "draw", "Draw a scene: its modes, the forces of some modes, or its friction cones");
     cmd->add_option("--mode", opts->modes, "a mode's letters, e.g. rr (repeatable; default: every mode)")
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     cmd->add_option("--what", opts->what,

@@ -34,9 +34,8 @@ int run(const ModesOptions& o) {
 
 std::function<int()> add_modes_command(CLI::App& app) {
     auto opts = std::make_shared<ModesOptions>();
-    CLI::App* cmd = app.add_subcommand("modes", "List every contact mode of a scene (s, f, r, l per contact)");
-    cmd->add_option("scene", opts->file, "scene JSON (docs/formats.md)")->required();
-    cmd->add_flag("--json", opts->json, "machine-readable output: {\"modes\": [...]}");
+    add_scene_command(app, opts, "modes", "List every contact mode of a scene (s, f, r, l per contact)",
+                      "machine-readable output: {\"modes\": [...]}");
     return [opts] { return run(*opts); };
 }
 

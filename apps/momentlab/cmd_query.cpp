@@ -77,8 +77,7 @@ int run(const QueryOptions& o) {
 
 std::function<int()> add_query_command(CLI::App& app) {
     auto opts = std::make_shared<QueryOptions>();
-    CLI::App* cmd = app.add_subcommand("query", "Which contact mode(s) an applied wrench produces");
-    cmd->add_option("scene", opts->file, "scene JSON (docs/formats.md)")->required();
+    CLI::App* cmd = add_scene_command(app, opts, "query", "Which contact mode(s) an applied wrench produces");
     auto* one = cmd->add_option("--wrench", opts->wrench, "FX FY TAU: the applied wrench (torque about the origin)")
                     ->expected(3)
                     ->allow_extra_args(false)

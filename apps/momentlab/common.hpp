@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -105,6 +106,19 @@ struct PictureOptions {
 
 /// Adds -o, --view and --title to a command; `required` makes -o required.
 void add_picture_options(CLI::App* cmd, PictureOptions& options, bool required);
+
+/// A subcommand that reads one scene: its positional `scene` argument (into `opts->file`) and,
+/// when `json_help` is given, a --json flag (into `opts->json`). The command adds the rest.
+template <class Options>
+CLI::App* add_scene_command(CLI::App& app, const std::shared_ptr<Options>& opts, const char* name,
+                            const char* description, const char* json_help = nullptr) {
+    CLI::App* cmd = app.add_subcommand(name, description);
+    cmd->add_option("scene", opts->file, "scene JSON (docs/formats.md)")->required();
+    if constexpr (requires { opts->json; }) {
+        if (json_help != nullptr) cmd->add_flag("--json", opts->json, json_help);
+    }
+    return cmd;
+}
 
 /// Checks every -o before anything is computed or written: a known extension, a directory that
 /// exists, and not one of the `inputs` (writing a picture over the scene being read is
