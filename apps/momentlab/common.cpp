@@ -292,12 +292,8 @@ void write_picture(const render::Figure& figure, const PictureOptions& options) 
 // Printing.
 
 std::string fmt(double x, int digits) {
-    if (!std::isfinite(x)) {
-        throw UnrepresentableError("a coordinate of the answer is beyond the range of a double (the scene's numbers are "
-                                   "too far apart to print it; the answer itself is exact)");
-    }
     std::ostringstream s;
-    s << std::setprecision(digits) << (x == 0.0 ? 0.0 : x);  // no "-0"
+    s << std::setprecision(digits) << output_value(x);
     return s.str();
 }
 

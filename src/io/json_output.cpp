@@ -7,16 +7,8 @@
 namespace momentlab {
 namespace {
 
-// No -0 in the output, and no null for a value beyond the range of a double.
-double clean(double x) {
-    if (!std::isfinite(x)) {
-        throw UnrepresentableError("a coordinate of the answer is beyond the range of a double (the scene's numbers are "
-                                   "too far apart to write it; the answer itself is exact)");
-    }
-    return x == 0.0 ? 0.0 : x;
-}
-nlohmann::json vec(const Vec3& v) { return {clean(v.x()), clean(v.y()), clean(v.z())}; }
-nlohmann::json vec(const Vec2& v) { return {clean(v.x()), clean(v.y())}; }
+nlohmann::json vec(const Vec3& v) { return {output_value(v.x()), output_value(v.y()), output_value(v.z())}; }
+nlohmann::json vec(const Vec2& v) { return {output_value(v.x()), output_value(v.y())}; }
 
 template <class T>
 nlohmann::json list(const std::vector<T>& vs) {

@@ -106,9 +106,11 @@ struct Frame {
     std::vector<std::string> keys;  // keys seen (objects)
 };
 
+// The path of the element being read: each open container's place in its parent, then the
+// innermost one's current key or index.
 std::string path_of(const std::vector<Frame>& stack) {
     std::string path = "$";
-    for (std::size_t i = 0; i + 1 < stack.size(); ++i) {
+    for (std::size_t i = 0; i < stack.size(); ++i) {
         if (stack[i].is_array) {
             path.append(1, '[').append(std::to_string(stack[i].count - 1)).append(1, ']');
         } else {
@@ -178,22 +180,18 @@ json parse(const std::string& text) {
                 break;
             case json::parse_event_t::key: {
                 Frame& f = stack.back();
-                const std::string& key = parsed.get_ref<const std::string&>();
-                if (std::find(f.keys.begin(), f.keys.end(), key) != f.keys.end()) {
-                    throw InputError(path_of(stack) + "." + key, "duplicate key (each key may appear once in an object)");
+                f.key = parsed.get_ref<const std::string&>();
+                if (std::find(f.keys.begin(), f.keys.end(), f.key) != f.keys.end()) {
+                    throw InputError(path_of(stack), "duplicate key (each key may appear once in an object)");
                 }
-                f.keys.push_back(key);
-                f.key = key;
+                f.keys.push_back(f.key);
                 break;
             }
             case json::parse_event_t::value:
                 if (!stack.empty() && stack.back().is_array) ++stack.back().count;
                 if (parsed.is_number() && !underflow.empty() && underflow[numbers++]) {
-                    const std::string at = stack.empty()            ? "$"
-                                           : stack.back().is_array ? path_of(stack) + "[" + std::to_string(stack.back().count - 1) + "]"
-                                                                    : path_of(stack) + "." + stack.back().key;
-                    throw InputError(at, "a number too small for a double: it would be taken as 0 (expected 0 or a "
-                                         "magnitude 1e-60 .. 1e60)");
+                    throw InputError(path_of(stack), "a number too small for a double: it would be taken as 0 "
+                                                     "(expected 0 or a magnitude 1e-60 .. 1e60)");
                 }
                 break;
         }

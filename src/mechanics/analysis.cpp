@@ -3,20 +3,13 @@
 #include "momentlab/mechanics/analysis.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
 #include "momentlab/geometry/force_sets.hpp"
 
 namespace momentlab {
-
-namespace {
-
-Verdict verdict_of(std::size_t count) {
-    return count == 0 ? Verdict::Inconsistent : (count == 1 ? Verdict::Unique : Verdict::Ambiguous);
-}
-
-}  // namespace
 
 std::vector<ModeForces> analyze(const Scene& scene) {
     if (!scene.body) throw std::invalid_argument("analyze: the scene needs a body (mass, com, inertia)");
@@ -29,23 +22,28 @@ std::vector<ModeForces> analyze(const Scene& scene) {
     }
     const ExactMatrix m = inertia_at_origin(*scene.body);
     const ModeSet modes = enumerate_modes(scene.contacts);
+    // Each contact's friction edges, built once for all the modes (exact constructions; copies
+    // share them): the static cone's two edges, and the kinetic ones n + mu_k t, n - mu_k t.
+    std::vector<std::array<ExactVector, 2>> static_edges, kinetic_edges;
+    for (const Contact& c : scene.contacts) {
+        static_edges.push_back(friction_cone_edges(c.point, c.normal, c.mu));
+        kinetic_edges.push_back(c.mu_kinetic == c.mu ? static_edges.back()
+                                                     : friction_cone_edges(c.point, c.normal, c.mu_kinetic));
+    }
     std::vector<ModeForces> out;
     out.reserve(modes.modes.size());
     for (const Mode& mode : modes.modes) {
         std::vector<ExactVector> contact_generators;
         for (std::size_t j = 0; j < scene.contacts.size(); ++j) {
-            const Contact& c = scene.contacts[j];
             switch (mode.at(j)) {
-                case ContactMode::Fixed: {  // anywhere in the friction cone (static mu)
-                    const auto edges = friction_cone_edges(c.point, c.normal, c.mu);
-                    contact_generators.insert(contact_generators.end(), edges.begin(), edges.end());
+                case ContactMode::Fixed:  // anywhere in the friction cone (static mu)
+                    contact_generators.insert(contact_generators.end(), static_edges[j].begin(), static_edges[j].end());
                     break;
-                }
                 case ContactMode::SlidingRight:  // friction opposes sliding along +t: n - mu_k t
-                    contact_generators.push_back(friction_cone_edges(c.point, c.normal, c.mu_kinetic)[1]);
+                    contact_generators.push_back(kinetic_edges[j][1]);
                     break;
                 case ContactMode::SlidingLeft:  // n + mu_k t
-                    contact_generators.push_back(friction_cone_edges(c.point, c.normal, c.mu_kinetic)[0]);
+                    contact_generators.push_back(kinetic_edges[j][0]);
                     break;
                 case ContactMode::Separating:
                     break;

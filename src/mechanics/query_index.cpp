@@ -36,10 +36,6 @@ std::uint64_t plane_hash(const ExactVector& v) {
     return h;
 }
 
-Verdict verdict_of(std::size_t count) {
-    return count == 0 ? Verdict::Inconsistent : (count == 1 ? Verdict::Unique : Verdict::Ambiguous);
-}
-
 }  // namespace
 
 QueryIndex::QueryIndex(const std::vector<ModeForces>& analysis) : mode_count_(analysis.size()) {

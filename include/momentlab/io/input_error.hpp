@@ -3,6 +3,7 @@
 /// \file
 /// The error for bad user input read from JSON.
 
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -29,6 +30,16 @@ class UnrepresentableError : public std::range_error {
 public:
     explicit UnrepresentableError(const std::string& what) : std::range_error(what) {}
 };
+
+/// A coordinate of an answer as it is written out (JSON or text): -0 as 0; a value beyond the
+/// range of a double is an UnrepresentableError, never "inf", "nan" or null.
+[[nodiscard]] inline double output_value(double x) {
+    if (!std::isfinite(x)) {
+        throw UnrepresentableError("a coordinate of the answer is beyond the range of a double (the scene's numbers are "
+                                   "too far apart to write it; the answer itself is exact)");
+    }
+    return x == 0.0 ? 0.0 : x;
+}
 
 /// Warnings about input that is accepted but probably not meant (e.g. an unknown field, which
 /// is ignored), each "path: message".

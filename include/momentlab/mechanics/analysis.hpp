@@ -36,6 +36,11 @@ enum class Verdict { Unique, Ambiguous, Inconsistent };
 /// "unique", "ambiguous" or "inconsistent".
 [[nodiscard]] const char* to_string(Verdict v);
 
+/// The verdict of an answer with that many modes: 0 inconsistent, 1 unique, more ambiguous.
+[[nodiscard]] constexpr Verdict verdict_of(std::size_t mode_count) {
+    return mode_count == 0 ? Verdict::Inconsistent : (mode_count == 1 ? Verdict::Unique : Verdict::Ambiguous);
+}
+
 /// The modes whose (closed) E_i contains the applied wrench e, exactly. A wrench on the
 /// boundary between modes belongs to each of them, so boundary wrenches can be "ambiguous";
 /// for a generic wrench the closures make no difference.
