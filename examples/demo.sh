@@ -26,6 +26,8 @@ show "... pushed with 20 N along its base" query "$here/block-on-table.json" --w
 show "... pushed with 20 N near its top" query "$here/block-on-table.json" --wrench 20 -9.81 -14.705
 show "A rod wedged in a corner (mu = 2): every mode" analyze "$here/rod-in-corner.json"
 show "... a wrench that can both jam it (ff) and throw it off (ss): Painleve-style ambiguity" query "$here/rod-in-corner.json" --wrench 19 16 -2
+show "A wheel held at (5, 0), (3, 4), (-3, -4) by normals through its centre, written with length 5: exact, so no sss (contacts 2 and 3 face each other)" modes "$here/downstream/wheel.json"
+show "... turned by a clockwise torque: it rolls (lll) or lifts off contact 1 (sll)" query "$here/downstream/wheel.json" --wrench 0 0 -1
 
 # Planning (the paper's section 3): reaching the goal rr (slide along the wall, no turning).
 show "Tilting the block along the wall: which gravity directions slide it right (rr)" plan tilt "$here/figure-3-block-along-wall.json" --goal rr
