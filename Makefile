@@ -4,18 +4,23 @@
 SHELL := /bin/bash
 BUILD ?= build/release
 JOBS ?= 2
-CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
+PYTHON := /usr/bin/python3
+CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release -DMOMENTLAB_PYTHON=ON -DPython_EXECUTABLE=$(PYTHON)
+# Where `make python` installs momentlab (the library, the CLI and the Python module).
+PREFIX ?= /usr/local
 
 APT_PACKAGES := g++ cmake make libeigen3-dev libgmp-dev nlohmann-json3-dev libcli11-dev \
                 libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev libcairo2-dev pkg-config libbox2d-dev \
-                clang libclang-rt-14-dev
+                clang libclang-rt-14-dev \
+                python3-dev pybind11-dev python3-numpy python3-matplotlib python3-pytest python3-pip \
+                python3-venv python3-setuptools python3-wheel
 SAN_BUILD := build/asan
 FUZZ_BUILD := build/fuzz
 FUZZ_TARGETS := fuzz_scene_reader fuzz_labels_reader fuzz_cone fuzz_query
 FUZZ_SECONDS ?= 600
 SMOKE_SECONDS ?= 5
 
-.PHONY: all deps build demo figures test test-release test-sanitizers fuzz-build test-fuzz fuzz large-inputs bench validate validate-long clean
+.PHONY: all deps build python demo figures test test-release test-sanitizers fuzz-build test-fuzz fuzz large-inputs bench validate validate-long clean
 
 all: build
 
@@ -29,14 +34,27 @@ deps:
 	    $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null; \
 	fi
 
-$(BUILD)/CMakeCache.txt: | deps
+$(BUILD)/CMakeCache.txt: Makefile | deps
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j$(JOBS)
 
-demo: build
+# `import momentlab` from any directory: the build installed into PREFIX (Debian's python3 reads
+# PREFIX/lib/python3.X/dist-packages for /usr/local), then imported from / as a check.
+python: build
+	@SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	$$SUDO cmake --install $(BUILD) --prefix $(PREFIX) >/dev/null
+	@cd / && env -u PYTHONPATH $(PYTHON) -c "import momentlab, sys; \
+	a = momentlab.analyze(momentlab.Scene.from_file('$(CURDIR)/examples/figure-3-block-along-wall.json')); \
+	assert a.query([0.0, -1.0, -0.5]) == ['ff']; \
+	print('import momentlab:', momentlab.__file__)"
+
+demo: python
 	@bash examples/demo.sh $(BUILD)/momentlab out
+	@echo
+	@echo "== The same in Python: examples/python/tutorial.py (Figures 1-6 with matplotlib)"
+	@cd out && $(PYTHON) ../examples/python/tutorial.py python | sed 's/^/   /'
 
 # The README's pictures (docs/figures/*.png), regenerated from the bundled examples.
 figures: build
@@ -47,7 +65,7 @@ figures: build
 # UndefinedBehaviorSanitizer (any report fails), and each fuzz target briefly on its corpus.
 test: test-release test-sanitizers test-fuzz
 
-test-release: build
+test-release: python
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 
 test-sanitizers: deps
@@ -97,6 +115,7 @@ validate-long: build
 bench: build
 	$(BUILD)/bench/bench_cone
 	$(BUILD)/bench/bench_contact
+	$(BUILD)/bench/bench_python
 
 clean:
-	rm -rf build out
+	rm -rf build out python/momentlab.egg-info

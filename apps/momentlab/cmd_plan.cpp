@@ -28,25 +28,29 @@ struct PlanOptions {
     std::vector<double> centre;
 };
 
-// {"intervals": [[from, to], ...], "best": ..., "margin": ...} (best and margin when feasible).
-nlohmann::json directions_json(const DirectionPlan& plan) {
-    nlohmann::json intervals = nlohmann::json::array();
-    for (const AngleInterval& i : plan.intervals) intervals.push_back({i.from, i.to});
-    nlohmann::json out = {{"intervals", intervals}};
-    if (plan.feasible()) {
-        out["best"] = plan.best;
-        out["margin"] = plan.margin;
+// The intervals, a single direction said as such; the best direction and its margin only when
+// some direction lies inside E_goal (`knife_edge`: every solution is on its boundary).
+void print_directions(const DirectionPlan& plan, bool knife_edge) {
+    for (const AngleInterval& i : plan.intervals) {
+        if (i.from == i.to) {
+            std::cout << "  " << fmt(i.from) << "   (" << degrees(i.from) << "): this direction only\n";
+        } else {
+            std::cout << "  [" << fmt(i.from) << ", " << fmt(i.to) << "]   (" << degrees(i.from) << " .. "
+                      << degrees(i.to) << ")\n";
+        }
     }
-    return out;
+    if (knife_edge) {
+        std::cout << "  a knife edge: every such direction lies on the boundary of the goal's set, no margin\n";
+    } else {
+        std::cout << "  best " << fmt(plan.best) << " (" << degrees(plan.best) << "), margin " << fmt(plan.margin)
+                  << " (" << degrees(plan.margin) << ") to the nearest boundary\n";
+    }
 }
 
-void print_directions(const DirectionPlan& plan) {
-    for (const AngleInterval& i : plan.intervals) {
-        std::cout << "  [" << fmt(i.from) << ", " << fmt(i.to) << "]   (" << degrees(i.from) << " .. " << degrees(i.to)
-                  << ")\n";
-    }
-    std::cout << "  best " << fmt(plan.best) << " (" << degrees(plan.best) << "), margin " << fmt(plan.margin) << " ("
-              << degrees(plan.margin) << ") to the nearest boundary\n";
+// Every interval a single direction.
+bool single_directions(const DirectionPlan& plan) {
+    return std::all_of(plan.intervals.begin(), plan.intervals.end(),
+                       [](const AngleInterval& i) { return i.from == i.to; });
 }
 
 int run_tilt(const PlanOptions& o) {
@@ -56,7 +60,7 @@ int run_tilt(const PlanOptions& o) {
     const ModeForces& goal = find_mode(p.analysis, o.goal, "--goal");
     const DirectionPlan plan = plan_tilt(scene, goal);
     if (o.json) {
-        nlohmann::json out = directions_json(plan);
+        nlohmann::json out = to_json(plan);
         out["goal"] = o.goal;
         std::cout << out.dump() << "\n";
     } else if (!plan.feasible()) {
@@ -64,7 +68,7 @@ int run_tilt(const PlanOptions& o) {
     } else {
         std::cout << "tilts that produce mode " << o.goal
                   << ": gravity directions, radians from +x (boundaries shared with a neighbouring mode)\n";
-        print_directions(plan);
+        print_directions(plan, single_directions(plan));
     }
     if (!o.picture.files.empty()) {
         const std::string title = o.picture.title.empty() ? stem(o.file) + ": tilts that produce mode " + o.goal
@@ -89,11 +93,7 @@ int run_comply(const PlanOptions& o) {
     if (o.json) {
         nlohmann::json out = {{"goal", o.goal}, {"labels", to_json(region)}};
         if (plan) {
-            nlohmann::json c = directions_json(plan->directions);
-            c["point"] = {plan->centre.x(), plan->centre.y()};
-            c["label"] = to_string(plan->label);
-            c["verdict"] = to_string(plan->verdict);
-            out["centre"] = c;
+            out["centre"] = to_json(*plan);
         }
         std::cout << out.dump() << "\n";
     } else {
@@ -108,7 +108,7 @@ int run_comply(const PlanOptions& o) {
                 std::cout << " (no spring direction through it produces mode " << o.goal << ")\n";
             } else {
                 std::cout << "; spring force (offset) directions, radians from +x:\n";
-                print_directions(plan->directions);
+                print_directions(plan->directions, plan->verdict != CentreVerdict::Works);
             }
         }
     }
@@ -120,27 +120,6 @@ int run_comply(const PlanOptions& o) {
         write_picture(render::synthesis_figure(title, scene, actions, goal, plan->directions.solutions, view), o.picture);
     }
     return 0;
-}
-
-nlohmann::json point_json(const Vec2& v) { return {v.x(), v.y()}; }
-
-nlohmann::json case_json(const PushCase& c) {
-    nlohmann::json touch = nlohmann::json::array();
-    for (const auto& [p, q] : c.touch) touch.push_back({point_json(p), point_json(q)});
-    nlohmann::json out = {{"feature", c.feature.name()},
-                          {"from", point_json(c.feature.from)},
-                          {"to", point_json(c.feature.to)},
-                          {"slip", std::string(1, letter(c.slip))},
-                          {"verdict", to_string(c.verdict)},
-                          {"feasible", c.feasible()},
-                          {"blocked", c.blocked},
-                          {"touch", touch}};
-    out["directions"] = c.directions ? nlohmann::json{c.directions->from, c.directions->to} : nlohmann::json();
-    if (c.best) {
-        out["best"] = {{"point", point_json(c.best->point)},
-                       {"direction", std::atan2(c.best->direction.y(), c.best->direction.x())}};
-    }
-    return out;
 }
 
 std::string case_line(const PushCase& c) {
@@ -185,7 +164,7 @@ int run_push(const PlanOptions& o) {
     const char* interference = o.ignore_interference ? "ignored" : "considered";
     if (o.json) {
         nlohmann::json out = {{"goal", o.goal}, {"mu", o.mu}, {"interference", interference}, {"cases", nlohmann::json::array()}};
-        for (const PushCase& c : cases) out["cases"].push_back(case_json(c));
+        for (const PushCase& c : cases) out["cases"].push_back(to_json(c));
         std::cout << out.dump() << "\n";
     } else {
         const auto feasible = std::count_if(cases.begin(), cases.end(), [](const PushCase& c) { return c.feasible(); });

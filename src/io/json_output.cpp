@@ -52,4 +52,44 @@ nlohmann::json to_json(const Labels& labels) {
     return {{"plus", to_json(labels.plus())}, {"minus", to_json(labels.minus())}};
 }
 
+
+nlohmann::json to_json(const DirectionPlan& plan) {
+    nlohmann::json intervals = nlohmann::json::array();
+    for (const AngleInterval& i : plan.intervals) intervals.push_back({output_value(i.from), output_value(i.to)});
+    nlohmann::json out = {{"intervals", intervals}};
+    if (plan.feasible()) {
+        out["best"] = output_value(plan.best);
+        out["margin"] = output_value(plan.margin);
+    }
+    return out;
+}
+
+nlohmann::json to_json(const PushCase& c) {
+    nlohmann::json touch = nlohmann::json::array();
+    for (const auto& [p, q] : c.touch) touch.push_back({vec(p), vec(q)});
+    nlohmann::json out = {{"feature", c.feature.name()},
+                          {"from", vec(c.feature.from)},
+                          {"to", vec(c.feature.to)},
+                          {"slip", std::string(1, letter(c.slip))},
+                          {"verdict", to_string(c.verdict)},
+                          {"feasible", c.feasible()},
+                          {"blocked", c.blocked},
+                          {"touch", touch}};
+    out["directions"] = c.directions ? nlohmann::json{output_value(c.directions->from), output_value(c.directions->to)}
+                                     : nlohmann::json();
+    if (c.best) {
+        out["best"] = {{"point", vec(c.best->point)},
+                       {"direction", output_value(std::atan2(c.best->direction.y(), c.best->direction.x()))}};
+    }
+    return out;
+}
+
+nlohmann::json to_json(const ComplyPlan& plan) {
+    nlohmann::json out = to_json(plan.directions);
+    out["point"] = vec(plan.centre);
+    out["label"] = to_string(plan.label);
+    out["verdict"] = to_string(plan.verdict);
+    return out;
+}
+
 }  // namespace momentlab

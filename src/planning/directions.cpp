@@ -12,14 +12,21 @@ namespace {
 
 double angle_of(const Vec2& d) { return std::atan2(d.y(), d.x()); }
 
-Vec2 force_of(const ExactVector& w) { return Vec2(w.value().x(), w.value().y()); }
+// The force of a wrench, rounded, with -0 written as 0: atan2 reads (-1, -0) as -pi, which
+// would turn an arc ending at pi into one wrapping through it.
+Vec2 force_of(const ExactVector& w) { return Vec2(w.value().x() + 0.0, w.value().y() + 0.0); }
 
-// The arc counter-clockwise from a to b, split at pi.
+// The arc counter-clockwise from a to b, split at pi; a == b is the one direction a (an arc
+// of width 0, not the full turn).
 void add_arc(std::vector<AngleInterval>& out, const Vec2& a, const Vec2& b, bool full_turn = false) {
     double from = angle_of(a), to = angle_of(b);
     if (from == M_PI) from = -M_PI;
     if (full_turn) {
         out.push_back({-M_PI, M_PI, a, a});
+        return;
+    }
+    if (a == b) {
+        out.push_back({from, from, a, b});
         return;
     }
     if (to < from) {  // through pi

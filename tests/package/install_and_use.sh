@@ -77,3 +77,17 @@ for m in fff lll rrr sfl sll srf srl srr; do
 done
 if ldd "$prefix/bin/momentlab" | grep -q "$build"; then echo "installed CLI loads libraries from the build tree"; exit 1; fi
 echo "installed momentlab CLI: the same modes"
+
+# The installed Python module (built with -DMOMENTLAB_PYTHON=ON) finds the prefix's libraries,
+# not the build tree's: the same modes and the torque's two modes.
+module=$(find "$prefix/lib" -path '*-packages/momentlab/_momentlab*.so' | head -1)
+if [ -n "$module" ]; then
+    if ldd "$module" | grep -q "$build"; then echo "installed Python module loads libraries from the build tree"; exit 1; fi
+    got=$(cd "$tmp" && env -u PYTHONPATH PYTHONPATH="$(dirname "$(dirname "$module")")" /usr/bin/python3 -c "
+import momentlab as ml
+a = ml.analyze(ml.Scene.from_file('$src/examples/downstream/wheel.json'))
+print(' '.join(sorted(a.modes)))
+print(' '.join(sorted(a.query([0.0, 0.0, -1.0]))))")
+    [ "$got" = "$(printf 'fff lll rrr sfl sll srf srl srr\nlll sll')" ] || { echo "installed Python module: $got"; exit 1; }
+    echo "installed Python module: the same modes"
+fi

@@ -50,6 +50,26 @@ TEST(Tilt, BlockAlongTheWallSlidesRightForGravityBetweenMinusAtan2AndZero) {
     EXPECT_NEAR(rest.intervals[0].to, -std::atan(2.0), 1e-15);
 }
 
+// Lifting the leading corner while the trailing one slides left (ls) under gravity
+// g = (cos t, sin t) through the centre of mass c = (1/2, 1/4), with the trailing contact's
+// force l (1/2, 1), l >= 0 (sliding along -t, t = (1, 0)), and k = 3/16 / I > 0: the
+// trailing corner (c + (-1/2, -1/4)) keeps contact, a_y - alpha/2 = 0, so
+// sin t + l + (3/16) l / I = 0, sin t = -l (1 + k); the leading corner (c + (1/2, -1/4)) lifts,
+// a_y + alpha/2 = sin t + l - k l >= 0, so -2 k l >= 0: l = 0, sin t = 0, and sliding left
+// needs cos t <= 0. Only t = pi: one direction, not the full turn (a regression: the arc
+// from pi to pi was read as a wrap through pi).
+TEST(Tilt, LiftingTheLeadingCornerWhileSlidingLeftOnlyForGravityAlongMinusX) {
+    const Scene scene = example("figure-3-block-along-wall.json");
+    const auto analysis = analyze(scene);
+    const DirectionPlan plan = plan_tilt(scene, mode(analysis, "ls"));
+    ASSERT_EQ(plan.intervals.size(), 1u);
+    EXPECT_EQ(plan.intervals[0].from, -M_PI);
+    EXPECT_EQ(plan.intervals[0].to, -M_PI);
+    EXPECT_LT(plan.intervals[0].from_direction.x(), 0.0);  // along -x (any length)
+    EXPECT_EQ(plan.intervals[0].from_direction.y(), 0.0);
+    EXPECT_EQ(plan.margin, 0.0);
+}
+
 TEST(Tilt, EveryDirectionInsideTheIntervalIsInETheOthersAreNot) {
     const Scene scene = example("figure-3-block-along-wall.json");
     const auto analysis = analyze(scene);

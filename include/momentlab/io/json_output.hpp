@@ -7,6 +7,8 @@
 
 #include "momentlab/geometry/cone.hpp"
 #include "momentlab/geometry/labels.hpp"
+#include "momentlab/planning/comply.hpp"
+#include "momentlab/planning/push.hpp"
 
 namespace momentlab {
 
@@ -20,5 +22,14 @@ namespace momentlab {
 
 /// {"plus": region, "minus": region}.
 [[nodiscard]] nlohmann::json to_json(const Labels& labels);
+
+/// {"intervals": [[from, to], ...], "best", "margin"} (best and margin only when feasible):
+/// the answer of `plan tilt` and of one compliance centre, radians from +x.
+[[nodiscard]] nlohmann::json to_json(const DirectionPlan& plan);
+/// {"feature", "from", "to", "slip", "verdict", "feasible", "blocked", "touch", "directions",
+///  "best": {"point", "direction"}} of one pushing case (docs/formats.md, Planning).
+[[nodiscard]] nlohmann::json to_json(const PushCase& push_case);
+/// The directions of one compliance centre with its "point", "label" and "verdict".
+[[nodiscard]] nlohmann::json to_json(const ComplyPlan& plan);
 
 }  // namespace momentlab

@@ -1,0 +1,333 @@
+"""momentlab: exact planar contact mechanics with Coulomb friction by Mason's graphical methods.
+
+Moment labels for sets of forces, rotation centres for motions, every contact mode of a body
+at rest with its sets of total (F), contact (T) and applied (E) wrenches, the mode(s) an
+applied wrench produces, and plans (tilt, push, comply) that reach a goal mode (Mason 1991).
+Every decision is exact for the numbers given; only printed values are rounded.
+
+    >>> import momentlab as ml
+    >>> a = ml.analyze(ml.Scene.from_file("examples/figure-3-block-along-wall.json"))
+    >>> a.modes
+    ['ff', 'ss', 'fs', 'rs', 'ls', 'sf', 'sr', 'sl', 'rr', 'll']
+    >>> a.query([1.0, -2.0, -0.5])
+    ['rr']
+
+Wrenches are (fx, fy, tau) with tau about the world origin; contact normals point into the
+body; mode letters per contact: s separating, f fixed, r / l sliding along +t / -t,
+t = (n.y, -n.x) (docs/design.md). Bad input raises ValueError with the one-line message the
+command line prints ("$.contacts[0].mu: ..."). The reference is docs/python.md.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Iterable, Optional, Sequence
+
+import numpy as np
+
+from ._momentlab import (
+    Cone,
+    Labels,
+    ModeSets,
+    Region,
+    force,
+    force_set_from_json,
+    forces_through_point,
+    friction_cone,
+    line_of_force,
+    pure_moments,
+)
+from . import _momentlab
+
+__all__ = [
+    "Analysis", "Body", "Cone", "Contact", "Labels", "ModeSets", "Region", "Scene",
+    "analyze", "contacts", "find_contacts", "force", "force_set_from_json", "forces_through_point",
+    "friction_cone", "labels", "line_of_force", "plan_comply", "plan_push", "plan_tilt",
+    "pure_moments",
+]
+
+__version__ = "0.1.0"
+
+VERDICTS = ("inconsistent", "unique", "ambiguous")
+
+
+@dataclass
+class Body:
+    """The moving body: mass, centre of mass, inertia about it (or a radius of gyration, for
+    which the inertia is exactly mass * radius_of_gyration**2) and an optional outline."""
+
+    mass: float = 1.0
+    com: Sequence[float] = (0.0, 0.0)
+    inertia: Optional[float] = None
+    radius_of_gyration: Optional[float] = None
+    polygon: Optional[Any] = None
+
+    def _doc(self) -> dict:
+        doc = {"mass": self.mass, "com": self.com}
+        if self.inertia is not None:
+            doc["inertia"] = self.inertia
+        if self.radius_of_gyration is not None:
+            doc["radius_of_gyration"] = self.radius_of_gyration
+        if self.polygon is not None:
+            doc["polygon"] = self.polygon
+        return doc
+
+
+@dataclass
+class Contact:
+    """A point contact: `normal` points into the body and is used as written (any positive
+    length); `mu` static and `mu_kinetic` (default: mu) kinetic friction."""
+
+    point: Sequence[float]
+    normal: Sequence[float]
+    mu: float = 0.0
+    mu_kinetic: Optional[float] = None
+    name: str = ""
+
+    def _doc(self) -> dict:
+        doc = {"point": self.point, "normal": self.normal, "mu": self.mu}
+        if self.mu_kinetic is not None:
+            doc["mu_kinetic"] = self.mu_kinetic
+        if self.name:
+            doc["name"] = self.name
+        return doc
+
+
+def contacts(points, normals, mu=0.0, mu_kinetic=None, names=None) -> list:
+    """Contacts from arrays: points and normals of shape (n, 2), mu and mu_kinetic scalars or
+    of shape (n,)."""
+    p = np.asarray(points, dtype=np.float64)
+    n = np.asarray(normals, dtype=np.float64)
+    if p.ndim != 2 or p.shape[1] != 2:
+        raise ValueError(f"points: expected an array of shape (n, 2), got shape {p.shape}")
+    if n.shape != p.shape:
+        raise ValueError(f"normals: expected shape {p.shape} like the points, got shape {n.shape}")
+    count = p.shape[0]
+
+    def per_contact(value, what):
+        if value is None:
+            return [None] * count
+        v = np.asarray(value, dtype=np.float64)
+        if v.ndim == 0:
+            return [float(v)] * count
+        if v.shape != (count,):
+            raise ValueError(f"{what}: expected a number or an array of shape ({count},), got shape {v.shape}")
+        return [float(x) for x in v]
+
+    mus = per_contact(mu, "mu")
+    kinetic = per_contact(mu_kinetic, "mu_kinetic")
+    labels_ = list(names) if names is not None else [""] * count
+    if len(labels_) != count:
+        raise ValueError(f"names: expected {count} names, got {len(labels_)}")
+    return [Contact(p[i].tolist(), n[i].tolist(), mus[i], kinetic[i], str(labels_[i])) for i in range(count)]
+
+
+def _contact_doc(c) -> dict:
+    if isinstance(c, Contact):
+        return c._doc()
+    return c  # a dict in the file format; the reader checks it
+
+
+class Scene:
+    """A body (optional for purely kinematic questions), its contacts and fixed obstacles.
+
+    Scene(body=Body(...) or dict, contacts=[Contact or dict, ...], obstacles=[polygon, ...]).
+    Without contacts, they are found where the body's polygon touches the obstacles (within
+    `contact_distance`, default 1e-9, with friction `mu`), as for a scene file.
+    Scene.from_json(text) and Scene.from_file(path) read the file format (docs/formats.md).
+    """
+
+    def __init__(self, body=None, contacts=None, obstacles=(), contact_distance=None, mu=None, *, _scene=None):
+        if _scene is not None:
+            self._scene = _scene
+            return
+        doc: dict = {}
+        if body is not None:
+            doc["body"] = body._doc() if isinstance(body, Body) else body
+        if contacts is not None:
+            doc["contacts"] = [_contact_doc(c) for c in contacts]
+        if obstacles is not None and len(obstacles):
+            doc["obstacles"] = [o if isinstance(o, dict) else {"polygon": o} for o in obstacles]
+        if contact_distance is not None:
+            doc["contact_distance"] = contact_distance
+        if mu is not None:
+            doc["mu"] = mu
+        self._scene = _momentlab._Scene.from_doc(doc)
+
+    @classmethod
+    def from_json(cls, text: str) -> "Scene":
+        """The scene of a JSON text in the file format."""
+        if not isinstance(text, str):
+            raise ValueError("$: expected the JSON text of a scene (a str)")
+        return cls(_scene=_momentlab._Scene.from_json(text))
+
+    @classmethod
+    def from_file(cls, path) -> "Scene":
+        """The scene of a JSON file."""
+        with open(path, encoding="utf-8") as f:
+            return cls.from_json(f.read())
+
+    def to_json(self) -> str:
+        """The scene in the file format (contacts written out); from_json gives it back."""
+        return self._scene.to_json()
+
+    @property
+    def body(self) -> Optional[dict]:
+        """{'mass', 'com', 'inertia', 'polygon'} or None."""
+        s = self._scene
+        if not s.has_body:
+            return None
+        return {"mass": s.mass, "com": np.array(s.com), "inertia": s.inertia, "polygon": s.polygon}
+
+    @property
+    def points(self) -> np.ndarray:
+        """The contact points, shape (n, 2)."""
+        return self._scene.points
+
+    @property
+    def normals(self) -> np.ndarray:
+        """The contact normals as written (into the body), shape (n, 2)."""
+        return self._scene.normals
+
+    @property
+    def mu(self) -> np.ndarray:
+        return self._scene.mu
+
+    @property
+    def mu_kinetic(self) -> np.ndarray:
+        return self._scene.mu_kinetic
+
+    @property
+    def obstacles(self) -> list:
+        """The fixed polygons, each of shape (k, 2)."""
+        return self._scene.obstacles
+
+    @property
+    def contacts(self) -> list:
+        """The contacts as Contact values."""
+        s = self._scene
+        return [Contact(p.tolist(), n.tolist(), float(m), float(k), name)
+                for p, n, m, k, name in zip(s.points, s.normals, s.mu, s.mu_kinetic, s.names)]
+
+    def __repr__(self) -> str:
+        return f"<Scene: {len(self.points)} contacts, {'a body' if self._scene.has_body else 'no body'}>"
+
+
+def find_contacts(body, obstacles, distance=1e-9, mu=0.0, mu_kinetic=None) -> list:
+    """The contacts where the body polygon (shape (n, 2)) touches the obstacles (a list of
+    polygons), within `distance`; decided exactly."""
+    found = _momentlab.find_contacts(body, list(obstacles), distance, mu, mu_kinetic)
+    return Scene(_scene=found).contacts
+
+
+class Analysis:
+    """Every contact mode of a scene with its sets (F, T, E), and the questions asked of them.
+
+    `modes` lists the mode strings (the all-f mode first); `analysis[i]` or `analysis["rs"]`
+    gives one mode's sets (ModeSets: .twists, .total, .contact, .applied as Cones, and
+    .rotation_centres()).
+    """
+
+    def __init__(self, scene: Scene):
+        if not isinstance(scene, Scene):
+            raise ValueError("analyze: expected a momentlab.Scene")
+        self._analysis = _momentlab._Analysis(scene._scene)
+        self.scene = scene
+        self.modes = list(self._analysis.modes)
+
+    def __len__(self) -> int:
+        return len(self.modes)
+
+    def __getitem__(self, key) -> ModeSets:
+        if isinstance(key, str):
+            return self._analysis.mode(key)
+        if isinstance(key, (int, np.integer)):
+            i = int(key)
+            if i < 0:
+                i += len(self.modes)
+            if not 0 <= i < len(self.modes):
+                raise IndexError(f"mode index {key} out of range (0 .. {len(self.modes) - 1})")
+            return self._analysis.mode_at(i)
+        raise TypeError("modes are indexed by position or by their letters")
+
+    def __iter__(self):
+        return (self._analysis.mode_at(i) for i in range(len(self.modes)))
+
+    def query(self, w):
+        """The modes whose closed E_i holds the applied wrench, exactly.
+
+        One wrench (shape (3,)): the list of mode strings, in the order of `modes`.
+        A batch (shape (N, 3)): a bool array of shape (N, len(modes)); row k says which modes
+        wrench k produces. Runs in the compiled index without the interpreter's lock.
+        """
+        a = _wrenches(w)
+        if a.ndim == 1:
+            return self._analysis.query_one(a)
+        return self._analysis.query_batch(a)
+
+    def verdict(self, w):
+        """'unique', 'ambiguous' or 'inconsistent' for one wrench; for a batch, an array of them."""
+        a = _wrenches(w)
+        if a.ndim == 1:
+            return VERDICTS[min(len(self._analysis.query_one(a)), 2)]
+        counts = np.minimum(self._analysis.query_batch(a).sum(axis=1), 2)
+        return np.asarray(VERDICTS)[counts]
+
+    def __repr__(self) -> str:
+        return f"<Analysis: {len(self.modes)} modes>"
+
+
+def _wrenches(w) -> np.ndarray:
+    try:
+        raw = np.asarray(w)
+    except ValueError as e:  # ragged nesting
+        raise ValueError(f"wrench: expected numbers (fx, fy, tau): {e}") from None
+    if raw.dtype.kind not in "biuf":
+        raise ValueError(f"wrench: expected real numbers, got an array of dtype {raw.dtype}")
+    a = np.ascontiguousarray(raw, dtype=np.float64)
+    if not (a.shape == (3,) or (a.ndim == 2 and a.shape[1] == 3)):
+        raise ValueError(f"wrench: expected shape (3,) or (N, 3), got shape {a.shape}")
+    bad = np.flatnonzero(~np.isfinite(a.reshape(-1, 3)).all(axis=1))
+    if bad.size:
+        raise ValueError("wrench: expected finite numbers" if a.ndim == 1 else f"wrenches[{bad[0]}]: expected finite numbers")
+    return a
+
+
+def analyze(scene: Scene) -> Analysis:
+    """Every mode of the scene with its sets; the scene needs a body (mass, com, inertia)."""
+    return Analysis(scene)
+
+
+def labels(forces) -> Labels:
+    """The moment labels of a force set: a Cone, or the JSON text of a force-set file."""
+    if isinstance(forces, str):
+        forces = force_set_from_json(forces)
+    if not isinstance(forces, Cone):
+        raise ValueError("labels: expected a momentlab.Cone or the JSON text of a force set")
+    return Labels(forces)
+
+
+def _analysis_of(what) -> Analysis:
+    if isinstance(what, Analysis):
+        return what
+    if isinstance(what, Scene):
+        return Analysis(what)
+    raise ValueError("expected a momentlab.Scene or Analysis")
+
+
+def plan_tilt(scene, goal: str) -> dict:
+    """The tilts (gravity directions, radians from +x) that produce mode `goal`:
+    {'goal', 'intervals': [[from, to], ...], 'best', 'margin'} (best and margin when feasible)."""
+    return _analysis_of(scene)._analysis.plan_tilt(goal)
+
+
+def plan_push(scene, goal: str, mu: float = 0.5, ignore_interference: bool = False) -> list:
+    """The pushing table for mode `goal`: one dict per feature (edge, vertex) and finger slip
+    (l, f, r) with 'verdict', 'feasible', 'touch', 'directions' and 'best' (docs/planning.md)."""
+    return _analysis_of(scene)._analysis.plan_push(goal, float(mu), bool(ignore_interference))
+
+
+def plan_comply(scene, goal: str, centre=None) -> dict:
+    """Compliance: {'goal', 'labels': the Labels of E_goal (centres outside both regions work),
+    'centre': {'point', 'label', 'verdict', 'intervals', 'best', 'margin'}} for a given centre."""
+    return _analysis_of(scene)._analysis.plan_comply(goal, centre)

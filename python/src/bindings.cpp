@@ -1,0 +1,449 @@
+// The compiled part of the Python module (docs/python.md): the library's types as thin Python
+// classes, numbers in and out as numpy arrays. Checks, messages and answers are the library's
+// own: a scene given as Python values is read by read_scene, so a bad value raises ValueError
+// with the same "$.path: message" line as the CLI. The friendlier API (keyword constructors,
+// shapes, plots) is the pure-Python layer in python/momentlab.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "momentlab/momentlab.hpp"
+
+namespace py = pybind11;
+
+namespace momentlab::python {
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Values between Python and the library.
+
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// Rows of k doubles as a numpy array of shape (rows, k), copied.
+template <int K, class V>
+Array rows(const std::vector<V>& vs) {
+    Array out({static_cast<py::ssize_t>(vs.size()), static_cast<py::ssize_t>(K)});
+    auto a = out.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < vs.size(); ++i) {
+        for (int k = 0; k < K; ++k) {
+            if constexpr (std::is_same_v<V, ExactVector>) {
+                a(static_cast<py::ssize_t>(i), k) = vs[i].value()(k);
+            } else {
+                a(static_cast<py::ssize_t>(i), k) = vs[i](k);
+            }
+        }
+    }
+    return out;
+}
+
+// A finite vector of K coordinates from anything numpy reads as one; `what` names it in errors.
+template <int K>
+Eigen::Matrix<double, K, 1> vector_of(const py::handle& value, const char* what) {
+    Array a;
+    try {
+        a = Array::ensure(value);
+    } catch (const py::error_already_set&) {
+        a = Array();
+    }
+    if (!a || a.ndim() != 1 || a.shape(0) != K) {
+        throw InputError(what, "expected " + std::to_string(K) + " numbers");
+    }
+    Eigen::Matrix<double, K, 1> v;
+    for (int k = 0; k < K; ++k) {
+        v(k) = a.at(k);
+        if (!std::isfinite(v(k))) throw InputError(what, "expected finite numbers");
+    }
+    return v;
+}
+
+// An (n, 3) array of finite wrenches or normals; `what` names it in errors.
+std::vector<Vec3> vectors3_of(const py::handle& value, const char* what) {
+    Array a;
+    try {
+        a = Array::ensure(value);
+    } catch (const py::error_already_set&) {
+        a = Array();
+    }
+    if (!a || a.ndim() != 2 || a.shape(1) != 3) throw InputError(what, "expected an array of shape (n, 3)");
+    std::vector<Vec3> out(static_cast<std::size_t>(a.shape(0)));
+    auto r = a.unchecked<2>();
+    for (py::ssize_t i = 0; i < a.shape(0); ++i) {
+        out[static_cast<std::size_t>(i)] = Vec3(r(i, 0), r(i, 1), r(i, 2));
+        if (!out[static_cast<std::size_t>(i)].allFinite()) {
+            throw InputError(std::string(what) + "[" + std::to_string(i) + "]", "expected finite numbers");
+        }
+    }
+    return out;
+}
+
+// A polygon: an (n, 2) array of finite vertices (find_contacts checks that it is simple).
+Polygon polygon_of(const py::handle& value, const std::string& what) {
+    Array a;
+    try {
+        a = Array::ensure(value);
+    } catch (const py::error_already_set&) {
+        a = Array();
+    }
+    if (!a || a.ndim() != 2 || a.shape(1) != 2) throw InputError(what, "expected an array of shape (n, 2)");
+    Polygon out;
+    auto r = a.unchecked<2>();
+    for (py::ssize_t i = 0; i < a.shape(0); ++i) {
+        out.emplace_back(r(i, 0), r(i, 1));
+        if (!out.back().allFinite()) throw InputError(what + "[" + std::to_string(i) + "]", "expected finite numbers");
+    }
+    return out;
+}
+
+// A Python value (dict, list, tuple, numpy array, number, string, bool, None) as JSON, so that
+// the library's readers check it and name the path of a bad field.
+nlohmann::json json_of(const py::handle& value, const std::string& path) {
+    if (value.is_none()) return nullptr;
+    if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
+    if (py::isinstance<py::int_>(value)) {
+        try {
+            return value.cast<long long>();
+        } catch (const py::cast_error&) {
+            try {  // a big integer: the reader checks its magnitude
+                return value.cast<double>();
+            } catch (const py::cast_error&) {
+                throw InputError(path, "expected a number of magnitude 0 or 1e-60 .. 1e60");
+            } catch (const py::error_already_set&) {
+                throw InputError(path, "expected a number of magnitude 0 or 1e-60 .. 1e60");
+            }
+        }
+    }
+    if (py::isinstance<py::float_>(value)) return value.cast<double>();
+    if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+    if (py::isinstance<py::dict>(value)) {
+        nlohmann::json out = nlohmann::json::object();
+        for (const auto& [key, item] : value.cast<py::dict>()) {
+            if (!py::isinstance<py::str>(key)) throw InputError(path, "keys must be strings");
+            const auto name = key.cast<std::string>();
+            out[name] = json_of(item, path + "." + name);
+        }
+        return out;
+    }
+    if (py::hasattr(value, "tolist") && !py::isinstance<py::str>(value)) {  // numpy arrays and scalars
+        return json_of(value.attr("tolist")(), path);
+    }
+    if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+        nlohmann::json out = nlohmann::json::array();
+        std::size_t i = 0;
+        for (const auto& item : value) out.push_back(json_of(item, path + "[" + std::to_string(i++) + "]"));
+        return out;
+    }
+    throw InputError(path, std::string("expected a number, list or object, not ") +
+                               py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+}
+
+// JSON answers (plans) as plain Python values.
+py::object python_of(const nlohmann::json& j) {
+    switch (j.type()) {
+        case nlohmann::json::value_t::null: return py::none();
+        case nlohmann::json::value_t::boolean: return py::bool_(j.get<bool>());
+        case nlohmann::json::value_t::number_integer: return py::int_(j.get<long long>());
+        case nlohmann::json::value_t::number_unsigned: return py::int_(j.get<unsigned long long>());
+        case nlohmann::json::value_t::number_float: return py::float_(j.get<double>());
+        case nlohmann::json::value_t::string: return py::str(j.get<std::string>());
+        case nlohmann::json::value_t::array: {
+            py::list out;
+            for (const auto& item : j) out.append(python_of(item));
+            return out;
+        }
+        case nlohmann::json::value_t::object: {
+            py::dict out;
+            for (const auto& [key, item] : j.items()) out[py::str(key)] = python_of(item);
+            return out;
+        }
+        default: return py::none();
+    }
+}
+
+void warn_all(const InputWarnings& warnings) {
+    for (const std::string& w : warnings) PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// An analysis with its scene and its compiled index.
+
+struct Analysis {
+    Scene scene;
+    std::vector<ModeForces> modes;
+    QueryIndex index;
+
+    explicit Analysis(Scene s) : scene(checked(std::move(s))), modes(analyze(scene)), index(modes) {}
+
+    static Scene checked(Scene s) {
+        if (!s.body) throw InputError("$", "missing field \"body\" (analyze needs its mass, com and inertia)");
+        return s;
+    }
+
+    const ModeForces& mode(const std::string& letters, const char* option) const {
+        for (const ModeForces& m : modes) {
+            if (m.mode.letters == letters) return m;
+        }
+        std::string all;
+        for (const ModeForces& m : modes) all += (all.empty() ? "" : ", ") + m.mode.letters;
+        throw InputError(option, "no mode \"" + letters + "\" in this scene (its modes: " + all + ")");
+    }
+};
+
+// The modes of a batch of wrenches, one row per wrench, without the interpreter's lock.
+py::array_t<bool> query_batch(const Analysis& a, const py::handle& wrenches) {
+    const Array w = Array::ensure(wrenches);
+    if (!w || w.ndim() != 2 || w.shape(1) != 3) throw InputError("wrenches", "expected an array of shape (N, 3)");
+    const py::ssize_t n = w.shape(0);
+    const double* in = w.data();
+    for (py::ssize_t i = 0; i < n; ++i) {
+        if (!std::isfinite(in[3 * i]) || !std::isfinite(in[3 * i + 1]) || !std::isfinite(in[3 * i + 2])) {
+            throw InputError("wrenches[" + std::to_string(i) + "]", "expected finite numbers");
+        }
+    }
+    const auto m = static_cast<py::ssize_t>(a.modes.size());
+    py::array_t<bool> out({n, m});
+    bool* hit = out.mutable_data();
+    {
+        py::gil_scoped_release unlocked;
+        std::fill(hit, hit + n * m, false);
+        std::vector<std::size_t> found;
+        found.reserve(a.modes.size());
+        for (py::ssize_t i = 0; i < n; ++i) {
+            a.index.query(Vec3(in[3 * i], in[3 * i + 1], in[3 * i + 2]), found);
+            for (std::size_t k : found) hit[i * m + static_cast<py::ssize_t>(k)] = true;
+        }
+    }
+    return out;
+}
+
+std::vector<std::string> query_one(const Analysis& a, const py::handle& wrench) {
+    const Vec3 e = vector_of<3>(wrench, "wrench");
+    std::vector<std::string> out;
+    for (std::size_t k : a.index.query(e).modes) out.push_back(a.modes[k].mode.letters);
+    return out;
+}
+
+std::string label_text(Label l) { return to_string(l); }
+
+}  // namespace
+}  // namespace momentlab::python
+
+PYBIND11_MODULE(_momentlab, m) {
+    using namespace momentlab;
+    using namespace momentlab::python;
+    m.doc() = "momentlab's compiled core; use the package `momentlab` (docs/python.md).";
+
+    py::class_<Region>(m, "Region", "One sheet of the moment labels: conv(vertices) + cone(rays) + span(lines).")
+        .def_property_readonly("kind", &Region::kind)
+        .def_property_readonly("is_empty", [](const Region& r) { return r.is_empty; })
+        .def_property_readonly("vertices", [](const Region& r) { return rows<2>(r.vertices); },
+                               "(k, 2) vertices (rounded)")
+        .def_property_readonly("rays", [](const Region& r) { return rows<2>(r.rays); },
+                               "(k, 2) directions in which the region is unbounded")
+        .def_property_readonly("lines", [](const Region& r) { return rows<2>(r.lines); },
+                               "(k, 2) directions of lines contained in the region")
+        .def_property_readonly("halfplanes", [](const Region& r) { return rows<3>(r.halfplanes); },
+                               "(k, 3) rows (a, b, c): a x + b y + c >= 0")
+        .def(
+            "clipped",
+            [](const Region& r, const py::handle& box) {
+                const Eigen::Vector4d b = vector_of<4>(box, "box");
+                if (!(b(0) < b(2)) || !(b(1) < b(3))) throw InputError("box", "expected xmin < xmax and ymin < ymax");
+                return rows<2>(r.clipped(Box{Vec2(b(0), b(1)), Vec2(b(2), b(3))}));
+            },
+            py::arg("box"), "The region cut to box = (xmin, ymin, xmax, ymax), as a (k, 2) polygon (for drawing).")
+        .def("__repr__", [](const Region& r) { return "<Region " + r.kind() + ">"; });
+
+    py::class_<Cone>(m, "Cone", "A closed polyhedral cone of wrenches (fx, fy, tau) or twists, exact.")
+        .def_static(
+            "from_generators", [](const py::handle& g) { return Cone::from_generators(vectors3_of(g, "generators")); },
+            py::arg("generators"), "The non-negative combinations of the rows of an (n, 3) array.")
+        .def_static(
+            "from_halfspaces", [](const py::handle& h) { return Cone::from_halfspaces(vectors3_of(h, "normals")); },
+            py::arg("normals"), "{w : n . w >= 0 for every row n}.")
+        .def_static("zero", [] { return Cone(); })
+        .def_static("whole_space", &Cone::whole_space)
+        .def_property_readonly("rays", [](const Cone& c) { return rows<3>(c.rays()); })
+        .def_property_readonly("lineality", [](const Cone& c) { return rows<3>(c.lineality()); })
+        .def_property_readonly("facets", [](const Cone& c) { return rows<3>(c.facets()); },
+                               "(k, 3) inward facet normals f: f . w >= 0")
+        .def_property_readonly("equations", [](const Cone& c) { return rows<3>(c.equations()); })
+        .def_property_readonly("generators", [](const Cone& c) { return rows<3>(c.generator_values()); },
+                               "rays, then +- lineality vectors (rounded)")
+        .def_property_readonly("halfspaces", [](const Cone& c) { return rows<3>(c.halfspace_values()); },
+                               "facets, then +- equations (rounded)")
+        .def_property_readonly("dimension", &Cone::dimension)
+        .def_property_readonly("lineality_dimension", &Cone::lineality_dimension)
+        .def_property_readonly("kind", &Cone::kind)
+        .def_property_readonly("is_pointed", &Cone::is_pointed)
+        .def_property_readonly("is_zero", &Cone::is_zero)
+        .def("contains", [](const Cone& c, const py::handle& w) { return c.has(vector_of<3>(w, "wrench")); },
+             py::arg("w"), "Exact membership of the wrench w.")
+        .def("in_relative_interior",
+             [](const Cone& c, const py::handle& w) { return c.in_relative_interior(vector_of<3>(w, "wrench")); },
+             py::arg("w"))
+        .def("dual", &Cone::dual)
+        .def("negated", &Cone::negated)
+        .def("issubset", [](const Cone& a, const Cone& b) { return subset(a, b); }, py::arg("other"))
+        .def("__add__", [](const Cone& a, const Cone& b) { return sum(a, b); })
+        .def("__and__", [](const Cone& a, const Cone& b) { return intersection(a, b); })
+        .def("__neg__", &Cone::negated)
+        .def("__eq__", [](const Cone& a, const Cone& b) { return a == b; })
+        .def("labels", [](const Cone& c) { return Labels(c); }, "Its moment labels.")
+        .def("__repr__", [](const Cone& c) {
+            return "<Cone " + c.kind() + ", " + std::to_string(c.rays().size()) + " rays, " +
+                   std::to_string(c.facets().size()) + " facets>";
+        });
+
+    py::class_<Labels>(m, "Labels", "The moment labels of a force set (Mason 1991, section 2).")
+        .def(py::init<Cone>(), py::arg("forces"))
+        .def_property_readonly("forces", &Labels::forces)
+        .def_property_readonly("plus", &Labels::plus)
+        .def_property_readonly("minus", &Labels::minus)
+        .def_property_readonly("both", [](const Labels& l) { return render::both_region(l.forces()); },
+                               "the points about which every force has moment 0")
+        .def("at", [](const Labels& l, const py::handle& p) { return label_text(l.at(vector_of<2>(p, "point"))); },
+             py::arg("point"), "The exact label of a point: '+', '-', '+-' or 'none'.");
+
+    py::class_<ModeForces>(m, "ModeSets", "One contact mode with its sets: twists A, F = M A, T and E.")
+        .def_property_readonly("letters", [](const ModeForces& f) { return f.mode.letters; })
+        .def_property_readonly("twists", [](const ModeForces& f) { return f.mode.twists; })
+        .def_property_readonly("total", [](const ModeForces& f) { return f.total; }, "F_i = M A_i")
+        .def_property_readonly("contact", [](const ModeForces& f) { return f.contact; }, "T_i")
+        .def_property_readonly("applied", [](const ModeForces& f) { return f.applied; }, "E_i = F_i - T_i")
+        .def("rotation_centres", [](const ModeForces& f) { return rotation_centres(f.mode); })
+        .def("__repr__", [](const ModeForces& f) { return "<ModeSets " + f.mode.letters + ">"; });
+
+    py::class_<Scene>(m, "_Scene")
+        .def_static("from_json",
+                    [](const std::string& text) {
+                        InputWarnings warnings;
+                        Scene s = read_scene_text(text, &warnings);
+                        warn_all(warnings);
+                        return s;
+                    })
+        .def_static("from_doc",
+                    [](const py::handle& doc) {
+                        InputWarnings warnings;
+                        Scene s = read_scene(json_of(doc, "$"), &warnings);
+                        warn_all(warnings);
+                        return s;
+                    })
+        .def("to_json", [](const Scene& s) { return to_json(s).dump(); })
+        .def_property_readonly("has_body", [](const Scene& s) { return s.body.has_value(); })
+        .def_property_readonly("mass", [](const Scene& s) { return s.body ? s.body->mass : 0.0; })
+        .def_property_readonly("com", [](const Scene& s) { return s.body ? std::vector<double>{s.body->com.x(), s.body->com.y()} : std::vector<double>{}; })
+        .def_property_readonly("inertia", [](const Scene& s) { return s.body ? s.body->inertia : 0.0; })
+        .def_property_readonly("polygon", [](const Scene& s) { return rows<2>(s.body ? s.body->polygon : Polygon{}); })
+        .def_property_readonly("obstacles", [](const Scene& s) {
+            std::vector<Array> out;
+            for (const Polygon& p : s.obstacles) out.push_back(rows<2>(p));
+            return out;
+        })
+        .def_property_readonly("points", [](const Scene& s) {
+            std::vector<Vec2> v;
+            for (const Contact& c : s.contacts) v.push_back(c.point);
+            return rows<2>(v);
+        })
+        .def_property_readonly("normals", [](const Scene& s) {
+            std::vector<Vec2> v;
+            for (const Contact& c : s.contacts) v.push_back(c.normal);
+            return rows<2>(v);
+        })
+        .def_property_readonly("mu", [](const Scene& s) {
+            std::vector<double> v;
+            for (const Contact& c : s.contacts) v.push_back(c.mu);
+            return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
+        })
+        .def_property_readonly("mu_kinetic", [](const Scene& s) {
+            std::vector<double> v;
+            for (const Contact& c : s.contacts) v.push_back(c.mu_kinetic);
+            return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
+        })
+        .def_property_readonly("names", [](const Scene& s) {
+            std::vector<std::string> v;
+            for (const Contact& c : s.contacts) v.push_back(c.name);
+            return v;
+        });
+
+    py::class_<Analysis, std::shared_ptr<Analysis>>(m, "_Analysis")
+        .def(py::init<Scene>())
+        .def_property_readonly("scene", [](const Analysis& a) { return a.scene; })
+        .def_property_readonly("modes", [](const Analysis& a) {
+            std::vector<std::string> out;
+            for (const ModeForces& f : a.modes) out.push_back(f.mode.letters);
+            return out;
+        })
+        .def("mode_at", [](const Analysis& a, std::size_t i) { return a.modes.at(i); }, py::return_value_policy::copy)
+        .def("mode", [](const Analysis& a, const std::string& letters) { return a.mode(letters, "mode"); })
+        .def("query_one", &query_one)
+        .def("query_batch", &query_batch)
+        .def("plan_tilt",
+             [](const Analysis& a, const std::string& goal) {
+                 py::dict out = python_of(to_json(plan_tilt(a.scene, a.mode(goal, "goal"))));
+                 out["goal"] = goal;
+                 return out;
+             })
+        .def("plan_push",
+             [](const Analysis& a, const std::string& goal, double mu, bool ignore_interference) {
+                 if (!(mu >= 0.0) || !std::isfinite(mu) || !magnitude_in_range(mu)) {
+                     throw InputError("mu", "expected a finite mu >= 0 (0 or 1e-60 .. 1e60)");
+                 }
+                 if (a.scene.body->polygon.size() < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
+                 py::list out;
+                 for (const PushCase& c : plan_push(a.scene, a.mode(goal, "goal"), PushOptions{mu, ignore_interference})) {
+                     out.append(python_of(to_json(c)));
+                 }
+                 return out;
+             })
+        .def("plan_comply",
+             [](const Analysis& a, const std::string& goal, const py::handle& centre) {
+                 const ModeForces& g = a.mode(goal, "goal");
+                 py::dict out;
+                 out["goal"] = goal;
+                 out["labels"] = compliance_labels(g);
+                 if (!centre.is_none()) out["centre"] = python_of(to_json(plan_comply(g, vector_of<2>(centre, "centre"))));
+                 return out;
+             });
+
+    // Force sets of the paper's Figure 1, their combinations and files.
+    m.def("force", [](const py::handle& p, const py::handle& d) {
+        return force_ray(vector_of<2>(p, "point"), vector_of<2>(d, "direction"));
+    }, py::arg("point"), py::arg("direction"), "The positive multiples of one force through a point (Figure 1a).");
+    m.def("line_of_force", [](const py::handle& p, const py::handle& d) {
+        return line_of_force(vector_of<2>(p, "point"), vector_of<2>(d, "direction"));
+    }, py::arg("point"), py::arg("direction"), "The forces along a line, both senses.");
+    m.def("forces_through_point", [](const py::handle& p) { return forces_through_point(vector_of<2>(p, "point")); },
+          py::arg("point"), "Every force whose line of action passes through the point (Figure 1b).");
+    m.def("friction_cone", [](const py::handle& p, const py::handle& n, double mu) {
+        if (!std::isfinite(mu) || mu < 0.0) throw InputError("mu", "expected a finite mu >= 0");
+        return friction_cone(vector_of<2>(p, "point"), vector_of<2>(n, "normal"), mu);
+    }, py::arg("point"), py::arg("normal"), py::arg("mu"), "The Coulomb cone of a contact (Figure 1c).");
+    m.def("pure_moments", [](int sign) { return pure_moments(sign); }, py::arg("sign"));
+    m.def("force_set_from_json", [](const std::string& text) {
+        InputWarnings warnings;
+        Cone c = read_force_set_text(text, &warnings);
+        warn_all(warnings);
+        return c;
+    }, py::arg("text"), "A force set in the format of `momentlab label` (docs/formats.md).");
+    m.def("find_contacts", [](const py::handle& body, const py::handle& obstacles, double distance, double mu,
+                              std::optional<double> mu_kinetic) {
+        const ContactFinding options{distance, mu, mu_kinetic.value_or(mu)};
+        if (!(distance >= 0.0) || !std::isfinite(distance)) throw InputError("distance", "expected a finite distance >= 0");
+        if (!(mu >= 0.0) || !std::isfinite(mu) || !(options.mu_kinetic >= 0.0) || !std::isfinite(options.mu_kinetic)) {
+            throw InputError("mu", "expected finite friction coefficients >= 0");
+        }
+        std::vector<Polygon> fixed;
+        std::size_t i = 0;
+        for (const auto& o : obstacles) fixed.push_back(polygon_of(o, "obstacles[" + std::to_string(i++) + "]"));
+        Scene found;
+        found.contacts = find_contacts(polygon_of(body, "body"), fixed, options);
+        return found;
+    }, py::arg("body"), py::arg("obstacles"), py::arg("distance") = 1e-9, py::arg("mu") = 0.0,
+       py::arg("mu_kinetic") = py::none(), "The contacts of a body polygon touching fixed polygons.");
+}

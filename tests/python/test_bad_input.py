@@ -1,0 +1,171 @@
+"""Bad input raises ValueError with the command line's one-line message (its JSON path); nothing
+crashes or aborts the interpreter: NaN, wrong shapes, wrong dtypes, empty and non-contiguous
+arrays, bad files."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+import momentlab as ml
+from conftest import EXAMPLES, cli
+
+BLOCK = EXAMPLES / "figure-3-block-along-wall.json"
+GOOD = {"body": {"mass": 1, "com": [0.5, 0.25], "inertia": 0.1},
+        "contacts": [{"point": [0, 0], "normal": [0, 1], "mu": 0.5}, {"point": [1, 0], "normal": [0, 1], "mu": 0.5}]}
+
+# (what to change in GOOD, the JSON path the message must start with)
+BAD_SCENES = [
+    (lambda d: d["contacts"][0].update(mu=-1), "$.contacts[0].mu"),
+    (lambda d: d["contacts"][1].update(normal=[0, 0]), "$.contacts[1].normal"),
+    (lambda d: d["contacts"][0].update(point=[0, "x"]), "$.contacts[0].point[1]"),
+    (lambda d: d["contacts"][0].update(point=[0, 1, 2]), "$.contacts[0].point"),
+    (lambda d: d["body"].update(mass=0), "$.body.mass"),
+    (lambda d: d["body"].update(com=[1e-400 * 0 + 1e300 * 1e300, 0]), "$.body.com[0]"),  # inf
+    (lambda d: d["body"].update(inertia=1e-70), "$.body.inertia"),
+    (lambda d: d.update(contacts=[]), "$.contacts"),
+]
+
+
+@pytest.mark.parametrize("change,path", BAD_SCENES)
+def test_bad_scene_values_name_the_path_as_the_cli_does(change, path, tmp_path):
+    doc = json.loads(json.dumps(GOOD))
+    change(doc)
+    with pytest.raises(ValueError) as python_error:
+        ml.Scene(body=doc["body"], contacts=doc["contacts"])
+    message = str(python_error.value)
+    assert message.startswith(path + ":"), message
+    if all(math.isfinite(x) for x in doc["body"]["com"]):  # JSON files cannot hold inf
+        (tmp_path / "bad.json").write_text(json.dumps(doc))
+        r = cli("modes", tmp_path / "bad.json", check=False)
+        assert r.returncode == 2 and r.stderr.strip() == "momentlab: " + message
+        with pytest.raises(ValueError) as from_text:
+            ml.Scene.from_json(json.dumps(doc))
+        assert str(from_text.value) == message
+
+
+def test_nan_and_infinity_from_numpy():
+    for bad in (np.nan, np.inf, -np.inf):
+        with pytest.raises(ValueError, match=r"^\$\.contacts\[0\]\.point\[0\]:"):
+            ml.Scene(body=GOOD["body"], contacts=ml.contacts(np.array([[bad, 0.0]]), np.array([[0.0, 1.0]]), 0.5))
+        with pytest.raises(ValueError, match=r"^\$\.contacts\[0\]\.mu:"):
+            ml.Scene(body=GOOD["body"], contacts=ml.contacts([[0.0, 0.0]], [[0.0, 1.0]], np.array([bad])))
+
+
+def test_contacts_from_arrays_check_shapes():
+    with pytest.raises(ValueError, match="points"):
+        ml.contacts(np.zeros((3, 3)), np.zeros((3, 3)))
+    with pytest.raises(ValueError, match="normals"):
+        ml.contacts(np.zeros((3, 2)), np.zeros((2, 2)))
+    with pytest.raises(ValueError, match="mu"):
+        ml.contacts(np.zeros((3, 2)), np.ones((3, 2)), mu=[0.1, 0.2])
+    with pytest.raises(ValueError):
+        ml.contacts([["a", "b"]], [[0, 1]])
+    # No contacts at all: the reader's message.
+    with pytest.raises(ValueError, match=r"^\$\.contacts:"):
+        ml.Scene(body=GOOD["body"], contacts=ml.contacts(np.zeros((0, 2)), np.zeros((0, 2))))
+
+
+def test_bad_json_and_files():
+    with pytest.raises(ValueError, match=r"^\$"):
+        ml.Scene.from_json("{not json")
+    with pytest.raises(ValueError, match="duplicate"):
+        ml.Scene.from_json('{"body": {"mass": 1, "mass": 2}, "contacts": []}')
+    with pytest.raises(ValueError):
+        ml.Scene.from_json(b"{}")
+    with pytest.raises(FileNotFoundError):
+        ml.Scene.from_file(EXAMPLES / "no-such-scene.json")
+    with pytest.raises(ValueError, match=r"^\$: missing field \"body\""):
+        ml.analyze(ml.Scene(contacts=GOOD["contacts"]))
+    with pytest.raises(ValueError):
+        ml.analyze("examples/figure-3-block-along-wall.json")  # a path is not a scene
+    with pytest.raises(ValueError, match=r"^\$\.contacts\[0\]\.point:"):
+        ml.Scene(contacts=[{"point": {"x": 0}, "normal": [0, 1]}])
+    with pytest.raises(ValueError, match="expected a number, list or object"):
+        ml.Scene(contacts=[{"point": [0, object()], "normal": [0, 1]}])
+    with pytest.raises(ValueError, match=r'^\$\[0\]: missing field "direction"'):
+        ml.force_set_from_json('[{"type": "force", "point": [0, 0]}]')
+
+
+@pytest.fixture(scope="module")
+def block():
+    return ml.analyze(ml.Scene.from_file(BLOCK))
+
+
+@pytest.mark.parametrize("w", [
+    [1.0, 2.0], [[1.0, 2.0]], np.zeros((2, 4)), np.zeros((2, 3, 1)), [], "1 2 3", ["a", "b", "c"],
+    [1 + 1j, 0, 0], [[1, 2, 3], [4, 5]], None, {"fx": 1}, np.array([1, 2, 3], dtype=object),
+])
+def test_wrenches_of_the_wrong_shape_or_type(block, w):
+    with pytest.raises(ValueError, match="wrench"):
+        block.query(w)
+    with pytest.raises(ValueError, match="wrench"):
+        block.verdict(w)
+
+
+def test_non_finite_wrenches_name_the_row(block):
+    W = np.zeros((5, 3))
+    W[3, 1] = np.nan
+    with pytest.raises(ValueError, match=r"^wrenches\[3\]: expected finite numbers"):
+        block.query(W)
+    with pytest.raises(ValueError, match="finite"):
+        block.query([0.0, np.inf, 0.0])
+
+
+def test_dtypes_and_layouts_give_the_same_answers(block):
+    rng = np.random.default_rng(3)
+    W = rng.integers(-3, 4, size=(200, 3))
+    want = block.query(W.astype(np.float64))
+    assert np.array_equal(block.query(W), want)  # integers
+    assert np.array_equal(block.query(W.astype(np.float32)), want)  # small integers are exact in float32
+    assert np.array_equal(block.query(W.tolist()), want)  # lists
+    assert np.array_equal(block.query(np.asfortranarray(W.astype(np.float64))), want)
+    wide = np.zeros((200, 6))
+    wide[:, ::2] = W
+    assert not wide[:, ::2].flags.c_contiguous
+    assert np.array_equal(block.query(wide[:, ::2]), want)  # a strided view
+    assert np.array_equal(block.query(W[::-1])[::-1], want)  # a reversed view
+    assert block.query(np.zeros((0, 3))).shape == (0, len(block.modes))
+    assert block.verdict(np.zeros((0, 3))).shape == (0,)
+
+
+def test_bad_plans_and_modes(block):
+    with pytest.raises(ValueError, match=r'^goal: no mode "xx" in this scene \(its modes: ff, ss'):
+        ml.plan_tilt(block, "xx")
+    with pytest.raises(ValueError, match="^mu:"):
+        ml.plan_push(block, "rr", mu=-1)
+    with pytest.raises(ValueError, match="^mu:"):
+        ml.plan_push(block, "rr", mu=float("nan"))
+    with pytest.raises(ValueError, match="^centre:"):
+        ml.plan_comply(block, "rr", (0.0, float("nan")))
+    with pytest.raises(ValueError, match="^centre:"):
+        ml.plan_comply(block, "rr", (0.0, 1.0, 2.0))
+    with pytest.raises(IndexError):
+        block[len(block.modes)]
+    with pytest.raises(ValueError, match="no mode"):
+        block["zz"]
+    no_polygon = ml.analyze(ml.Scene(body=GOOD["body"], contacts=GOOD["contacts"]))
+    with pytest.raises(ValueError, match=r"^\$\.body\.polygon:"):
+        ml.plan_push(no_polygon, "ff")
+
+
+def test_bad_force_set_arguments():
+    with pytest.raises(ValueError, match="direction"):
+        ml.force((0, 0), (0, 0))
+    with pytest.raises(ValueError, match="point"):
+        ml.force((0, np.nan), (1, 0))
+    with pytest.raises(ValueError, match="mu"):
+        ml.friction_cone((0, 0), (0, 1), -0.5)
+    with pytest.raises(ValueError, match="generators"):
+        ml.Cone.from_generators(np.zeros((3, 2)))
+    with pytest.raises(ValueError, match=r"generators\[1\]"):
+        ml.Cone.from_generators([[1, 0, 0], [np.nan, 0, 0]])
+    with pytest.raises(ValueError, match="point"):
+        ml.labels(ml.force((0, 0), (1, 0))).at((1, 2, 3))
+    with pytest.raises(ValueError):
+        ml.labels(42)
+    with pytest.raises(ValueError, match="body"):
+        ml.find_contacts([[0, 0], [1, 0]], [])  # two vertices: not a polygon
+    with pytest.raises(ValueError, match=r"obstacles\[0\]"):
+        ml.find_contacts([[0, 0], [1, 0], [0, 1]], [[[0, 0], [np.nan, 0], [0, 1]]])

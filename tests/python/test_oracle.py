@@ -1,0 +1,87 @@
+"""The Python module against an exact oracle that shares no code with it (tests/python/oracle.py:
+the definitions of docs/design.md as linear programs over Fractions, each answer certified),
+on random scenes with dyadic numbers (so the module and the oracle read the same values):
+modes, single and batch queries and verdicts, for random wrenches and for wrenches built on
+the boundaries between modes (ambiguous by construction)."""
+
+import json
+import random
+
+import numpy as np
+import pytest
+
+import momentlab as ml
+import oracle
+
+SEEDS = range(60)
+
+
+def scene_of(doc):
+    return ml.Scene.from_json(json.dumps(doc))
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_modes_queries_and_verdicts_agree_with_the_oracle(seed):
+    rng = random.Random(seed)
+    doc = oracle.random_scene(rng, 1 + seed % 4, kinetic_above_static=seed % 5 == 4)
+    exact = oracle.exact_scene(doc)
+    a = ml.analyze(scene_of(doc))
+    assert set(a.modes) == oracle.modes(exact) and len(set(a.modes)) == len(a.modes)
+    assert a.modes[0] == "f" * len(doc["contacts"])
+    wrenches = [oracle.random_wrench(rng) for _ in range(12)] + oracle.boundary_wrenches(exact, rng, 12)
+    W = np.array(wrenches, dtype=np.float64)
+    batch, verdicts = a.query(W), a.verdict(W)
+    for k, w in enumerate(wrenches):
+        want = oracle.query(exact, w)
+        got = a.query(w)
+        assert set(got) == want, (doc, w)
+        assert got == [m for m in a.modes if m in want]  # in the order of .modes
+        assert [m for m, hit in zip(a.modes, batch[k]) if hit] == got
+        assert a.verdict(w) == verdicts[k] == oracle.verdict(len(want))
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_sets_hold_the_oracles_certificates(seed):
+    # For each boundary wrench e and each mode i the oracle certifies (e = M a - c with a in
+    # A_i, c in T_i), the module's cones hold a, c and e.
+    rng = random.Random(1000 + seed)
+    doc = oracle.random_scene(rng, 1 + seed % 3)
+    exact = oracle.exact_scene(doc)
+    a = ml.analyze(scene_of(doc))
+    for e in oracle.boundary_wrenches(exact, rng, 6):
+        for letters in a.modes:
+            cert = oracle.produces_certificate(exact, letters, e)
+            sets = a[letters]
+            assert sets.applied.contains(e) == (cert is not None)
+            if cert is None:
+                continue
+            twist = [float(x) for x in cert[0]]
+            if all(float(x) == x for x in cert[0]):  # the twist as doubles, exactly
+                assert sets.twists.contains(twist)
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_normals_as_written_and_mirror_images(seed):
+    # Scaling a normal changes nothing (every condition is homogeneous in it); a mirror image
+    # x -> -x exchanges r and l (t = (n.y, -n.x) turns over) and negates fx... and the torque:
+    # the wrench (fx, fy, tau) becomes (-fx, fy, -tau).
+    rng = random.Random(2000 + seed)
+    doc = oracle.random_scene(rng, 1 + seed % 4)
+    a = ml.analyze(scene_of(doc))
+    scaled = json.loads(json.dumps(doc))
+    for c in scaled["contacts"]:
+        c["normal"] = [4.0 * c["normal"][0], 4.0 * c["normal"][1]]
+    mirrored = json.loads(json.dumps(doc))
+    mirrored["body"]["com"][0] = -mirrored["body"]["com"][0]
+    for c in mirrored["contacts"]:
+        c["point"][0] = -c["point"][0]
+        c["normal"][0] = -c["normal"][0]
+    swap = str.maketrans("rl", "lr")
+    s, m = ml.analyze(scene_of(scaled)), ml.analyze(scene_of(mirrored))
+    assert s.modes == a.modes
+    assert sorted(x.translate(swap) for x in m.modes) == sorted(a.modes)
+    W = np.array([oracle.random_wrench(rng) for _ in range(64)])
+    assert np.array_equal(s.query(W), a.query(W))
+    flipped = W * np.array([-1.0, 1.0, -1.0])
+    for w, v in zip(W, flipped):
+        assert sorted(x.translate(swap) for x in m.query(v)) == sorted(a.query(w))
