@@ -222,6 +222,26 @@ TEST(Cli, PlanPushJsonHasOneEntryPerCaseAndPlanComplyTheRegion) {
     EXPECT_EQ(nlohmann::json::parse(r.out)["centre"]["verdict"], "fails");
 }
 
+// Knife edges are said as such, without a best direction or a margin. E_rr+ = F_rr+ ∩ T_rr- (Mason
+// 1991): F_rr is the force (1, 0) through the centre of mass, + for y >= 1/4; T_rr- lies right of
+// the lines of the contact forces (-1/2, 1) at (0, 0) and (1, 0); the line through (1, 0) meets
+// y = 1/4 at x = 7/8, the corner of E_rr+, on its boundary. Gravity produces ls only along -x
+// (tests/planning/test_tilt.cpp).
+TEST(Cli, KnifeEdgesAreSaidWithoutABestDirection) {
+    const std::string scene = kExamples + "/figure-3-block-along-wall.json";
+    Result r = run("plan comply " + scene + " --goal rr --centre 0.875 0.25 --json");
+    ASSERT_EQ(r.status, 0) << stderr_text();
+    EXPECT_EQ(nlohmann::json::parse(r.out)["centre"]["verdict"], "boundary");
+    r = run("plan comply " + scene + " --goal rr --centre 0.875 0.25");
+    EXPECT_NE(r.out.find("a knife edge"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("best"), std::string::npos) << r.out;
+    r = run("plan tilt " + scene + " --goal ls");
+    EXPECT_NE(r.out.find("-3.14159   (-180.00\u00B0): this direction only"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("best"), std::string::npos) << r.out;
+    r = run("plan tilt " + scene + " --goal rr");  // an arc: its best direction and margin
+    EXPECT_NE(r.out.find("best"), std::string::npos) << r.out;
+}
+
 TEST_F(CliPictures, PlanBadRequestsExitTwoNamingTheOption) {
     const std::string scene = kExamples + "/figure-3-block-along-wall.json";
     const std::vector<std::pair<std::string, std::string>> cases = {
