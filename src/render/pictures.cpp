@@ -232,6 +232,38 @@ const std::array<Colour, 12> kModeColours = {{{0.651, 0.808, 0.890}, {0.698, 0.8
                                               {0.553, 0.827, 0.780}, {0.988, 0.804, 0.898}, {0.851, 0.851, 0.851},
                                               {0.800, 0.922, 0.773}, {0.737, 0.502, 0.741}, {1.000, 0.929, 0.435}}};
 
+// The translations of a mode, said from its twists: the twists with omega = 0 in the relative
+// interior of the mode's (closed) twist cone C. S = C ∩ {omega = 0} meets the relative interior
+// of C exactly when S lies in no facet of C (a convex part of C's relative boundary lies in one
+// facet), decided exactly; then the translations are S without its part on C's boundary, and
+// the text gives S's generators: "translation along (1, 0)", "translations in cone{(0, 1),
+// ±(1, 0)}". Empty when the mode has no translation.
+std::string translations_text(const Cone& twists) {
+    const Cone plane = Cone::from_halfspaces(std::vector<Vec3>{Vec3::UnitZ(), -Vec3::UnitZ()});
+    const Cone s = intersection(twists, plane);
+    if (s.is_zero()) return {};
+    std::vector<ExactVector> spanning = s.rays();
+    for (const ExactVector& l : s.lineality()) {
+        spanning.push_back(l);
+        spanning.push_back(l.negated());
+    }
+    for (const ExactVector& f : twists.facets()) {
+        const bool in_facet = std::all_of(spanning.begin(), spanning.end(),
+                                          [&](const ExactVector& g) { return dot_sign(f, g) == Sign::Zero; });
+        if (in_facet) return {};
+    }
+    std::vector<std::string> parts;
+    for (const ExactVector& r : s.rays()) parts.push_back("(" + fmt(r.value().x()) + ", " + fmt(r.value().y()) + ")");
+    for (const ExactVector& l : s.lineality()) {
+        parts.push_back("\u00B1(" + fmt(l.value().x()) + ", " + fmt(l.value().y()) + ")");
+    }
+    if (s.rays().size() == 1 && s.lineality().empty()) return "translation along " + parts.front();
+    if (s.rays().empty() && s.lineality().size() == 1) return "translations along " + parts.front();
+    std::string text = "translations in cone{";
+    for (std::size_t i = 0; i < parts.size(); ++i) text += (i ? ", " : "") + parts[i];
+    return text + "}";
+}
+
 std::vector<LegendEntry> scene_legend() {
     return {{Fill{palette::kBody, 0.15}, Stroke{palette::kBody, 1.5}, "body (dot: centre of mass)"},
             {Fill{palette::kObstacle, 0.45}, Stroke{palette::kObstacle, 1.0}, "fixed polygons"},
@@ -442,21 +474,8 @@ Figure modes_figure(const std::string& title, const Scene& scene, std::optional<
             text += " at rest (no contact moves)";
         } else {
             if (drawn) text += " rotation centres (" + std::string(kCounterClockwise) + " counter-clockwise, " + kClockwise + " clockwise)";
-            std::vector<std::string> translations;
-            for (const ExactVector& r : mode.twists.rays()) {
-                if (r.dot_sign(Vec3::UnitZ()) == Sign::Zero) {
-                    translations.push_back("(" + fmt(r.value().x()) + ", " + fmt(r.value().y()) + ")");
-                }
-            }
-            for (const ExactVector& l : mode.twists.lineality()) {
-                if (l.dot_sign(Vec3::UnitZ()) == Sign::Zero) {
-                    translations.push_back("\u00B1(" + fmt(l.value().x()) + ", " + fmt(l.value().y()) + ")");
-                }
-            }
-            if (!translations.empty()) {
-                text += drawn ? "; translations along" : " translation along";
-                for (const std::string& s : translations) text += " " + s;
-            }
+            const std::string translations = translations_text(mode.twists);
+            if (!translations.empty()) text += (drawn ? "; " : " ") + translations;
             if (!drawn && translations.empty()) text += " rotation centres outside the view";
         }
         if (drawn) {

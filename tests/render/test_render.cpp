@@ -338,6 +338,27 @@ TEST(Svg, ModesOfTheBlockAlongTheWallAreAllNamed) {
     // Sliding together is a translation (no finite centre), so rr and ll are legend-only.
     EXPECT_EQ(svg.count_text("rr \u21BA") + svg.count_text("rr \u21BB"), 0);
     EXPECT_TRUE(svg.has_text_containing("rr: translation along (1, 0)"));
+    // Translations come from the mode's own twists (vx, vy, omega) with omega = 0. Contacts at
+    // (0, 0) and (1, 0), normal +y: contact j separates when vy + omega x_j > 0 and slides
+    // right (r) when vy + omega x_j = 0 and vx > 0. ss: vy > 0, vy + omega > 0, so the
+    // translations are those with vy > 0: the cone of (0, 1) and +-(1, 0) without its edge.
+    // rs: vy = 0, vx > 0 and omega > 0; sr: vy + omega = 0, vy > 0, so omega < 0; fs, sf, ls,
+    // sl likewise turn: none of them translates (the legend listed +-(1, 0) for ss and some
+    // for rs, sr: the rays with omega = 0 of the closed cone, on its boundary).
+    bool ss_said = false;
+    for (const std::string& t : svg.texts()) {
+        if (t.rfind("ss:", 0) == 0) {
+            ss_said = true;
+            EXPECT_TRUE(t.find("translations in cone{(0, 1), \u00B1(1, 0)}") != std::string::npos ||
+                        t.find("translations in cone{(0, 1), \u00B1(-1, 0)}") != std::string::npos) << t;
+        }
+        for (const char* m : {"fs:", "rs:", "ls:", "sf:", "sr:", "sl:", "ff:"}) {
+            if (t.rfind(m, 0) == 0) {
+                EXPECT_EQ(t.find("translation"), std::string::npos) << t;
+            }
+        }
+    }
+    EXPECT_TRUE(ss_said);
 }
 
 TEST(Svg, Figure3PanelsAreTotalContactAppliedForModeRr) {
