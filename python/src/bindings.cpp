@@ -305,7 +305,7 @@ PYBIND11_MODULE(_momentlab, m) {
         .def_property_readonly("forces", &Labels::forces)
         .def_property_readonly("plus", &Labels::plus)
         .def_property_readonly("minus", &Labels::minus)
-        .def_property_readonly("both", [](const Labels& l) { return render::both_region(l.forces()); },
+        .def_property_readonly("both", [](const Labels& l) { return both_region(l.forces()); },
                                "the points about which every force has moment 0")
         .def("at", [](const Labels& l, const py::handle& p) { return label_text(l.at(vector_of<2>(p, "point"))); },
              py::arg("point"), "The exact label of a point: '+', '-', '+-' or 'none'.");

@@ -192,4 +192,17 @@ Cone Labels::forces_from_regions(const Region& plus, const Region& minus) {
     return k.signed_permuted(points_to_functionals()).dual();
 }
 
+Region both_region(const Cone& forces) {
+    std::vector<ExactVector> span;
+    for (const ExactVector& r : forces.rays()) {
+        span.push_back(r);
+        span.push_back(r.negated());
+    }
+    for (const ExactVector& l : forces.lineality()) {
+        span.push_back(l);
+        span.push_back(l.negated());
+    }
+    return Labels(Cone::from_generators(std::span<const ExactVector>(span))).plus();
+}
+
 }  // namespace momentlab

@@ -273,12 +273,6 @@ std::vector<LegendEntry> scene_legend() {
 
 }  // namespace
 
-Region both_region(const Cone& forces) {
-    std::vector<Vec3> span;
-    for (const ExactVector& r : forces.rays()) span.push_back(r.value());
-    for (const ExactVector& l : forces.lineality()) span.push_back(l.value());
-    return Labels(Cone::from_generators(std::span<const Vec3>(), span)).plus();
-}
 
 Box fit_view(const std::vector<Vec2>& points, double pad) {
     if (points.empty()) return Box{};

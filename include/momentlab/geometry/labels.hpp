@@ -89,6 +89,11 @@ private:
 /// std::invalid_argument for a non-finite point.
 [[nodiscard]] Label moment_label(const Cone& forces, const Vec2& point);
 
+/// The +- set of a force set: the points about which every force of F has zero moment, i.e. the
+/// common part of F+ and F- (a line, a point, the whole plane for F = {0}, else empty). Exact:
+/// it is the + region of the labels of span(F), built from F's exact rays and lines.
+[[nodiscard]] Region both_region(const Cone& forces);
+
 /// The moment functional of the point (x, y): lambda(w) = y fx - x fy + tau, as a covector.
 [[nodiscard]] inline Vec3 moment_functional(const Vec2& point) {
     return Vec3(point.y(), -point.x(), 1.0);

@@ -26,11 +26,6 @@ struct ForcePanel {
     std::vector<Vec2> anchors;
 };
 
-/// The +- set of a force set: the points about which every force of F has zero moment, i.e. the
-/// common part of F+ and F- (a line, a point, the whole plane for F = {0}, else empty). Exact:
-/// it is the labels of span(F).
-[[nodiscard]] Region both_region(const Cone& forces);
-
 /// A view fitting the points (padded by `pad` of their extent on each side, never flatter than
 /// 1:2, and [-1, 1]^2 when there are none).
 [[nodiscard]] Box fit_view(const std::vector<Vec2>& points, double pad = 0.35);
