@@ -13,14 +13,18 @@ APT_PACKAGES := g++ cmake make libeigen3-dev libgmp-dev nlohmann-json3-dev libcl
                 libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev libcairo2-dev pkg-config libbox2d-dev \
                 clang libclang-rt-14-dev \
                 python3-dev pybind11-dev python3-numpy python3-matplotlib python3-pytest python3-pip \
-                python3-venv python3-setuptools python3-wheel
+                python3-venv python3-setuptools python3-wheel \
+                emscripten nodejs chromium
 SAN_BUILD := build/asan
+WEB_BUILD := build/web
+# Emscripten's tools run on node without network (docs/web.md).
+export NODE_PATH := /usr/share/nodejs
 FUZZ_BUILD := build/fuzz
 FUZZ_TARGETS := fuzz_scene_reader fuzz_labels_reader fuzz_cone fuzz_query
 FUZZ_SECONDS ?= 600
 SMOKE_SECONDS ?= 5
 
-.PHONY: all deps build python demo figures test test-release test-sanitizers fuzz-build test-fuzz fuzz large-inputs bench validate validate-long clean
+.PHONY: all deps build python web test-web demo figures test test-release test-sanitizers fuzz-build test-fuzz fuzz large-inputs bench validate validate-long clean
 
 all: build
 
@@ -50,11 +54,32 @@ python: build
 	assert a.query([0.0, -1.0, -0.5]) == ['ff']; \
 	print('import momentlab:', momentlab.__file__)"
 
-demo: python
+# The viewer (docs/web.md): out/web/index.html (one file: open it from disk) and out/web/momentlab.mjs
+# (an ES module for node and pages), the library compiled to WebAssembly by Debian's Emscripten.
+$(WEB_BUILD)/CMakeCache.txt: | deps
+	emcmake cmake -S . -B $(WEB_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS=-fexceptions >/dev/null
+
+web: deps $(WEB_BUILD)/CMakeCache.txt
+	cmake --build $(WEB_BUILD) -j$(JOBS)
+	@mkdir -p out/web
+	@cp $(WEB_BUILD)/web/momentlab.mjs out/web/momentlab.mjs
+	@$(PYTHON) web/build_page.py $(WEB_BUILD)/web/momentlab_classic.js examples out/web/index.html
+	@echo "out/web/index.html: open it in a browser (from disk, no server needed); out/web/momentlab.mjs: the module"
+
+# The module in node against the CLI, the page in Debian's chromium (playwright-core from npm,
+# pinned in tests/web/package.json; never a downloaded browser).
+test-web: web build
+	@cd tests/web && { [ -d node_modules/playwright-core ] || npm install --no-audit --no-fund --loglevel=error; }
+	MOMENTLAB_CLI=$(CURDIR)/$(BUILD)/momentlab node --no-experimental-fetch --test tests/web/test_module.mjs
+	MOMENTLAB_CLI=$(CURDIR)/$(BUILD)/momentlab PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 node --test tests/web/test_page.mjs
+
+demo: python web
 	@bash examples/demo.sh $(BUILD)/momentlab out
 	@echo
 	@echo "== The same in Python: examples/python/tutorial.py (Figures 1-6 with matplotlib)"
 	@cd out && $(PYTHON) ../examples/python/tutorial.py python | sed 's/^/   /'
+	@echo
+	@echo "== In the browser: open out/web/index.html (drag contacts and the force; pick a mode)"
 
 # The README's pictures (docs/figures/*.png), regenerated from the bundled examples.
 figures: build
@@ -62,8 +87,9 @@ figures: build
 	mkdir -p docs/figures; cp $$tmp/*.png docs/figures/; rm -rf $$tmp; ls docs/figures
 
 # Every test: the suite in the release build, again under AddressSanitizer and
-# UndefinedBehaviorSanitizer (any report fails), and each fuzz target briefly on its corpus.
-test: test-release test-sanitizers test-fuzz
+# UndefinedBehaviorSanitizer (any report fails), each fuzz target briefly on its corpus, and the
+# WebAssembly module and page (node, chromium).
+test: test-release test-sanitizers test-fuzz test-web
 
 test-release: python
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)

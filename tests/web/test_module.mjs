@@ -1,0 +1,178 @@
+// out/web/momentlab.mjs in node against the CLI (docs/web.md): the same library compiled twice
+// (native and WebAssembly, both on momentlab's own exact arithmetic, no GMP) must give the same
+// modes and the same answers to every wrench, on the kernel's hard cases (exactly concurrent
+// normals, parallel and opposed normals, repeated points, dyadic boundary wrenches) and on random
+// scenes; bad input throws a JS Error with the CLI's one-line message.
+//   node --no-experimental-fetch --test tests/web/test_module.mjs   (MOMENTLAB_CLI, MOMENTLAB_WEB)
+import assert from 'node:assert/strict';
+import { execFileSync, spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { test } from 'node:test';
+
+const ROOT = new URL('../../', import.meta.url).pathname;
+const CLI = process.env.MOMENTLAB_CLI || join(ROOT, 'build/release/momentlab');
+const WEB = process.env.MOMENTLAB_WEB || join(ROOT, 'out/web');
+const ml = await (await import(join(WEB, 'momentlab.mjs'))).default();
+const scratch = mkdtempSync(join(tmpdir(), 'momentlab-web-'));
+
+// Printed angles come from atan2 of the exact answer's rounded directions: the browser's libm and
+// glibc may differ in the last bit there (every decision is exact and equal; docs/web.md).
+function assertClose(actual, expected, path = '$') {
+  if (typeof expected === 'number') {
+    assert.equal(typeof actual, 'number', path);
+    assert.ok(Math.abs(actual - expected) <= 1e-14 * Math.max(1, Math.abs(expected)), `${path}: ${actual} vs ${expected}`);
+  } else if (Array.isArray(expected)) {
+    assert.ok(Array.isArray(actual) && actual.length === expected.length, path);
+    expected.forEach((x, i) => assertClose(actual[i], x, `${path}[${i}]`));
+  } else if (expected && typeof expected === 'object') {
+    assert.deepEqual(Object.keys(actual).sort(), Object.keys(expected).sort(), path);
+    for (const k of Object.keys(expected)) assertClose(actual[k], expected[k], `${path}.${k}`);
+  } else {
+    assert.equal(actual, expected, path);
+  }
+}
+
+function cliModes(file) {
+  return JSON.parse(execFileSync(CLI, ['modes', file, '--json'], { encoding: 'utf8' })).modes;
+}
+
+// One CLI run for all the wrenches of a scene: JSON lines {modes, verdict, wrench}.
+function cliQueries(file, wrenches) {
+  const list = join(scratch, 'wrenches.txt');
+  writeFileSync(list, wrenches.map((w) => JSON.stringify(w)).join('\n') + '\n');
+  const out = execFileSync(CLI, ['query', file, '--wrenches', list], { encoding: 'utf8' });
+  return out.trim().split('\n').map((line) => JSON.parse(line));
+}
+
+// A random generator that the test controls (so a failure can be replayed).
+function rng(seed) {
+  let s = seed >>> 0;
+  return () => {
+    s = (s * 1664525 + 1013904223) >>> 0;
+    return s / 2 ** 32;
+  };
+}
+const pick = (r, xs) => xs[Math.floor(r() * xs.length)];
+const dyadic = (r, lo, hi, den) => Math.round((lo + (hi - lo) * r()) * den) / den;
+
+// Scenes on the 1/8 grid, half of them degenerate in the ways that decide modes exactly.
+function randomScene(r, n) {
+  const kind = pick(r, ['generic', 'concurrent', 'parallel', 'opposed', 'repeated']);
+  const centre = [dyadic(r, -1, 1, 8), dyadic(r, -1, 1, 8)];
+  const contacts = [];
+  for (let j = 0; j < n; ++j) {
+    let point = [dyadic(r, -2, 2, 8), dyadic(r, -2, 2, 8)];
+    let normal = [dyadic(r, -2, 2, 4), dyadic(r, -2, 2, 4)];
+    if (kind === 'concurrent') normal = [centre[0] - point[0], centre[1] - point[1]];  // all through one point
+    if (kind === 'parallel') normal = [0, pick(r, [1, 2, 0.5])];
+    if (kind === 'opposed' && j % 2 === 1) { point = [contacts[j - 1].point[0] + 1, contacts[j - 1].point[1]]; normal = [-contacts[j - 1].normal[0], -contacts[j - 1].normal[1]]; }
+    if (kind === 'repeated' && j > 0) point = contacts[0].point.slice();
+    if (normal[0] === 0 && normal[1] === 0) normal = [0, 1];
+    const mu = pick(r, [0, 0.25, 0.5, 1, 1.5]);
+    contacts.push({ point, normal, mu, mu_kinetic: pick(r, [mu, mu / 2]) });
+  }
+  return { body: { mass: pick(r, [1, 2, 0.5]), com: [dyadic(r, -1, 1, 8), dyadic(r, -1, 1, 8)], inertia: pick(r, [0.125, 0.5, 1]) },
+           contacts };
+}
+
+function compareScene(doc, wrenches) {
+  const file = join(scratch, 'scene.json');
+  const text = JSON.stringify(doc);
+  writeFileSync(file, text);
+  const a = ml.analyze(text);
+  try {
+    assert.deepEqual(a.modes, cliModes(file), text);
+    const answers = cliQueries(file, wrenches);
+    const batch = a.queryBatch(wrenches);
+    wrenches.forEach((w, i) => {
+      assert.deepEqual(a.query(w), answers[i].modes, `${text} ${JSON.stringify(w)}`);
+      assert.equal(a.verdict(w), answers[i].verdict);
+      assert.deepEqual(a.modes.filter((_, k) => batch[i * a.modes.length + k] === 1), answers[i].modes);
+    });
+  } finally {
+    a.delete();
+  }
+}
+
+test('the bundled scenes and the wheel: the CLI modes and answers', () => {
+  const files = readdirSync(join(ROOT, 'examples')).filter((f) => f.endsWith('.json')).map((f) => join(ROOT, 'examples', f));
+  files.push(join(ROOT, 'examples/downstream/wheel.json'));
+  const r = rng(7);
+  let scenes = 0;
+  for (const file of files) {
+    const doc = JSON.parse(readFileSync(file, 'utf8'));
+    if (!doc.body) continue;
+    const wrenches = Array.from({ length: 40 }, () => [dyadic(r, -2, 2, 4), dyadic(r, -2, 2, 4), dyadic(r, -2, 2, 4)]);
+    compareScene(doc, wrenches);
+    ++scenes;
+  }
+  assert.ok(scenes >= 5, `${scenes} scenes`);
+  // The wheel of issue 14 (normals meeting in its centre): the torque (0, 0, -1) turns it (lll)
+  // or turns it while lifting contact 1 (sll), by hand in tests/mechanics/test_modes.cpp.
+  const wheel = ml.analyze(readFileSync(join(ROOT, 'examples/downstream/wheel.json'), 'utf8'));
+  assert.deepEqual([...wheel.query([0, 0, -1])].sort(), ['lll', 'sll']);
+  wheel.delete();
+});
+
+test('random and degenerate scenes: the CLI modes and answers, boundary wrenches included', () => {
+  const r = rng(1991);
+  for (let k = 0; k < 120; ++k) {
+    const doc = randomScene(r, 1 + (k % 4));
+    // Wrenches on a coarse dyadic grid land on the boundaries between modes often.
+    const wrenches = Array.from({ length: 24 }, () => [dyadic(r, -2, 2, 2), dyadic(r, -2, 2, 2), dyadic(r, -2, 2, 2)]);
+    compareScene(doc, wrenches);
+  }
+});
+
+test('plans and labels equal the CLI', () => {
+  const file = join(ROOT, 'examples/figure-3-block-along-wall.json');
+  const a = ml.analyze(readFileSync(file, 'utf8'));
+  for (const goal of a.modes) {
+    const tilt = JSON.parse(execFileSync(CLI, ['plan', 'tilt', file, '--goal', goal, '--json'], { encoding: 'utf8' }));
+    assertClose(a.planTilt(goal), tilt);
+    const push = JSON.parse(execFileSync(CLI, ['plan', 'push', file, '--goal', goal, '--json'], { encoding: 'utf8' }));
+    assertClose(a.planPush(goal).cases, push.cases);
+    const comply = JSON.parse(execFileSync(CLI, ['plan', 'comply', file, '--goal', goal, '--centre', '0.875', '0.25', '--json'], { encoding: 'utf8' }));
+    const mine = a.planComply(goal, [0.875, 0.25]);
+    assertClose(mine.centre, comply.centre);
+    for (const sheet of ['plus', 'minus']) {
+      for (const key of ['kind', 'vertices', 'rays', 'lines']) assert.deepEqual(mine.labels[sheet][key], comply.labels[sheet][key]);
+    }
+  }
+  a.delete();
+  const label = JSON.parse(execFileSync(CLI, ['label', join(ROOT, 'examples/figure-2-two-friction-cones.json'), '--json'], { encoding: 'utf8' }));
+  const mine = ml.forceSetLabels(readFileSync(join(ROOT, 'examples/figure-2-two-friction-cones.json'), 'utf8'), [-2, -2, 4, 4]);
+  assert.deepEqual(mine.cone, label.cone);
+  for (const sheet of ['plus', 'minus']) {
+    for (const key of ['kind', 'vertices', 'rays', 'lines']) assert.deepEqual(mine[sheet][key], label.labels[sheet][key]);
+    assert.ok(mine[sheet].clipped.length >= 3);
+  }
+});
+
+test('bad input throws an Error with the CLI message', () => {
+  const bad = [
+    '{"body": {"mass": 1, "com": [0, 0], "inertia": 1}, "contacts": [{"point": [0, 0], "normal": [0, 1], "mu": -1}]}',
+    '{"body": {"mass": 1, "com": [0, 0], "inertia": 1}, "contacts": [{"point": [0, 0], "normal": [0, 0]}]}',
+    '{"body": {"mass": 0, "com": [0, 0], "inertia": 1}, "contacts": [{"point": [0, 0], "normal": [0, 1]}]}',
+    '{"body": {"mass": 1, "com": [0, 0], "inertia": 1}, "contacts": [{"point": [0, 1e-400], "normal": [0, 1]}]}',
+    '{"body": {"mass": 1, "mass": 2}}',
+    '{not json',
+  ];
+  for (const text of bad) {
+    const file = join(scratch, 'bad.json');
+    writeFileSync(file, text);
+    const cli = spawnSync(CLI, ['modes', file], { encoding: 'utf8' });
+    assert.equal(cli.status, 2);
+    assert.throws(() => ml.analyze(text), (e) => e instanceof Error && `momentlab: ${e.message}` === cli.stderr.trim());
+  }
+  const a = ml.analyze(readFileSync(join(ROOT, 'examples/figure-3-block-along-wall.json'), 'utf8'));
+  assert.throws(() => a.query([1, NaN, 0]), /wrench: expected finite numbers/);
+  assert.throws(() => a.query([1, 2]), /wrench: expected 3 numbers/);
+  assert.throws(() => a.queryBatch([[1, 2, 3], [4, Infinity, 6]]), /wrenches\[1\]: expected finite numbers/);
+  assert.throws(() => a.mode('xx'), /no mode "xx" in this scene/);
+  assert.throws(() => a.planPush('rr', { mu: -1 }), /^Error: mu:/);
+  assert.throws(() => a.mode('rr', [1, 1, 0, 0]), /^Error: view:/);
+  a.delete();
+});

@@ -1,0 +1,571 @@
+// The viewer (docs/web.md): a scene drawn to scale with draggable body vertices, contacts, normals
+// and an applied force; after every change the scene is analysed again by the library compiled
+// to WebAssembly, and the modes, the selected mode's labelled regions, the verdict and the plans
+// are redrawn. Everything shown is computed by the library; this file only draws and edits.
+'use strict';
+
+const COLOURS = {
+  plus: '#fdc585', plusEdge: '#d9720b', minus: '#99c8f2', minusEdge: '#216ab5', both: '#7a1c96',
+  body: '#59595f', obstacle: '#8c8c8c', friction: '#2e994f', guide: '#9e9ea8', ink: '#1f1f24',
+};
+const MODE_COLOURS = ['#a6cee3', '#b2df8a', '#fb9a99', '#fdbf6f', '#cab2d6', '#ffff99', '#8dd3c7', '#fccde5',
+                      '#d9d9d9', '#ccebc5', '#bc80bd', '#ffed6f'];
+const SVG = 'http://www.w3.org/2000/svg';
+
+const app = {
+  ml: null,
+  doc: null,          // the scene as a JSON object (the CLI's format)
+  analysis: null,
+  selected: null,     // the selected mode's letters
+  force: { point: [0.5, 0.25], vector: [0, -1], moment: 0 },
+  centre: null,       // the compliance centre
+  view: [-1, -1, 2, 2],
+  frameTimes: [],     // milliseconds per recompute + redraw
+  errors: [],
+};
+window.momentlabApp = app;
+
+const $ = (id) => document.getElementById(id);
+
+function showError(message) {
+  const box = $('error');
+  if (message) {
+    box.textContent = message;
+    box.classList.add('shown');
+    app.errors.push(message);
+  } else {
+    box.textContent = '';
+    box.classList.remove('shown');
+  }
+}
+
+// --- geometry of the view ------------------------------------------------------------------
+
+function fitView(doc) {
+  const pts = [];
+  if (doc.body) {
+    if (doc.body.com) pts.push(doc.body.com);
+    for (const p of doc.body.polygon || []) pts.push(p);
+  }
+  for (const c of doc.contacts || []) pts.push(c.point);
+  if (!pts.length) pts.push([0, 0]);
+  let [x0, y0, x1, y1] = [Infinity, Infinity, -Infinity, -Infinity];
+  for (const [x, y] of pts) { x0 = Math.min(x0, x); y0 = Math.min(y0, y); x1 = Math.max(x1, x); y1 = Math.max(y1, y); }
+  const size = Math.max(x1 - x0, y1 - y0, 1e-3);
+  const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2, half = size * 0.95;
+  return [cx - half, cy - half, cx + half, cy + half];
+}
+
+function screen() {
+  const svg = $('view');
+  const w = svg.clientWidth || 800, h = svg.clientHeight || 600;
+  const [x0, y0, x1, y1] = app.view;
+  const k = Math.min(w / (x1 - x0), h / (y1 - y0));
+  const ox = (w - k * (x1 - x0)) / 2, oy = (h - k * (y1 - y0)) / 2;
+  return {
+    w, h, k,
+    x: (x) => ox + k * (x - x0),
+    y: (y) => oy + k * (y1 - y),
+    world: (sx, sy) => [x0 + (sx - ox) / k, y1 - (sy - oy) / k],
+    box: () => [x0 - ox / k, y0 - (h - oy - k * (y1 - y0)) / k, x1 + (w - ox - k * (x1 - x0)) / k, y1 + oy / k],
+  };
+}
+
+function el(name, attrs, parent) {
+  const e = document.createElementNS(SVG, name);
+  for (const [k, v] of Object.entries(attrs || {})) e.setAttribute(k, v);
+  if (parent) parent.appendChild(e);
+  return e;
+}
+
+function pathOf(points, s, closed) {
+  if (!points.length) return '';
+  return points.map((p, i) => `${i ? 'L' : 'M'}${s.x(p[0]).toFixed(2)},${s.y(p[1]).toFixed(2)}`).join(' ') + (closed ? ' Z' : '');
+}
+
+function centroid(points) {
+  const n = points.length;
+  return [points.reduce((a, p) => a + p[0], 0) / n, points.reduce((a, p) => a + p[1], 0) / n];
+}
+
+// --- the scene -----------------------------------------------------------------------------
+
+function unitNormal(n) {
+  const l = Math.hypot(n[0], n[1]);
+  return [n[0] / l, n[1] / l];
+}
+
+// The nearest point of the body polygon's boundary (contacts stay on it when the body moves).
+function onBoundary(p, polygon) {
+  let best = p, dist = Infinity;
+  for (let i = 0; i < polygon.length; ++i) {
+    const a = polygon[i], b = polygon[(i + 1) % polygon.length];
+    const d = [b[0] - a[0], b[1] - a[1]];
+    const len2 = d[0] * d[0] + d[1] * d[1];
+    let t = len2 ? ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / len2 : 0;
+    t = Math.max(0, Math.min(1, t));
+    const q = t === 0 ? a.slice() : t === 1 ? b.slice() : [a[0] + t * d[0], a[1] + t * d[1]];
+    const e = Math.hypot(q[0] - p[0], q[1] - p[1]);
+    if (e < dist) { dist = e; best = q; }
+  }
+  return best;
+}
+
+function wrench() {
+  const [px, py] = app.force.point, [fx, fy] = app.force.vector;
+  return [fx, fy, px * fy - py * fx + app.force.moment];
+}
+
+// --- recompute and redraw ------------------------------------------------------------------
+
+// After every change: the scene is analysed again only when it changed (dragging the applied
+// force asks the same analysis a new question); the shown sets and the plans are cached by what
+// they depend on. The push table, the costliest plan, follows the frame (schedulePlans) when the
+// scene or the goal changed, so that a drag stays within one frame.
+function recompute() {
+  const t0 = performance.now();
+  const key = JSON.stringify(app.doc);
+  if (key !== app.sceneKey || !app.analysis) {
+    let analysis;
+    try {
+      analysis = app.ml.analyze(key);
+    } catch (e) {
+      showError(e.message);
+      return false;
+    }
+    if (app.analysis) app.analysis.delete();
+    app.analysis = analysis;
+    app.sceneKey = key;
+    app.cache = {};
+    if (!analysis.modes.includes(app.selected)) app.selected = null;
+  }
+  showError('');
+  try {
+    redraw();
+  } catch (e) {
+    showError(e.message);
+  }
+  const ms = performance.now() - t0;
+  app.frameTimes.push(ms);
+  $('timing').textContent = `last update: ${ms.toFixed(2)} ms (analysis when the scene changed, query, sets, drawing)`;
+  return true;
+}
+
+// A value computed once per scene and key.
+function cached(name, compute) {
+  if (!(name in app.cache)) app.cache[name] = compute();
+  return app.cache[name];
+}
+
+function redraw() {
+  const a = app.analysis;
+  const produced = a.query(wrench());
+  if (!app.selected) app.selected = produced.length ? produced[0] : a.modes[0];
+  drawModes(a, produced);
+  drawForceText(produced, a.verdict(wrench()));
+  drawPlans(a);
+  drawPicture(a, produced);
+}
+
+// The mode buttons: built when the modes change, otherwise only their marks are updated.
+function drawModes(a, produced) {
+  const box = $('modes');
+  const key = a.modes.join(' ');
+  if (box.dataset.modes !== key) {
+    box.textContent = '';
+    box.dataset.modes = key;
+    $('mode-count').textContent = `(${a.modes.length})`;
+    a.modes.forEach((m, k) => {
+      const b = document.createElement('button');
+      b.textContent = m;
+      b.dataset.mode = m;
+      b.style.borderLeft = `6px solid ${MODE_COLOURS[k % MODE_COLOURS.length]}`;
+      b.addEventListener('click', () => { app.selected = m; recompute(); });
+      box.appendChild(b);
+    });
+  }
+  for (const b of box.children) {
+    const m = b.dataset.mode;
+    b.classList.toggle('selected', m === app.selected);
+    b.classList.toggle('produced', produced.includes(m));
+    b.title = produced.includes(m) ? 'the applied force produces this mode' : 'pick to see its sets';
+  }
+}
+
+function drawForceText(produced, verdict) {
+  const w = wrench();
+  $('wrench').textContent = `(${w.map((x) => (Math.abs(x) < 5e-4 ? 0 : x).toFixed(3)).join(', ')})`;
+  $('produced').textContent = produced.length ? produced.join(', ') : 'no mode';
+  $('produced').dataset.modes = produced.join(' ');
+  $('verdict').textContent = verdict;
+}
+
+function drawRegion(g, region, fill, edge, s, cls, mark) {
+  const poly = region.clipped || [];
+  if (poly.length >= 3) {
+    const p = el('path', { d: pathOf(poly, s, true), fill, 'fill-opacity': 0.85, stroke: edge, 'stroke-width': 1.2, class: cls }, g);
+    p.dataset.world = JSON.stringify(poly);
+  } else if (poly.length === 2) {
+    const p = el('path', { d: pathOf(poly, s, false), stroke: edge, 'stroke-width': 3, fill: 'none', class: cls }, g);
+    p.dataset.world = JSON.stringify(poly);
+  } else if (poly.length === 1) {
+    const p = el('circle', { cx: s.x(poly[0][0]), cy: s.y(poly[0][1]), r: 5, fill: edge, class: cls }, g);
+    p.dataset.world = JSON.stringify(poly);
+  }
+  if (mark && poly.length) {
+    const c = centroid(poly);
+    const t = el('text', { x: s.x(c[0]), y: s.y(c[1]), fill: edge, 'font-size': 22, 'font-weight': 700,
+                           'text-anchor': 'middle', 'dominant-baseline': 'middle', class: `${cls}-mark` }, g);
+    t.textContent = mark;
+  }
+}
+
+function drawSet(g, set, s) {
+  drawRegion(g, set.plus, COLOURS.plus, COLOURS.plusEdge, s, 'plus', '+');
+  drawRegion(g, set.minus, COLOURS.minus, COLOURS.minusEdge, s, 'minus', '\u2212');
+  if (set.both) drawRegion(g, set.both, COLOURS.both, COLOURS.both, s, 'both', '');
+  // the forces: the cone's extreme rays on their (dashed) lines of action
+  for (const r of (set.cone && set.cone.rays) || []) {
+    const [fx, fy, tau] = r;
+    const n2 = fx * fx + fy * fy;
+    if (n2 === 0) continue;
+    const p = [tau / n2 * fy, -tau / n2 * fx], d = [fx / Math.sqrt(n2), fy / Math.sqrt(n2)];
+    const far = 4 * (app.view[2] - app.view[0]);
+    el('path', { d: pathOf([[p[0] - far * d[0], p[1] - far * d[1]], [p[0] + far * d[0], p[1] + far * d[1]]], s),
+                 stroke: COLOURS.ink, 'stroke-dasharray': '5 4', 'stroke-width': 0.8, opacity: 0.6, class: 'line-of-action' }, g);
+  }
+}
+
+function arrow(g, from, to, colour, s, width, cls) {
+  const [x0, y0, x1, y1] = [s.x(from[0]), s.y(from[1]), s.x(to[0]), s.y(to[1])];
+  const line = el('line', { x1: x0, y1: y0, x2: x1, y2: y1, stroke: colour, 'stroke-width': width, class: cls || '' }, g);
+  const a = Math.atan2(y1 - y0, x1 - x0), h = 9;
+  el('path', { d: `M${x1},${y1} L${x1 - h * Math.cos(a - 0.4)},${y1 - h * Math.sin(a - 0.4)} L${x1 - h * Math.cos(a + 0.4)},${y1 - h * Math.sin(a + 0.4)} Z`,
+               fill: colour, class: cls || '' }, g);
+  return line;
+}
+
+function handle(g, p, s, colour, name, onMove, shape) {
+  const h = el(shape === 'square' ? 'rect' : 'circle', shape === 'square'
+    ? { x: s.x(p[0]) - 6, y: s.y(p[1]) - 6, width: 12, height: 12 }
+    : { cx: s.x(p[0]), cy: s.y(p[1]), r: 7 }, g);
+  h.setAttribute('fill', colour);
+  h.setAttribute('fill-opacity', 0.8);
+  h.setAttribute('stroke', '#fff');
+  h.setAttribute('class', 'handle');
+  h.setAttribute('tabindex', '0');
+  h.dataset.handle = name;
+  h.setAttribute('aria-label', name);
+  h.addEventListener('pointerdown', (ev) => {
+    ev.preventDefault();
+    h.setPointerCapture(ev.pointerId);
+    app.dragging = { name, onMove };
+  });
+  h.addEventListener('keydown', (ev) => {
+    const step = ev.shiftKey ? 0.005 : 0.05;
+    const d = { ArrowLeft: [-step, 0], ArrowRight: [step, 0], ArrowUp: [0, step], ArrowDown: [0, -step] }[ev.key];
+    if (!d) return;
+    ev.preventDefault();
+    onMove([p[0] + d[0], p[1] + d[1]]);
+    recompute();
+    const again = document.querySelector(`[data-handle="${CSS.escape(name)}"]`);
+    if (again) again.focus();
+  });
+  return h;
+}
+
+function drawPicture(a, produced) {
+  const svg = $('view');
+  svg.textContent = '';
+  const s = screen();
+  svg.setAttribute('viewBox', `0 0 ${s.w} ${s.h}`);
+  const box = s.box();
+  const regions = el('g', { id: 'regions' }, svg);
+  const show = $('show').value;
+  if (show === 'all') {
+    a.modes.forEach((m, k) => {
+      const sets = cached(`mode ${m} ${box}`, () => a.mode(m, box));
+      const colour = MODE_COLOURS[k % MODE_COLOURS.length];
+      drawRegion(regions, sets.centres.plus, colour, colour, s, `centres mode-${m}`, `${m} \u21ba`);
+      drawRegion(regions, sets.centres.minus, colour, colour, s, `centres mode-${m}`, `${m} \u21bb`);
+    });
+  } else if (show === 'comply') {
+    const centre = app.centre || app.doc.body.com;
+    const plan = cached(`comply ${app.selected} ${centre} ${box}`, () => a.planComply(app.selected, centre, box));
+    drawSet(regions, plan.labels, s);
+  } else if (app.selected) {
+    const sets = cached(`mode ${app.selected} ${box}`, () => a.mode(app.selected, box));
+    if (show === 'centres') {
+      drawRegion(regions, sets.centres.plus, COLOURS.plus, COLOURS.plusEdge, s, 'plus', '\u21ba');
+      drawRegion(regions, sets.centres.minus, COLOURS.minus, COLOURS.minusEdge, s, 'minus', '\u21bb');
+    } else {
+      drawSet(regions, sets[show], s);
+    }
+  }
+  const scene = el('g', { id: 'scene' }, svg);
+  for (const o of app.doc.obstacles || []) {
+    el('path', { d: pathOf(o.polygon, s, true), fill: COLOURS.obstacle, 'fill-opacity': 0.45, class: 'obstacle' }, scene);
+  }
+  const body = app.doc.body;
+  if (body.polygon) {
+    el('path', { d: pathOf(body.polygon, s, true), fill: COLOURS.body, 'fill-opacity': 0.15, stroke: COLOURS.body,
+                 'stroke-width': 1.5, class: 'body' }, scene);
+  }
+  el('circle', { cx: s.x(body.com[0]), cy: s.y(body.com[1]), r: 4, fill: COLOURS.body, class: 'com' }, scene);
+  const len = 0.12 * (app.view[2] - app.view[0]);
+  (app.doc.contacts || []).forEach((c) => {
+    const u = unitNormal(c.normal), t = [u[1], -u[0]], mu = c.mu || 0;
+    el('path', { d: pathOf([c.point, [c.point[0] + len * (u[0] + mu * t[0]), c.point[1] + len * (u[1] + mu * t[1])],
+                            [c.point[0] + len * (u[0] - mu * t[0]), c.point[1] + len * (u[1] - mu * t[1])]], s, true),
+                 fill: COLOURS.friction, 'fill-opacity': 0.25, class: 'friction-cone' }, scene);
+    arrow(scene, c.point, [c.point[0] + len * u[0], c.point[1] + len * u[1]], COLOURS.friction, s, 1.5, 'normal');
+  });
+  drawPlanMarks(scene, a, s);
+  // the applied force
+  const f = app.force, tip = [f.point[0] + f.vector[0] * len * 2, f.point[1] + f.vector[1] * len * 2];
+  arrow(scene, f.point, tip, produced.length === 1 ? COLOURS.ink : '#b00', s, 2.5, 'applied-force');
+  // handles: body vertices, contact points, normal tips, the force's point and tip
+  const handles = el('g', { id: 'handles' }, svg);
+  (body.polygon || []).forEach((p, i) => handle(handles, p, s, COLOURS.body, `vertex ${i}`, (q) => {
+    body.polygon[i] = q;
+    for (const c of app.doc.contacts || []) c.point = onBoundary(c.point, body.polygon);
+  }, 'square'));
+  handle(handles, body.com, s, COLOURS.body, 'centre of mass', (q) => { body.com = q; });
+  (app.doc.contacts || []).forEach((c, j) => {
+    handle(handles, c.point, s, COLOURS.friction, `contact ${j}`, (q) => {
+      c.point = body.polygon && body.polygon.length >= 3 ? onBoundary(q, body.polygon) : q;
+    });
+    const u = unitNormal(c.normal);
+    handle(handles, [c.point[0] + len * u[0], c.point[1] + len * u[1]], s, COLOURS.friction, `normal ${j}`, (q) => {
+      const d = [q[0] - c.point[0], q[1] - c.point[1]];
+      if (Math.hypot(d[0], d[1]) > 1e-9) c.normal = d;
+    }, 'square');
+  });
+  (app.doc.obstacles || []).forEach((o, k) => o.polygon.forEach((p, i) =>
+    handle(handles, p, s, COLOURS.obstacle, `obstacle ${k} vertex ${i}`, (q) => { o.polygon[i] = q; }, 'square')));
+  handle(handles, f.point, s, COLOURS.ink, 'force point', (q) => { f.point = q; });
+  handle(handles, tip, s, COLOURS.ink, 'force tip', (q) => {
+    f.vector = [(q[0] - f.point[0]) / (len * 2), (q[1] - f.point[1]) / (len * 2)];
+  });
+  if (app.centre) el('path', { d: `M${s.x(app.centre[0]) - 6},${s.y(app.centre[1]) - 6} l12,12 m-12,0 l12,-12`,
+                               stroke: COLOURS.ink, 'stroke-width': 2, class: 'compliance-centre' }, svg);
+}
+
+// The push table's feasible touches on the body, the tilt arcs at the centre of mass.
+function drawPlanMarks(g, a, s) {
+  if (!app.plans) return;
+  const { push, tilt } = app.plans;
+  for (const c of push.cases) {
+    if (c.verdict !== 'feasible' && c.verdict !== 'boundary') continue;
+    for (const [p, q] of c.touch) {
+      el('path', { d: pathOf([p, q], s), stroke: COLOURS.friction, 'stroke-width': c.feasible ? 6 : 3,
+                   'stroke-dasharray': c.feasible ? '' : '3 3', opacity: 0.7, fill: 'none', 'stroke-linecap': 'round',
+                   class: 'push-touch' }, g);
+    }
+  }
+  const com = app.doc.body.com, r = 0.2 * (app.view[2] - app.view[0]);
+  for (const [lo, hi] of tilt.intervals) {
+    const steps = 24, pts = [];
+    for (let i = 0; i <= steps; ++i) {
+      const t = lo + (hi - lo) * i / steps;
+      pts.push([com[0] + r * Math.cos(t), com[1] + r * Math.sin(t)]);
+    }
+    el('path', { d: pathOf(pts, s), stroke: '#6a3d9a', 'stroke-width': hi > lo ? 5 : 2, fill: 'none', opacity: 0.6,
+                 class: 'tilt-arc' }, g);
+  }
+}
+
+function degrees(r) { return `${(r * 180 / Math.PI).toFixed(1)}\u00b0`; }
+
+function drawPlans(a) {
+  const goal = app.selected;
+  const tilt = cached(`tilt ${goal}`, () => a.planTilt(goal));
+  $('tilt').textContent = tilt.intervals.length
+    ? tilt.intervals.map(([lo, hi]) => (lo === hi ? `${degrees(lo)} only` : `[${degrees(lo)}, ${degrees(hi)}]`)).join(', ')
+    : 'no tilt';
+  const centre = app.centre || app.doc.body.com;
+  const comply = cached(`comply centre ${goal} ${centre}`, () => a.planComply(goal, centre, app.view));
+  $('comply').textContent = `(${centre.map((x) => x.toFixed(3)).join(', ')}): ${comply.centre.verdict} (label ${comply.centre.label})`;
+  const pushKey = `push ${goal} ${$('finger-mu').value}`;
+  const push = app.cache[pushKey];
+  app.plans = { tilt, push: push || { cases: [] }, comply };
+  if (push) {
+    if (app.shownPush !== push) drawPushTable(push);
+    app.shownPush = push;
+  } else {
+    schedulePush(pushKey, goal);
+  }
+}
+
+// The push table after the frame, unless the scene or goal changes again first.
+function schedulePush(key, goal) {
+  clearTimeout(app.pushTimer);
+  app.pushTimer = setTimeout(() => {
+    const a = app.analysis;
+    if (!a || !app.cache || app.cache[key]) return;
+    const body = app.doc.body;
+    app.cache[key] = body.polygon && body.polygon.length >= 3 ? a.planPush(goal, { mu: Number($('finger-mu').value) }) : { cases: [] };
+    recompute();
+  }, 0);
+}
+
+function drawPushTable(push) {
+  const body = $('push').querySelector('tbody');
+  body.textContent = '';
+  for (const c of push.cases) {
+    const tr = document.createElement('tr');
+    if (c.verdict === 'feasible' || c.verdict === 'boundary') tr.className = c.verdict;
+    for (const text of [c.feature, c.slip, c.verdict, c.directions ? `${degrees(c.directions[0])} .. ${degrees(c.directions[1])}` : '']) {
+      const td = document.createElement('td');
+      td.textContent = text;
+      tr.appendChild(td);
+    }
+    body.appendChild(tr);
+  }
+  $('push').dataset.goal = push.goal || '';
+}
+
+// --- friction sliders, files, exports --------------------------------------------------------
+
+function buildMuSliders() {
+  const box = $('mus');
+  box.textContent = '';
+  (app.doc.contacts || []).forEach((c, j) => {
+    const row = document.createElement('div');
+    row.className = 'row';
+    const label = document.createElement('label');
+    label.textContent = `contact ${j}${c.name ? ` (${c.name})` : ''} \u03bc`;
+    const input = document.createElement('input');
+    Object.assign(input, { type: 'range', min: 0, max: 1.5, step: 0.05, value: c.mu || 0 });
+    input.id = `mu-${j}`;
+    label.htmlFor = input.id;
+    const value = document.createElement('span');
+    value.textContent = String(c.mu || 0);
+    input.addEventListener('input', () => {
+      c.mu = Number(input.value);
+      if (c.mu_kinetic !== undefined && c.mu_kinetic > c.mu) c.mu_kinetic = c.mu;
+      value.textContent = input.value;
+      recompute();
+    });
+    row.append(label, input, value);
+    box.appendChild(row);
+  });
+}
+
+function loadScene(text, name) {
+  let doc;
+  try {
+    doc = JSON.parse(text);
+  } catch (e) {
+    showError(`${name || 'scene'}: $: ${e.message}`);
+    return false;
+  }
+  let analysis;
+  try {
+    analysis = app.ml.analyze(text);  // the library's own checks, with the CLI's messages
+  } catch (e) {
+    showError(`${name || 'scene'}: ${e.message}`);
+    return false;
+  }
+  // Keep the scene as the library read it (contacts written out, found ones included).
+  app.doc = JSON.parse(analysis.sceneJson());
+  analysis.delete();
+  app.selected = null;
+  app.centre = null;
+  app.view = fitView(app.doc);
+  const com = app.doc.body.com;
+  app.force = { point: com.slice(), vector: [0, -1], moment: 0 };
+  $('moment').value = 0;
+  $('moment-value').textContent = '0';
+  buildMuSliders();
+  return recompute();
+}
+
+function download(name, type, data) {
+  const url = URL.createObjectURL(new Blob([data], { type }));
+  const a = document.createElement('a');
+  a.href = url;
+  a.download = name;
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 1000);
+}
+
+function svgText() {
+  const svg = $('view').cloneNode(true);
+  svg.querySelectorAll('#handles').forEach((h) => h.remove());
+  svg.setAttribute('width', $('view').clientWidth);
+  svg.setAttribute('height', $('view').clientHeight);
+  return new XMLSerializer().serializeToString(svg);
+}
+
+function exportPng() {
+  const img = new Image();
+  const w = $('view').clientWidth, h = $('view').clientHeight;
+  img.onload = () => {
+    const canvas = document.createElement('canvas');
+    canvas.width = w * 2;
+    canvas.height = h * 2;
+    const ctx = canvas.getContext('2d');
+    ctx.fillStyle = '#fff';
+    ctx.fillRect(0, 0, canvas.width, canvas.height);
+    ctx.drawImage(img, 0, 0, canvas.width, canvas.height);
+    canvas.toBlob((blob) => download('momentlab.png', 'image/png', blob));
+  };
+  img.src = `data:image/svg+xml;charset=utf-8,${encodeURIComponent(svgText())}`;
+}
+
+// --- start -----------------------------------------------------------------------------------
+
+function start(ml) {
+  app.ml = ml;
+  const select = $('examples');
+  for (const name of Object.keys(MOMENTLAB_EXAMPLES)) {
+    const o = document.createElement('option');
+    o.value = o.textContent = name;
+    select.appendChild(o);
+  }
+  select.value = 'figure-3-block-along-wall';
+  select.addEventListener('change', () => loadScene(JSON.stringify(MOMENTLAB_EXAMPLES[select.value]), select.value));
+  $('open').addEventListener('change', async (ev) => {
+    const file = ev.target.files[0];
+    if (file) loadScene(await file.text(), file.name);
+  });
+  $('save').addEventListener('click', () => download('scene.json', 'application/json', JSON.stringify(app.doc, null, 1)));
+  $('export-svg').addEventListener('click', () => download('momentlab.svg', 'image/svg+xml', svgText()));
+  $('export-png').addEventListener('click', exportPng);
+  $('show').addEventListener('change', recompute);
+  $('moment').addEventListener('input', () => {
+    app.force.moment = Number($('moment').value);
+    $('moment-value').textContent = $('moment').value;
+    recompute();
+  });
+  $('finger-mu').addEventListener('input', () => { $('finger-mu-value').textContent = $('finger-mu').value; recompute(); });
+  const svg = $('view');
+  svg.addEventListener('pointermove', (ev) => {
+    if (!app.dragging) return;
+    const r = svg.getBoundingClientRect();
+    app.dragging.onMove(screen().world(ev.clientX - r.left, ev.clientY - r.top));
+    recompute();
+  });
+  const stop = () => { app.dragging = null; };
+  svg.addEventListener('pointerup', stop);
+  svg.addEventListener('pointercancel', stop);
+  svg.addEventListener('click', (ev) => {
+    if (!ev.shiftKey) return;
+    const r = svg.getBoundingClientRect();
+    app.centre = screen().world(ev.clientX - r.left, ev.clientY - r.top);
+    recompute();
+  });
+  window.addEventListener('resize', () => app.analysis && recompute());
+  app.wrench = wrench;
+  app.screen = screen;
+  app.loadScene = loadScene;
+  app.recompute = recompute;
+  loadScene(JSON.stringify(MOMENTLAB_EXAMPLES['figure-3-block-along-wall']), 'figure-3-block-along-wall');
+  app.ready = true;
+}
+
+window.addEventListener('error', (ev) => showError(ev.message));
+momentlabModule().then(start, (e) => showError(`momentlab could not start: ${e.message || e}`));
