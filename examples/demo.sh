@@ -28,6 +28,13 @@ show "A rod wedged in a corner (mu = 2): every mode" analyze "$here/rod-in-corne
 show "... a wrench that can both jam it (ff) and throw it off (ss): Painleve-style ambiguity" query "$here/rod-in-corner.json" --wrench 19 16 -2
 show "A wheel held at (5, 0), (3, 4), (-3, -4) by normals through its centre, written with length 5: exact, so no sss (contacts 2 and 3 face each other)" modes "$here/downstream/wheel.json"
 show "... turned by a clockwise torque: it rolls (lll) or lifts off contact 1 (sll)" query "$here/downstream/wheel.json" --wrench 0 0 -1
+show "Quasi-static (inertia neglected, E = -T): a push along the floor with no load is held by nothing (inconsistent); dynamically it slides" query "$here/figure-3-block-along-wall.json" --wrench 1 0 -0.25 --quasi-static
+show "... pressed down and pushed at exactly mu: held at rest or sliding right" query "$here/figure-3-block-along-wall.json" --wrench 0.5 -1 -0.625 --quasi-static
+
+# Grasp closure (Modern Robotics, ch. 12): do the contacts resist every wrench?
+show "Four frictionless contacts at a square's side midpoints: a torque about the centre is unresisted" closure "$here/closure-four-midpoints.json"
+show "Five contacts: form closure" closure "$here/closure-five-contacts.json"
+show "Two frictional fingers nearly opposite: force closure, not form closure" closure "$here/closure-antipodal-fingers.json"
 
 # Planning (the paper's section 3): reaching the goal rr (slide along the wall, no turning).
 show "Tilting the block along the wall: which gravity directions slide it right (rr)" plan tilt "$here/figure-3-block-along-wall.json" --goal rr
@@ -80,5 +87,9 @@ figure push-vertex "Pushing the outboard trailing vertex, finger stuck (goal rr)
 figure comply "A compliance centre at (0, 0.5) (goal rr)" \
     plan comply "$here/figure-3-block-along-wall.json" --goal rr --centre 0 0.5
 figure rod-in-corner-modes "A rod in a corner: every contact mode" draw "$here/rod-in-corner.json" --what modes
+figure closure-four-midpoints "Four midpoints: the + and - regions say which turns nothing resists" \
+    draw "$here/closure-four-midpoints.json" --what closure
+figure closure-antipodal-fingers "Two fingers: no labels for the friction cones, force closure" \
+    draw "$here/closure-antipodal-fingers.json" --what closure
 echo "   pictures written to $out/:"
 ls "$out" | sed 's/^/     /'

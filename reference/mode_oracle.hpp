@@ -46,4 +46,15 @@ inline bool exact_lp_applied_in_mode(const Scene& scene, const std::string& lett
     return exact_lp_applied_in_mode(scene, letters, reference::q(e));
 }
 
+/// The same LP with the inertia terms removed (the quasi-static model): e = -c, c in T of the
+/// mode, the mode's twists only required to exist (the LP's twist constraints stay, with a zero
+/// inertia matrix). No body is read.
+inline bool exact_lp_quasi_static_in_mode(const Scene& scene, const std::string& letters, const reference::QVec& e) {
+    const ExactContacts c(scene.contacts);
+    std::vector<std::vector<reference::QVec>> generators;
+    for (std::size_t j = 0; j < scene.contacts.size(); ++j) generators.push_back(c.raw[j].generators(letters[j]));
+    const reference::QVec zero{0, 0, 0};
+    return oracle::applied_in_mode(reference::QMat{zero, zero, zero}, c.n, c.t, generators, letters, e);
+}
+
 }  // namespace momentlab::testing

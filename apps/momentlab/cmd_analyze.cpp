@@ -13,10 +13,11 @@ namespace {
 struct AnalyzeOptions {
     std::string file;
     bool json = false;
+    bool quasi_static = false;
 };
 
 int run(const AnalyzeOptions& o) {
-    const Problem p = load_problem(o.file, "analyze");
+    const Problem p = load_problem(o.file, "analyze", o.quasi_static);
     if (o.json) {
         nlohmann::json modes = nlohmann::json::array();
         for (const ModeForces& m : p.analysis) {
@@ -32,7 +33,7 @@ int run(const AnalyzeOptions& o) {
     }
     // The whole answer first: a value that cannot be printed stops it before any of it is.
     std::ostringstream out;
-    out << p.analysis.size() << " contact modes\n";
+    out << p.analysis.size() << " contact modes" << (o.quasi_static ? " (quasi-static: E = -T, inertia neglected)" : "") << "\n";
     for (const ModeForces& m : p.analysis) {
         const Labels centres = rotation_centres(m.mode);
         const Labels applied(m.applied);
@@ -51,8 +52,9 @@ int run(const AnalyzeOptions& o) {
 
 std::function<int()> add_analyze_command(CLI::App& app) {
     auto opts = std::make_shared<AnalyzeOptions>();
-    add_scene_command(app, opts, "analyze", "Every mode with its twists, total, contact and applied wrenches",
-                      "machine-readable output");
+    CLI::App* cmd = add_scene_command(app, opts, "analyze", "Every mode with its twists, total, contact and applied wrenches",
+                                      "machine-readable output");
+    cmd->add_flag("--quasi-static", opts->quasi_static, "neglect inertia: the applied wrench balances the contact wrench, E = -T (docs/design.md)");
     return [opts] { return run(*opts); };
 }
 

@@ -13,6 +13,7 @@ struct DrawOptions {
     std::vector<std::string> modes;
     std::string what;
     PictureOptions picture;
+    bool quasi_static = false;
 };
 
 int run(const DrawOptions& o) {
@@ -28,6 +29,11 @@ int run(const DrawOptions& o) {
         write_picture(render::modes_figure(title.empty() ? name + ": contact modes" : title, scene, view), o.picture);
         return 0;
     }
+    if (what == "closure") {
+        const Scene scene = read_scene_file(o.file);
+        write_picture(render::closure_figure(title.empty() ? name + ": grasp closure" : title, scene, view), o.picture);
+        return 0;
+    }
     if (what == "labels") {
         const Scene scene = read_scene_file(o.file);
         write_picture(render::friction_figure(title.empty() ? name + ": the contacts' friction cones and their sum" : title,
@@ -35,7 +41,7 @@ int run(const DrawOptions& o) {
                       o.picture);
         return 0;
     }
-    const Problem p = load_problem(o.file, "--what forces");
+    const Problem p = load_problem(o.file, "--what forces", o.quasi_static);
     std::vector<std::size_t> chosen;
     for (const std::string& letters : o.modes) {
         chosen.push_back(static_cast<std::size_t>(&find_mode(p.analysis, letters, "--mode") - p.analysis.data()));
@@ -61,9 +67,10 @@ std::function<int()> add_draw_command(CLI::App& app) {
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     cmd->add_option("--what", opts->what,
                     "modes: rotation centres of every mode; forces: F, T, E per mode (default with --mode); "
-                    "labels: the contacts' friction cones and their sum")
-        ->check(CLI::IsMember({"modes", "forces", "labels"}));
+                    "labels: the contacts' friction cones and their sum; closure: the labels that decide grasp closure")
+        ->check(CLI::IsMember({"modes", "forces", "labels", "closure"}));
     add_picture_options(cmd, opts->picture, true);
+    cmd->add_flag("--quasi-static", opts->quasi_static, "neglect inertia: the applied wrench balances the contact wrench, E = -T (docs/design.md)");
     return [opts] { return run(*opts); };
 }
 

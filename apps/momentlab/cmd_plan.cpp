@@ -26,6 +26,7 @@ struct PlanOptions {
     std::string slip;
     bool ignore_interference = false;
     std::vector<double> centre;
+    bool quasi_static = false;
 };
 
 // The intervals, a single direction said as such; the best direction and its margin only when
@@ -55,7 +56,7 @@ bool single_directions(const DirectionPlan& plan) {
 
 int run_tilt(const PlanOptions& o) {
     const std::optional<Box> view = checked_picture_options(o.picture, {o.file});
-    const Problem p = load_problem(o.file, "plan tilt");
+    const Problem p = load_problem(o.file, "plan tilt", o.quasi_static);
     const Scene& scene = p.scene;
     const ModeForces& goal = find_mode(p.analysis, o.goal, "--goal");
     const DirectionPlan plan = plan_tilt(scene, goal);
@@ -84,7 +85,7 @@ int run_comply(const PlanOptions& o) {
     const std::optional<Box> view = checked_picture_options(o.picture, {o.file});
     const std::vector<Vec2> centre = o.centre.empty() ? std::vector<Vec2>{} : checked_points(o.centre, "--centre", 1);
     if (!o.picture.files.empty() && centre.empty()) throw InputError("-o", "a picture shows one centre: give --centre X Y");
-    const Problem p = load_problem(o.file, "plan comply");
+    const Problem p = load_problem(o.file, "plan comply", o.quasi_static);
     const Scene& scene = p.scene;
     const ModeForces& goal = find_mode(p.analysis, o.goal, "--goal");
     const Labels region = compliance_labels(goal);
@@ -151,7 +152,7 @@ int run_push(const PlanOptions& o) {
     if (n < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
     if (o.edge && *o.edge >= n) throw InputError("--edge", "the body has edges 0 .. " + std::to_string(n - 1));
     if (o.vertex && *o.vertex >= n) throw InputError("--vertex", "the body has vertices 0 .. " + std::to_string(n - 1));
-    const std::vector<ModeForces> analysis = analyze(scene);
+    const std::vector<ModeForces> analysis = analyze(scene, AnalysisOptions{o.quasi_static});
     const ModeForces& goal = find_mode(analysis, o.goal, "--goal");
     const PushOptions options{o.mu, o.ignore_interference};
     std::vector<PushCase> cases;
@@ -221,6 +222,7 @@ std::function<int()> add_plan_command(CLI::App& app) {
     comply->add_option("--centre", opts->centre, "the compliance centre X Y")->expected(2, 2)->transform(number_check());
     comply->add_flag("--json", opts->json, "machine-readable output: {\"labels\": ..., \"centre\": {\"intervals\": ...}}");
     add_picture_options(comply, opts->picture, false);
+    for (CLI::App* cmd : {tilt, push, comply}) cmd->add_flag("--quasi-static", opts->quasi_static, "neglect inertia: the applied wrench balances the contact wrench, E = -T (docs/design.md)");
     return [opts, tilt, push, comply] {
         if (tilt->parsed()) return run_tilt(*opts);
         if (push->parsed()) return run_push(*opts);

@@ -13,6 +13,7 @@ struct QueryOptions {
     std::vector<double> wrench;
     std::string wrenches;
     bool json = false;
+    bool quasi_static = false;
 };
 
 nlohmann::json answer_json(const std::vector<ModeForces>& a, const QueryResult& r) {
@@ -54,7 +55,7 @@ int run(const QueryOptions& o) {
     if (o.wrenches.empty() && o.wrench.size() != 3) {
         throw InputError("--wrench", "expected three numbers FX FY TAU (or --wrenches FILE)");
     }
-    const Problem p = load_problem(o.file, "query");
+    const Problem p = load_problem(o.file, "query", o.quasi_static);
     if (!o.wrenches.empty()) {
         answer_file(p, o.wrenches);
         return 0;
@@ -88,6 +89,7 @@ std::function<int()> add_query_command(CLI::App& app) {
                          "FILE"));
     one->excludes(many);
     cmd->add_flag("--json", opts->json, "machine-readable output");
+    cmd->add_flag("--quasi-static", opts->quasi_static, "neglect inertia: the applied wrench balances the contact wrench, E = -T (docs/design.md)");
     return [opts] { return run(*opts); };
 }
 

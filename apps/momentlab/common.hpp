@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "momentlab/momentlab.hpp"
+#include "momentlab/io/files.hpp"
 
 namespace momentlab::cli {
 
@@ -23,44 +24,12 @@ std::function<int()> add_query_command(CLI::App& app);
 std::function<int()> add_analyze_command(CLI::App& app);
 std::function<int()> add_draw_command(CLI::App& app);
 std::function<int()> add_plan_command(CLI::App& app);
+std::function<int()> add_closure_command(CLI::App& app);
 
 // ---------------------------------------------------------------------------------------------
 // Input files.
 
-/// The largest input file read (scene, force set, wrench file): 1 GiB.
-inline constexpr std::size_t kMaxInputBytes = std::size_t{1} << 30;
-/// The longest line of a wrench file: 1 MiB.
-inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
-
-/// The whole of a JSON file. Throws InputError at `where` ("$" for the file argument) for a
-/// missing file, a directory, a read error, a file over kMaxInputBytes, or one that cannot be
-/// JSON text: a first non-blank byte other than { or [, or a control byte other than a blank
-/// (checked as the bytes arrive: /dev/zero and /dev/urandom fail in the first read).
-std::string read_json_file(const std::string& path, const std::string& where = "$");
-
-/// A text file read line by line with POSIX reads: every read error is reported, a directory
-/// is refused when opened, and a line longer than kMaxLineBytes is an error (a device that
-/// never ends fails within a megabyte).
-class LineReader {
-public:
-    /// Throws InputError at `option` when the file cannot be opened or is a directory.
-    LineReader(const std::string& path, std::string option);
-    ~LineReader();
-    LineReader(const LineReader&) = delete;
-    LineReader& operator=(const LineReader&) = delete;
-    /// The next line (without its newline), false at the end of the file.
-    bool next(std::string& line);
-    /// The number of the line last returned (1-based).
-    [[nodiscard]] std::size_t number() const { return number_; }
-
-private:
-    std::string path_, option_;
-    int fd_ = -1;
-    std::string buffer_;
-    std::size_t start_ = 0;
-    std::size_t number_ = 0;
-    bool eof_ = false;
-};
+// read_json_file and LineReader: io/files.hpp.
 
 /// A scene file, read and checked; warnings (unknown fields) go to stderr, one line each.
 Scene read_scene_file(const std::string& path);
@@ -71,7 +40,9 @@ struct Problem {
     Scene scene;
     std::vector<ModeForces> analysis;
 };
-Problem load_problem(const std::string& path, const std::string& command);
+/// The scene of `path` and its analysis; the body is required unless quasi-static (`command`
+/// names what needs it in the message).
+Problem load_problem(const std::string& path, const std::string& command, bool quasi_static = false);
 
 /// The mode with these letters; an unknown mode is an InputError at `option` that lists the
 /// scene's modes.

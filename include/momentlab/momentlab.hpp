@@ -17,6 +17,8 @@
 ///   5. Questions: `query(analysis, e)` gives the modes an applied wrench e produces (`.modes`,
 ///      `.verdict`: unique, ambiguous, inconsistent); `QueryIndex` (mechanics/query_index.hpp)
 ///      answers millions of them.
+///   5b. Grasp closure: `closure` (mechanics/closure.hpp): form and force closure, exactly, with
+///      a certificate either way.
 ///   6. Plans (planning/): `plan_tilt`, `plan_push`, `plan_comply`: the actions W whose
 ///      W ∩ E_goal reaches a goal mode (Mason 1991, section 3).
 ///   7. Pictures (render/): figures of labels, modes and plans as SVG, PDF or PNG.
@@ -36,11 +38,13 @@
 #include "momentlab/geometry/force_sets.hpp"
 #include "momentlab/geometry/labels.hpp"
 #include "momentlab/geometry/polygon.hpp"
+#include "momentlab/io/files.hpp"
 #include "momentlab/io/force_set_json.hpp"
 #include "momentlab/io/input_error.hpp"
 #include "momentlab/io/json_output.hpp"
 #include "momentlab/io/scene_json.hpp"
 #include "momentlab/mechanics/analysis.hpp"
+#include "momentlab/mechanics/closure.hpp"
 #include "momentlab/mechanics/query_index.hpp"
 #include "momentlab/mechanics/find_contacts.hpp"
 #include "momentlab/mechanics/modes.hpp"

@@ -9,7 +9,7 @@ Every decision is exact for the numbers given; only printed values are rounded.
     >>> a = ml.analyze(ml.Scene.from_file("examples/figure-3-block-along-wall.json"))
     >>> a.modes
     ['ff', 'ss', 'fs', 'rs', 'ls', 'sf', 'sr', 'sl', 'rr', 'll']
-    >>> a.query([1.0, -2.0, -0.5])
+    >>> a.query([1.0, -1.0, -0.75])
     ['rr']
 
 Wrenches are (fx, fy, tau) with tau about the world origin; contact normals point into the
@@ -20,6 +20,7 @@ command line prints ("$.contacts[0].mu: ..."). The reference is docs/python.md.
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 from typing import Any, Iterable, Optional, Sequence
 
@@ -33,15 +34,13 @@ from ._momentlab import (
     force,
     force_set_from_json,
     forces_through_point,
-    friction_cone,
     line_of_force,
-    pure_moments,
 )
 from . import _momentlab
 
 __all__ = [
     "Analysis", "Body", "Cone", "Contact", "Labels", "ModeSets", "Region", "Scene",
-    "analyze", "contacts", "find_contacts", "force", "force_set_from_json", "forces_through_point",
+    "analyze", "closure", "contacts", "find_contacts", "force", "force_set_from_json", "forces_through_point",
     "friction_cone", "labels", "line_of_force", "plan_comply", "plan_push", "plan_tilt",
     "pure_moments",
 ]
@@ -96,8 +95,8 @@ class Contact:
 def contacts(points, normals, mu=0.0, mu_kinetic=None, names=None) -> list:
     """Contacts from arrays: points and normals of shape (n, 2), mu and mu_kinetic scalars or
     of shape (n,)."""
-    p = np.asarray(points, dtype=np.float64)
-    n = np.asarray(normals, dtype=np.float64)
+    p = _real(points, "points")
+    n = _real(normals, "normals")
     if p.ndim != 2 or p.shape[1] != 2:
         raise ValueError(f"points: expected an array of shape (n, 2), got shape {p.shape}")
     if n.shape != p.shape:
@@ -107,7 +106,7 @@ def contacts(points, normals, mu=0.0, mu_kinetic=None, names=None) -> list:
     def per_contact(value, what):
         if value is None:
             return [None] * count
-        v = np.asarray(value, dtype=np.float64)
+        v = _real(value, what)
         if v.ndim == 0:
             return [float(v)] * count
         if v.shape != (count,):
@@ -122,10 +121,38 @@ def contacts(points, normals, mu=0.0, mu_kinetic=None, names=None) -> list:
     return [Contact(p[i].tolist(), n[i].tolist(), mus[i], kinetic[i], str(labels_[i])) for i in range(count)]
 
 
+def _real(value, what) -> np.ndarray:
+    """Real numbers as float64: strings, complex numbers, objects and masked arrays are refused
+    (ValueError naming `what`), as are long doubles that would underflow to 0."""
+    if np.ma.isMaskedArray(value):
+        raise ValueError(f"{what}: a masked array is not read (fill it first)")
+    try:
+        raw = np.asarray(value)
+    except ValueError as e:  # ragged nesting
+        raise ValueError(f"{what}: expected numbers: {e}") from None
+    if raw.dtype.kind not in "biuf":
+        raise ValueError(f"{what}: expected real numbers, got an array of dtype {raw.dtype}")
+    a = np.asarray(raw, dtype=np.float64)
+    if a.ndim:
+        a = np.ascontiguousarray(a)
+    if raw.dtype.kind == "f" and raw.dtype.itemsize > 8 and np.any((a == 0) & (raw != 0)):
+        raise ValueError(f"{what}: a number is too small for a double: it would be taken as 0")
+    return a
+
+
 def _contact_doc(c) -> dict:
     if isinstance(c, Contact):
         return c._doc()
     return c  # a dict in the file format; the reader checks it
+
+
+def _sequence(value, what) -> list:
+    if isinstance(value, (str, bytes, dict)):
+        raise ValueError(f"{what}: expected a list")
+    try:
+        return list(value)
+    except TypeError:
+        raise ValueError(f"{what}: expected a list") from None
 
 
 class Scene:
@@ -145,8 +172,9 @@ class Scene:
         if body is not None:
             doc["body"] = body._doc() if isinstance(body, Body) else body
         if contacts is not None:
-            doc["contacts"] = [_contact_doc(c) for c in contacts]
-        if obstacles is not None and len(obstacles):
+            doc["contacts"] = [_contact_doc(c) for c in _sequence(contacts, "contacts")]
+        obstacles = _sequence(obstacles, "obstacles") if obstacles is not None else []
+        if len(obstacles):
             doc["obstacles"] = [o if isinstance(o, dict) else {"polygon": o} for o in obstacles]
         if contact_distance is not None:
             doc["contact_distance"] = contact_distance
@@ -163,9 +191,9 @@ class Scene:
 
     @classmethod
     def from_file(cls, path) -> "Scene":
-        """The scene of a JSON file."""
-        with open(path, encoding="utf-8") as f:
-            return cls.from_json(f.read())
+        """The scene of a JSON file, read as the CLI reads it (the same checks and messages:
+        a missing file, a directory, a device or a binary file is a ValueError at "$")."""
+        return cls(_scene=_momentlab._Scene.from_file(os.fsdecode(os.fspath(path))))
 
     def to_json(self) -> str:
         """The scene in the file format (contacts written out); from_json gives it back."""
@@ -228,15 +256,24 @@ class Analysis:
     .rotation_centres()).
     """
 
-    def __init__(self, scene: Scene):
+    def __init__(self, scene: Scene, quasi_static: bool = False):
         if not isinstance(scene, Scene):
             raise ValueError("analyze: expected a momentlab.Scene")
-        self._analysis = _momentlab._Analysis(scene._scene)
+        self._analysis = _momentlab._Analysis(scene._scene, bool(quasi_static))
+        self.quasi_static = bool(quasi_static)
         self.scene = scene
-        self.modes = list(self._analysis.modes)
+        self._modes = tuple(self._analysis.modes)
+
+    @property
+    def modes(self) -> list:
+        """The mode strings, the all-f mode first (a new list each time)."""
+        return list(self._modes)
+
+    def __contains__(self, letters) -> bool:
+        return letters in self._modes
 
     def __len__(self) -> int:
-        return len(self.modes)
+        return len(self._modes)
 
     def __getitem__(self, key) -> ModeSets:
         if isinstance(key, str):
@@ -278,13 +315,7 @@ class Analysis:
 
 
 def _wrenches(w) -> np.ndarray:
-    try:
-        raw = np.asarray(w)
-    except ValueError as e:  # ragged nesting
-        raise ValueError(f"wrench: expected numbers (fx, fy, tau): {e}") from None
-    if raw.dtype.kind not in "biuf":
-        raise ValueError(f"wrench: expected real numbers, got an array of dtype {raw.dtype}")
-    a = np.ascontiguousarray(raw, dtype=np.float64)
+    a = _real(w, "wrench")
     if not (a.shape == (3,) or (a.ndim == 2 and a.shape[1] == 3)):
         raise ValueError(f"wrench: expected shape (3,) or (N, 3), got shape {a.shape}")
     bad = np.flatnonzero(~np.isfinite(a.reshape(-1, 3)).all(axis=1))
@@ -293,9 +324,32 @@ def _wrenches(w) -> np.ndarray:
     return a
 
 
-def analyze(scene: Scene) -> Analysis:
-    """Every mode of the scene with its sets; the scene needs a body (mass, com, inertia)."""
-    return Analysis(scene)
+def analyze(scene: Scene, quasi_static: bool = False) -> Analysis:
+    """Every mode of the scene with its sets; the scene needs a body (mass, com, inertia).
+    quasi_static=True neglects inertia: E_i = -T_i (the applied wrench balances the contact
+    wrench), and no body is needed."""
+    return Analysis(scene, quasi_static)
+
+
+def closure(scene: Scene, reference=None, length=None) -> dict:
+    """Grasp closure of the scene's contacts, decided exactly (the body is optional):
+    {'form_closure', 'force_closure', 'form': {'holds', 'quality' | 'unresisted_wrench'},
+    'force': {...}, 'reference', 'length', 'metric'} (docs/design.md, Closure)."""
+    if not isinstance(scene, Scene):
+        raise ValueError("closure: expected a momentlab.Scene")
+    return _momentlab.closure(scene._scene, reference, None if length is None else _number(length, "length"))
+
+
+def friction_cone(point, normal, mu) -> Cone:
+    """The Coulomb cone of a contact (Figure 1c): forces n + s t, |s| <= mu, at the point."""
+    return _momentlab.friction_cone(point, normal, _number(mu, "mu"))
+
+
+def pure_moments(sign: int) -> Cone:
+    """Pure moments: positive (sign 1), negative (-1) or both (0)."""
+    if sign not in (-1, 0, 1) or isinstance(sign, bool):
+        raise ValueError(f"sign: expected -1, 0 or 1, got {sign!r}")
+    return _momentlab.pure_moments(int(sign))
 
 
 def labels(forces) -> Labels:
@@ -305,6 +359,18 @@ def labels(forces) -> Labels:
     if not isinstance(forces, Cone):
         raise ValueError("labels: expected a momentlab.Cone or the JSON text of a force set")
     return Labels(forces)
+
+
+def _goal(goal) -> str:
+    if not isinstance(goal, str):
+        raise ValueError(f"goal: expected a mode string such as 'rr', got {type(goal).__name__}")
+    return goal
+
+
+def _number(x, what) -> float:
+    if isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, float, np.integer, np.floating)):
+        raise ValueError(f"{what}: expected a number, got {type(x).__name__}")
+    return float(x)
 
 
 def _analysis_of(what) -> Analysis:
@@ -318,16 +384,16 @@ def _analysis_of(what) -> Analysis:
 def plan_tilt(scene, goal: str) -> dict:
     """The tilts (gravity directions, radians from +x) that produce mode `goal`:
     {'goal', 'intervals': [[from, to], ...], 'best', 'margin'} (best and margin when feasible)."""
-    return _analysis_of(scene)._analysis.plan_tilt(goal)
+    return _analysis_of(scene)._analysis.plan_tilt(_goal(goal))
 
 
 def plan_push(scene, goal: str, mu: float = 0.5, ignore_interference: bool = False) -> list:
     """The pushing table for mode `goal`: one dict per feature (edge, vertex) and finger slip
     (l, f, r) with 'verdict', 'feasible', 'touch', 'directions' and 'best' (docs/planning.md)."""
-    return _analysis_of(scene)._analysis.plan_push(goal, float(mu), bool(ignore_interference))
+    return _analysis_of(scene)._analysis.plan_push(_goal(goal), _number(mu, "mu"), bool(ignore_interference))
 
 
 def plan_comply(scene, goal: str, centre=None) -> dict:
     """Compliance: {'goal', 'labels': the Labels of E_goal (centres outside both regions work),
     'centre': {'point', 'label', 'verdict', 'intervals', 'best', 'margin'}} for a given centre."""
-    return _analysis_of(scene)._analysis.plan_comply(goal, centre)
+    return _analysis_of(scene)._analysis.plan_comply(_goal(goal), centre)

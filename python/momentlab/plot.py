@@ -2,9 +2,11 @@
 (docs/pictures.md): + regions orange, - regions blue, the +- set purple, forces as dark
 arrows with their dashed lines of action, friction cones green, obstacles grey.
 
-Every function draws onto the `ax` it is given and returns it, so a notebook composes the
-pictures with its own plots. Regions are cut to the view for drawing only; every label a
-program decides is exact (Labels.at).
+Every function draws onto the `ax` it is given, so a notebook composes the pictures with its
+own plots; it returns the Axes (`push` and `comply` the plan they drew, `region` the polygon).
+Functions that take an analysis also take a Scene. Regions are cut to the view for drawing
+only; every label a program decides is exact (Labels.at). Unlike the CLI's pictures, regions
+that go on beyond the view get no arrow.
 
     import matplotlib.pyplot as plt
     import momentlab as ml, momentlab.plot as mp
@@ -170,6 +172,7 @@ def scene(ax, sc: Scene, view=None, faint=False):
 def mode_sets(axes, analysis: Analysis, mode: str, view=None):
     """Three panels: F (total), T (contact) and E (applied) wrenches of one mode, over the scene
     (the paper's Figures 3 and 4)."""
+    analysis = figure_for(analysis)
     sets = analysis[mode]
     box = scene_view(analysis.scene) if view is None else tuple(view)
     com = analysis.scene.body["com"]
@@ -183,6 +186,7 @@ def modes(ax, analysis: Analysis, view=None):
     """Every mode's rotation centres (Reuleaux): counter-clockwise centres (the + region) and
     clockwise ones (the - region) in the mode's colour; the contact normals and tangents as
     dashed guides; modes without a finite centre (translations, or at rest) in the legend."""
+    analysis = figure_for(analysis)
     sc = analysis.scene
     box = scene_view(sc) if view is None else tuple(view)
     size = max(box[2] - box[0], box[3] - box[1])
@@ -220,6 +224,7 @@ def _arc(ax, centre, start, end, radius, colour, lw=6, alpha=0.6):
 def tilt(ax, analysis: Analysis, goal: str, view=None):
     """The paper's Figure 5: E_goal's labels over the scene and, at the centre of mass, the arcs
     of gravity directions that produce the goal (with the best one as an arrow)."""
+    analysis = figure_for(analysis)
     plan = plan_tilt(analysis, goal)
     box = scene_view(analysis.scene) if view is None else tuple(view)
     size = max(box[2] - box[0], box[3] - box[1])
@@ -238,6 +243,7 @@ def tilt(ax, analysis: Analysis, goal: str, view=None):
 def push(ax, analysis: Analysis, goal: str, mu: float = 0.5, ignore_interference: bool = False, view=None):
     """The pushing table on the body: where a feasible push may touch (green), with its best
     push as an arrow; boundary cases dotted."""
+    analysis = figure_for(analysis)
     cases = plan_push(analysis, goal, mu, ignore_interference)
     box = scene_view(analysis.scene) if view is None else tuple(view)
     size = max(box[2] - box[0], box[3] - box[1])
@@ -261,6 +267,7 @@ def push(ax, analysis: Analysis, goal: str, mu: float = 0.5, ignore_interference
 def comply(ax, analysis: Analysis, goal: str, centre=None, view=None):
     """Compliance centres: E_goal's labels (centres outside both regions work) and, for a given
     centre, the arcs of spring directions through it."""
+    analysis = figure_for(analysis)
     plan = plan_comply(analysis, goal, centre)
     box = scene_view(analysis.scene) if view is None else tuple(view)
     size = max(box[2] - box[0], box[3] - box[1])

@@ -32,77 +32,102 @@ Array rows(const std::vector<V>& vs) {
     auto a = out.mutable_unchecked<2>();
     for (std::size_t i = 0; i < vs.size(); ++i) {
         for (int k = 0; k < K; ++k) {
+            // A value beyond a double is refused as the CLI refuses to print it (never inf).
             if constexpr (std::is_same_v<V, ExactVector>) {
-                a(static_cast<py::ssize_t>(i), k) = vs[i].value()(k);
+                a(static_cast<py::ssize_t>(i), k) = output_value(vs[i].value()(k));
             } else {
-                a(static_cast<py::ssize_t>(i), k) = vs[i](k);
+                a(static_cast<py::ssize_t>(i), k) = output_value(vs[i](k));
             }
         }
     }
     return out;
 }
 
+// Real numbers as float64, as the CLI reads them: other dtypes (strings, complex, objects) and
+// masked arrays are refused, and a long double that would underflow to 0 is refused as in files.
+Array real_array(const py::handle& value, const std::string& what) {
+    const py::module_ np = py::module_::import("numpy");
+    if (np.attr("ma").attr("isMaskedArray")(value).cast<bool>()) {
+        throw InputError(what, "a masked array is not read (fill it first)");
+    }
+    py::array raw;
+    try {
+        raw = np.attr("asarray")(value);
+    } catch (const py::error_already_set&) {
+        throw InputError(what, "expected numbers");
+    }
+    const char kind = raw.dtype().kind();
+    if (kind != 'b' && kind != 'i' && kind != 'u' && kind != 'f') {
+        throw InputError(what, "expected real numbers, not an array of dtype " + py::str(raw.dtype()).cast<std::string>());
+    }
+    Array a = Array::ensure(raw);
+    if (kind == 'f' && raw.dtype().itemsize() > 8) {
+        const py::object tiny = np.attr("logical_and")(np.attr("equal")(a, 0.0), np.attr("not_equal")(raw, 0));
+        if (np.attr("any")(tiny).cast<bool>()) throw InputError(what, "a number is too small for a double: it would be taken as 0");
+    }
+    return a;
+}
+
+// Every coordinate within the CLI's range for numbers (0, or magnitudes 1e-60 .. 1e60).
+template <class V>
+void check_magnitude(const V& v, const std::string& what) {
+    if (!v.allFinite()) throw InputError(what, "expected finite numbers");
+    for (Eigen::Index k = 0; k < v.size(); ++k) {
+        if (!magnitude_in_range(std::fabs(v(k)))) {
+            throw InputError(what, "out of range: each number must be 0 or of magnitude 1e-60 .. 1e60");
+        }
+    }
+}
+
+// A number in the CLI's range; `what` names it in errors.
+double number_of(double x, const std::string& what) {
+    if (!std::isfinite(x) || !magnitude_in_range(std::fabs(x))) {
+        throw InputError(what, "expected a finite number, 0 or of magnitude 1e-60 .. 1e60");
+    }
+    return x;
+}
+
 // A finite vector of K coordinates from anything numpy reads as one; `what` names it in errors.
 template <int K>
 Eigen::Matrix<double, K, 1> vector_of(const py::handle& value, const char* what) {
-    Array a;
-    try {
-        a = Array::ensure(value);
-    } catch (const py::error_already_set&) {
-        a = Array();
-    }
-    if (!a || a.ndim() != 1 || a.shape(0) != K) {
-        throw InputError(what, "expected " + std::to_string(K) + " numbers");
-    }
+    const Array a = real_array(value, what);
+    if (a.ndim() != 1 || a.shape(0) != K) throw InputError(what, "expected " + std::to_string(K) + " numbers");
     Eigen::Matrix<double, K, 1> v;
-    for (int k = 0; k < K; ++k) {
-        v(k) = a.at(k);
-        if (!std::isfinite(v(k))) throw InputError(what, "expected finite numbers");
-    }
+    for (int k = 0; k < K; ++k) v(k) = a.at(k);
+    check_magnitude(v, what);
     return v;
 }
 
 // An (n, 3) array of finite wrenches or normals; `what` names it in errors.
 std::vector<Vec3> vectors3_of(const py::handle& value, const char* what) {
-    Array a;
-    try {
-        a = Array::ensure(value);
-    } catch (const py::error_already_set&) {
-        a = Array();
-    }
-    if (!a || a.ndim() != 2 || a.shape(1) != 3) throw InputError(what, "expected an array of shape (n, 3)");
+    const Array a = real_array(value, what);
+    if (a.ndim() != 2 || a.shape(1) != 3) throw InputError(what, "expected an array of shape (n, 3)");
     std::vector<Vec3> out(static_cast<std::size_t>(a.shape(0)));
     auto r = a.unchecked<2>();
     for (py::ssize_t i = 0; i < a.shape(0); ++i) {
         out[static_cast<std::size_t>(i)] = Vec3(r(i, 0), r(i, 1), r(i, 2));
-        if (!out[static_cast<std::size_t>(i)].allFinite()) {
-            throw InputError(std::string(what) + "[" + std::to_string(i) + "]", "expected finite numbers");
-        }
+        check_magnitude(out[static_cast<std::size_t>(i)], std::string(what) + "[" + std::to_string(i) + "]");
     }
     return out;
 }
 
 // A polygon: an (n, 2) array of finite vertices (find_contacts checks that it is simple).
 Polygon polygon_of(const py::handle& value, const std::string& what) {
-    Array a;
-    try {
-        a = Array::ensure(value);
-    } catch (const py::error_already_set&) {
-        a = Array();
-    }
-    if (!a || a.ndim() != 2 || a.shape(1) != 2) throw InputError(what, "expected an array of shape (n, 2)");
+    const Array a = real_array(value, what);
+    if (a.ndim() != 2 || a.shape(1) != 2) throw InputError(what, "expected an array of shape (n, 2)");
     Polygon out;
     auto r = a.unchecked<2>();
     for (py::ssize_t i = 0; i < a.shape(0); ++i) {
         out.emplace_back(r(i, 0), r(i, 1));
-        if (!out.back().allFinite()) throw InputError(what + "[" + std::to_string(i) + "]", "expected finite numbers");
+        check_magnitude(out.back(), what + "[" + std::to_string(i) + "]");
     }
     return out;
 }
 
 // A Python value (dict, list, tuple, numpy array, number, string, bool, None) as JSON, so that
 // the library's readers check it and name the path of a bad field.
-nlohmann::json json_of(const py::handle& value, const std::string& path) {
+nlohmann::json json_of(const py::handle& value, const std::string& path, int depth = 0) {
+    if (depth > 100) throw InputError(path, "nested more than 100 levels deep (a value that contains itself?)");
     if (value.is_none()) return nullptr;
     if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
     if (py::isinstance<py::int_>(value)) {
@@ -125,17 +150,27 @@ nlohmann::json json_of(const py::handle& value, const std::string& path) {
         for (const auto& [key, item] : value.cast<py::dict>()) {
             if (!py::isinstance<py::str>(key)) throw InputError(path, "keys must be strings");
             const auto name = key.cast<std::string>();
-            out[name] = json_of(item, path + "." + name);
+            out[name] = json_of(item, path + "." + name, depth + 1);
         }
         return out;
     }
-    if (py::hasattr(value, "tolist") && !py::isinstance<py::str>(value)) {  // numpy arrays and scalars
-        return json_of(value.attr("tolist")(), path);
+    const py::module_ np = py::module_::import("numpy");
+    if (py::isinstance(value, np.attr("generic"))) {  // a numpy scalar, by its kind
+        const char kind = py::str(value.attr("dtype").attr("kind")).cast<std::string>()[0];
+        if (kind == 'b') return py::bool_(py::reinterpret_borrow<py::object>(value)).cast<bool>();
+        if (kind == 'i' || kind == 'u') return json_of(py::int_(py::reinterpret_borrow<py::object>(value)), path, depth + 1);
+        if (kind != 'f') throw InputError(path, "expected a real number");
+        const double x = py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
+        if (x == 0.0 && py::bool_(py::reinterpret_borrow<py::object>(value))) {  // a long double below a double's range
+            throw InputError(path, "too small for a double: it would be taken as 0");
+        }
+        return x;
     }
+    if (py::isinstance(value, np.attr("ndarray"))) return json_of(value.attr("tolist")(), path, depth + 1);
     if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
         nlohmann::json out = nlohmann::json::array();
         std::size_t i = 0;
-        for (const auto& item : value) out.push_back(json_of(item, path + "[" + std::to_string(i++) + "]"));
+        for (const auto& item : value) out.push_back(json_of(item, path + "[" + std::to_string(i++) + "]", depth + 1));
         return out;
     }
     throw InputError(path, std::string("expected a number, list or object, not ") +
@@ -165,8 +200,12 @@ py::object python_of(const nlohmann::json& j) {
     }
 }
 
+// Warnings as Python's UserWarning, pointing at the caller's line; under `-W error` the first
+// one is raised.
 void warn_all(const InputWarnings& warnings) {
-    for (const std::string& w : warnings) PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1);
+    for (const std::string& w : warnings) {
+        if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 3) != 0) throw py::error_already_set();
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -177,10 +216,13 @@ struct Analysis {
     std::vector<ModeForces> modes;
     QueryIndex index;
 
-    explicit Analysis(Scene s) : scene(checked(std::move(s))), modes(analyze(scene)), index(modes) {}
+    Analysis(Scene s, bool quasi_static)
+        : scene(checked(std::move(s), quasi_static)), modes(analyze(scene, AnalysisOptions{quasi_static})), index(modes) {}
 
-    static Scene checked(Scene s) {
-        if (!s.body) throw InputError("$", "missing field \"body\" (analyze needs its mass, com and inertia)");
+    static Scene checked(Scene s, bool quasi_static) {
+        if (!s.body && !quasi_static) {
+            throw InputError("$", "missing field \"body\" (analyze needs its mass, com and inertia)");
+        }
         return s;
     }
 
@@ -201,9 +243,7 @@ py::array_t<bool> query_batch(const Analysis& a, const py::handle& wrenches) {
     const py::ssize_t n = w.shape(0);
     const double* in = w.data();
     for (py::ssize_t i = 0; i < n; ++i) {
-        if (!std::isfinite(in[3 * i]) || !std::isfinite(in[3 * i + 1]) || !std::isfinite(in[3 * i + 2])) {
-            throw InputError("wrenches[" + std::to_string(i) + "]", "expected finite numbers");
-        }
+        check_magnitude(Vec3(in[3 * i], in[3 * i + 1], in[3 * i + 2]), "wrenches[" + std::to_string(i) + "]");
     }
     const auto m = static_cast<py::ssize_t>(a.modes.size());
     py::array_t<bool> out({n, m});
@@ -302,6 +342,9 @@ PYBIND11_MODULE(_momentlab, m) {
 
     py::class_<Labels>(m, "Labels", "The moment labels of a force set (Mason 1991, section 2).")
         .def(py::init<Cone>(), py::arg("forces"))
+        .def("__repr__", [](const Labels& l) {
+            return "<Labels: + " + l.plus().kind() + ", - " + l.minus().kind() + ">";
+        })
         .def_property_readonly("forces", &Labels::forces)
         .def_property_readonly("plus", &Labels::plus)
         .def_property_readonly("minus", &Labels::minus)
@@ -324,6 +367,13 @@ PYBIND11_MODULE(_momentlab, m) {
                     [](const std::string& text) {
                         InputWarnings warnings;
                         Scene s = read_scene_text(text, &warnings);
+                        warn_all(warnings);
+                        return s;
+                    })
+        .def_static("from_file",
+                    [](const std::string& path) {
+                        InputWarnings warnings;
+                        Scene s = read_scene_text(read_json_file(path, "$"), &warnings);
                         warn_all(warnings);
                         return s;
                     })
@@ -372,7 +422,7 @@ PYBIND11_MODULE(_momentlab, m) {
         });
 
     py::class_<Analysis, std::shared_ptr<Analysis>>(m, "_Analysis")
-        .def(py::init<Scene>())
+        .def(py::init<Scene, bool>())
         .def_property_readonly("scene", [](const Analysis& a) { return a.scene; })
         .def_property_readonly("modes", [](const Analysis& a) {
             std::vector<std::string> out;
@@ -394,7 +444,7 @@ PYBIND11_MODULE(_momentlab, m) {
                  if (!(mu >= 0.0) || !std::isfinite(mu) || !magnitude_in_range(mu)) {
                      throw InputError("mu", "expected a finite mu >= 0 (0 or 1e-60 .. 1e60)");
                  }
-                 if (a.scene.body->polygon.size() < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
+                 if (!a.scene.body || a.scene.body->polygon.size() < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
                  py::list out;
                  for (const PushCase& c : plan_push(a.scene, a.mode(goal, "goal"), PushOptions{mu, ignore_interference})) {
                      out.append(python_of(to_json(c)));
@@ -413,17 +463,29 @@ PYBIND11_MODULE(_momentlab, m) {
 
     // Force sets of the paper's Figure 1, their combinations and files.
     m.def("force", [](const py::handle& p, const py::handle& d) {
-        return force_ray(vector_of<2>(p, "point"), vector_of<2>(d, "direction"));
+        const Vec2 point = vector_of<2>(p, "point");  // in this order: the first bad argument is named
+        return force_ray(point, vector_of<2>(d, "direction"));
     }, py::arg("point"), py::arg("direction"), "The positive multiples of one force through a point (Figure 1a).");
     m.def("line_of_force", [](const py::handle& p, const py::handle& d) {
-        return line_of_force(vector_of<2>(p, "point"), vector_of<2>(d, "direction"));
+        const Vec2 point = vector_of<2>(p, "point");
+        return line_of_force(point, vector_of<2>(d, "direction"));
     }, py::arg("point"), py::arg("direction"), "The forces along a line, both senses.");
     m.def("forces_through_point", [](const py::handle& p) { return forces_through_point(vector_of<2>(p, "point")); },
           py::arg("point"), "Every force whose line of action passes through the point (Figure 1b).");
     m.def("friction_cone", [](const py::handle& p, const py::handle& n, double mu) {
-        if (!std::isfinite(mu) || mu < 0.0) throw InputError("mu", "expected a finite mu >= 0");
-        return friction_cone(vector_of<2>(p, "point"), vector_of<2>(n, "normal"), mu);
+        if (number_of(mu, "mu") < 0.0) throw InputError("mu", "expected a finite mu >= 0");
+        const Vec2 point = vector_of<2>(p, "point");
+        return friction_cone(point, vector_of<2>(n, "normal"), mu);
     }, py::arg("point"), py::arg("normal"), py::arg("mu"), "The Coulomb cone of a contact (Figure 1c).");
+    m.def("closure", [](const Scene& scene, const py::handle& reference, std::optional<double> length) {
+        ClosureOptions options;
+        if (!reference.is_none()) options.reference = vector_of<2>(reference, "reference");
+        if (length) {
+            if (!(number_of(*length, "length") > 0.0)) throw InputError("length", "expected a length > 0");
+            options.length = length;
+        }
+        return python_of(to_json(closure(scene, options)));
+    }, py::arg("scene"), py::arg("reference") = py::none(), py::arg("length") = py::none());
     m.def("pure_moments", [](int sign) { return pure_moments(sign); }, py::arg("sign"));
     m.def("force_set_from_json", [](const std::string& text) {
         InputWarnings warnings;
@@ -434,8 +496,8 @@ PYBIND11_MODULE(_momentlab, m) {
     m.def("find_contacts", [](const py::handle& body, const py::handle& obstacles, double distance, double mu,
                               std::optional<double> mu_kinetic) {
         const ContactFinding options{distance, mu, mu_kinetic.value_or(mu)};
-        if (!(distance >= 0.0) || !std::isfinite(distance)) throw InputError("distance", "expected a finite distance >= 0");
-        if (!(mu >= 0.0) || !std::isfinite(mu) || !(options.mu_kinetic >= 0.0) || !std::isfinite(options.mu_kinetic)) {
+        if (number_of(distance, "distance") < 0.0) throw InputError("distance", "expected a finite distance >= 0");
+        if (number_of(mu, "mu") < 0.0 || number_of(options.mu_kinetic, "mu_kinetic") < 0.0) {
             throw InputError("mu", "expected finite friction coefficients >= 0");
         }
         std::vector<Polygon> fixed;

@@ -92,4 +92,29 @@ nlohmann::json to_json(const ComplyPlan& plan) {
     return out;
 }
 
+namespace {
+
+nlohmann::json closure_test_json(const ClosureTest& t) {
+    nlohmann::json out = {{"holds", t.holds}};
+    if (t.holds) {
+        out["quality"] = output_value(t.quality);
+    } else {
+        out["unresisted_wrench"] = vec(t.unresisted->value());
+    }
+    return out;
+}
+
+}  // namespace
+
+nlohmann::json to_json(const Closure& c) {
+    return {{"form_closure", c.form.holds},
+            {"force_closure", c.force.holds},
+            {"form", closure_test_json(c.form)},
+            {"force", closure_test_json(c.force)},
+            {"reference", vec(c.reference)},
+            {"length", output_value(c.length)},
+            {"metric", "radius of the largest ball about 0 inside the convex hull of the contacts' unit wrenches "
+                       "(fx, fy, tau / length), tau about the reference point"}};
+}
+
 }  // namespace momentlab

@@ -88,6 +88,7 @@ Scene read_scene(const json& doc, InputWarnings* w) {
     ContactFinding options;
     if (doc.contains("contact_distance")) {
         options.distance = nonnegative(doc.at("contact_distance"), "$.contact_distance", "a distance");
+        scene.contact_distance = options.distance;
     }
     if (doc.contains("contacts")) {
         const json& contacts = doc.at("contacts");
@@ -167,6 +168,9 @@ json to_json(const Scene& scene) {
     if (!scene.obstacles.empty()) {
         doc["obstacles"] = json::array();
         for (const Polygon& p : scene.obstacles) doc["obstacles"].push_back({{"polygon", polygon(p)}});
+    }
+    if (scene.contact_distance) {  // the contacts are on the outline within it
+        doc["contact_distance"] = *scene.contact_distance;
     }
     return doc;
 }

@@ -5,22 +5,26 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "momentlab/geometry/force_sets.hpp"
 
 namespace momentlab {
 
-std::vector<ModeForces> analyze(const Scene& scene) {
-    if (!scene.body) throw std::invalid_argument("analyze: the scene needs a body (mass, com, inertia)");
-    const Body& b = *scene.body;
-    const bool inertia_ok = b.radius_of_gyration ? *b.radius_of_gyration > 0.0 && std::isfinite(*b.radius_of_gyration)
-                                                 : b.inertia > 0.0 && std::isfinite(b.inertia);
-    if (!b.com.allFinite() || !(b.mass > 0.0) || !std::isfinite(b.mass) || !inertia_ok) {
-        throw std::invalid_argument(
-            "analyze: the body needs a finite com, 0 < mass < inf and 0 < inertia < inf (or radius of gyration)");
+std::vector<ModeForces> analyze(const Scene& scene, const AnalysisOptions& options) {
+    std::optional<ExactMatrix> m;
+    if (!options.quasi_static) {
+        if (!scene.body) throw std::invalid_argument("analyze: the scene needs a body (mass, com, inertia)");
+        const Body& b = *scene.body;
+        const bool inertia_ok = b.radius_of_gyration ? *b.radius_of_gyration > 0.0 && std::isfinite(*b.radius_of_gyration)
+                                                     : b.inertia > 0.0 && std::isfinite(b.inertia);
+        if (!b.com.allFinite() || !(b.mass > 0.0) || !std::isfinite(b.mass) || !inertia_ok) {
+            throw std::invalid_argument(
+                "analyze: the body needs a finite com, 0 < mass < inf and 0 < inertia < inf (or radius of gyration)");
+        }
+        m = inertia_at_origin(*scene.body);
     }
-    const ExactMatrix m = inertia_at_origin(*scene.body);
     const ModeSet modes = enumerate_modes(scene.contacts);
     // Each contact's friction edges, built once for all the modes (exact constructions; copies
     // share them): the static cone's two edges, and the kinetic ones n + mu_k t, n - mu_k t.
@@ -49,8 +53,9 @@ std::vector<ModeForces> analyze(const Scene& scene) {
                     break;
             }
         }
-        ModeForces f{mode, mode.twists.linear_image(m), Cone::from_generators(contact_generators), Cone()};
-        f.applied = sum(f.total, f.contact.negated());
+        ModeForces f{mode, m ? mode.twists.linear_image(*m) : Cone(), Cone::from_generators(contact_generators), Cone()};
+        // Quasi-static: no inertia, F = {0}, so E = -T (the applied wrench balances the contacts').
+        f.applied = m ? sum(f.total, f.contact.negated()) : f.contact.negated();
         out.push_back(std::move(f));
     }
     return out;

@@ -571,4 +571,27 @@ Figure friction_figure(const std::string& title, const Scene& scene, std::option
     return figure;
 }
 
+Figure closure_figure(const std::string& title, const Scene& scene, std::optional<Box> view) {
+    const Closure c = closure(scene);
+    std::vector<Vec2> anchors;
+    for (const Contact& contact : scene.contacts) anchors.push_back(contact.point);
+    if (!view) view = scene_view(scene);
+    auto says = [](const ClosureTest& t) { return std::string(t.holds ? "holds (no label)" : "fails"); };
+    Figure figure;
+    figure.title = title;
+    figure.columns = 2;
+    for (const auto& [heading, test] : {std::pair<std::string, const ClosureTest*>{"form closure (normals): ", &c.form},
+                                         std::pair<std::string, const ClosureTest*>{"force closure (friction cones): ", &c.force}}) {
+        Panel panel = labels_panel(ForcePanel{heading + says(*test), test->wrenches, anchors}, *view);
+        Panel scene_layer;
+        scene_layer.view = panel.view;
+        add_scene(scene_layer, scene, SceneStyle::Faint);
+        panel.shapes.insert(panel.shapes.end(), scene_layer.shapes.begin(), scene_layer.shapes.end());
+        figure.panels.push_back(panel);
+    }
+    figure.legend = labels_legend();
+    for (const LegendEntry& e : scene_legend()) figure.legend.push_back(e);
+    return figure;
+}
+
 }  // namespace momentlab::render

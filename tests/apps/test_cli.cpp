@@ -1,6 +1,8 @@
 // The command-line tool as a user runs it: output of `label`, exit codes, one-line errors.
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include <algorithm>
 #include <cmath>
 #include <array>
@@ -220,6 +222,34 @@ TEST(Cli, PlanPushJsonHasOneEntryPerCaseAndPlanComplyTheRegion) {
     r = run("plan comply " + scene + " --goal rr --centre 2 1 --json");  // inside the + region
     ASSERT_EQ(r.status, 0) << stderr_text();
     EXPECT_EQ(nlohmann::json::parse(r.out)["centre"]["verdict"], "fails");
+}
+
+// Quasi-static pushing into rr (docs/planning.md): E_rr = -T_rr, the plane of the contact forces
+// (-1/2, 1); only pushes along (1, -2) balance them, knife edges: the top edge (f, r) and the
+// trailing top vertex; the trailing edge's pushes that are feasible with inertia are not.
+TEST(Cli, QuasiStaticPushTableOfTheBlockAlongTheWall) {
+    const std::string scene = kExamples + "/figure-3-block-along-wall.json";
+    const Result dynamic = run("plan push " + scene + " --goal rr --json");
+    const Result quasi = run("plan push " + scene + " --goal rr --quasi-static --json");
+    ASSERT_EQ(quasi.status, 0) << stderr_text();
+    std::map<std::string, std::string> was, is;
+    const nlohmann::json dynamic_cases = nlohmann::json::parse(dynamic.out)["cases"];
+    const nlohmann::json quasi_cases = nlohmann::json::parse(quasi.out)["cases"];
+    ASSERT_EQ(quasi_cases.size(), 24u);
+    for (const auto& c : dynamic_cases) {
+        was[c["feature"].get<std::string>() + " " + c["slip"].get<std::string>()] = c["verdict"].get<std::string>();
+    }
+    for (const auto& c : quasi_cases) {
+        const std::string key = c["feature"].get<std::string>() + " " + c["slip"].get<std::string>();
+        is[key] = c["verdict"].get<std::string>();
+        EXPECT_NE(c["verdict"], "feasible") << key;  // E_rr has no interior
+    }
+    EXPECT_EQ(was["edge 3 l"], "feasible");
+    EXPECT_EQ(is["edge 3 l"], "no");
+    EXPECT_EQ(is["edge 3 f"], "no");
+    for (const char* key : {"edge 2 f", "edge 2 r", "vertex 3 l", "vertex 3 f", "vertex 3 r"}) {
+        EXPECT_EQ(is[key], "boundary") << key;
+    }
 }
 
 // Knife edges are said as such, without a best direction or a margin. E_rr+ = F_rr+ ∩ T_rr- (Mason

@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 
+#include "../common/examples.hpp"
 #include "../common/scenes.hpp"
 #include "../common/sizes.hpp"
 #include "mode_oracle.hpp"
@@ -104,6 +105,79 @@ TEST(Analysis, QueryAgreesWithExactLpOracle) {
     std::cout << "\n";
     EXPECT_EQ(failures, 0);
     EXPECT_GE(wrenches, testing::sized(10000));
+}
+
+// Quasi-static (inertia neglected): E_i = -T_i, decided against the exact LP with the inertia
+// matrix set to zero, on scenes without a body, for random wrenches and for wrenches that are
+// sums of the contacts' generators (on the boundaries of the T_i by construction).
+TEST(Analysis, QuasiStaticAgreesWithExactLpWithoutInertia) {
+    testing::Random rnd(4242);
+    int wrenches = 0, several = 0, none = 0, failures = 0;
+    for (int s = 0; s < testing::sized(120) && failures < 10; ++s) {
+        Scene scene;  // no body: the quasi-static model needs none
+        const int n = rnd.integer(1, 3);
+        for (int j = 0; j < n; ++j) {
+            const Vec2 p(rnd.integer(-2, 2), rnd.integer(-2, 2));
+            const auto [mu, mk] = testing::random_mu(rnd);
+            scene.contacts.push_back(Contact::make(p, testing::slanted_direction(rnd), mu, mk));
+        }
+        const auto a = analyze(scene, AnalysisOptions{true});
+        const QueryIndex index(a);
+        const testing::ExactContacts c(scene.contacts);
+        for (int w = 0; w < 30; ++w) {
+            reference::QVec e{0, 0, 0};
+            if (w % 2 == 0) {
+                e = reference::q(Vec3(rnd.integer(-4, 4), rnd.integer(-4, 4), rnd.integer(-4, 4)));
+            } else {
+                for (int j = 0; j < n; ++j) {
+                    const char letter = "sfrl"[rnd.integer(0, 3)];
+                    for (const auto& g : c.raw[static_cast<std::size_t>(j)].generators(letter)) {
+                        e = reference::add(e, reference::scale(reference::Q(-rnd.integer(0, 2)), g));
+                    }
+                }
+            }
+            const Vec3 ed = reference::to_vec3(e);
+            if (reference::q(ed) != e) continue;
+            std::set<std::string> expected;
+            for (const ModeForces& mf : a) {
+                EXPECT_TRUE(mf.total.is_zero()) << mf.mode.letters;
+                if (testing::exact_lp_quasi_static_in_mode(scene, mf.mode.letters, e)) expected.insert(mf.mode.letters);
+            }
+            std::set<std::string> indexed;
+            for (std::size_t i : index.query(ed).modes) indexed.insert(a[i].mode.letters);
+            ++wrenches;
+            several += expected.size() > 1;
+            none += expected.empty();
+            if (answer(a, ed) != expected || indexed != expected) {
+                ++failures;
+                ADD_FAILURE() << "scene " << s << " wrench " << ed.transpose();
+            }
+        }
+    }
+    std::cout << "[Analysis] quasi-static: " << wrenches << " wrenches (" << several << " in several modes, " << none
+              << " in none), " << failures << " disagreements\n";
+    EXPECT_EQ(failures, 0);
+    EXPECT_GE(wrenches, testing::sized(2000));
+    EXPECT_GE(several, testing::sized(100));
+    EXPECT_GE(none, testing::sized(100));
+}
+
+// By hand, the block on the floor (contacts (0, 0) and (1, 0), normal +y, mu 1/2) held
+// quasi-statically: gravity through the centre of mass (1/2, 1/4), (0, -1, -1/2), is balanced by
+// the floor at rest (ff), and only there. A horizontal push (1, 0) through it (torque
+// -1/4) is balanced by no contact force: with no load on the floor there is no friction, so it
+// cannot stay quasi-static (inconsistent), where the dynamic analysis lets it accelerate.
+TEST(Analysis, QuasiStaticBlockOnTheFloorByHand) {
+    const Scene scene = testing::example_scene("figure-3-block-along-wall.json");
+    const auto a = analyze(scene, AnalysisOptions{true});
+    EXPECT_EQ(answer(a, Vec3(0, -1, -0.5)), (std::set<std::string>{"ff"}));
+    EXPECT_TRUE(answer(a, Vec3(1, 0, -0.25)).empty());
+    EXPECT_TRUE(answer(analyze(scene), Vec3(1, 0, -0.25)).count("rr"));
+    // Pressed down with 1 and pushed right with exactly mu = 1/2 through the centre of mass
+    // (torque 1/2 * -1 - 1/4 * 1/2 = -5/8): the contact force -e = (-1/2, 1, 5/8) is
+    // l_1 (-1/2, 1) at (0, 0) plus l_2 (-1/2, 1) at (1, 0) with l_1 + l_2 = 1 and torque l_2 = 5/8:
+    // both on the edge n - mu t, so at rest (ff) or sliding right (rr), nothing else.
+    EXPECT_EQ(answer(a, Vec3(0.5, -1, -0.625)), (std::set<std::string>{"ff", "rr"}));
 }
 
 // QueryIndex against the per-mode test (query, checked against the oracle above) where its

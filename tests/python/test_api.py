@@ -196,3 +196,28 @@ def test_version_and_docstrings():
     assert ml.__version__ == "0.1.0"
     for name in ml.__all__:
         assert getattr(ml, name).__doc__, name
+
+
+@pytest.mark.parametrize("name", ["closure-four-midpoints", "closure-five-contacts", "closure-antipodal-fingers"])
+def test_closure_is_the_clis(name):
+    path = EXAMPLES / f"{name}.json"
+    got = ml.closure(ml.Scene.from_file(path))
+    assert got == cli("closure", path, "--json")
+    assert got == ml.closure(ml.Scene.from_file(path), reference=got["reference"], length=got["length"])
+    # By hand (tests/mechanics/test_closure.cpp): midpoints no closure; five contacts form
+    # closure; the antipodal frictional fingers force closure only.
+    want = {"closure-four-midpoints": (False, False), "closure-five-contacts": (True, True),
+            "closure-antipodal-fingers": (False, True)}[name]
+    assert (got["form_closure"], got["force_closure"]) == want
+
+
+def test_quasi_static_is_the_clis(tmp_path):
+    path = EXAMPLES / "figure-3-block-along-wall.json"
+    a = ml.analyze(ml.Scene.from_file(path), quasi_static=True)
+    W = np.array([[0.0, -1.0, -0.5], [1.0, 0.0, -0.25], [0.5, -1.0, -0.625], [1.0, -1.0, -0.75]])
+    (tmp_path / "w.txt").write_text("\n".join(json.dumps(w.tolist()) for w in W) + "\n")
+    lines = cli("query", path, "--wrenches", tmp_path / "w.txt", "--quasi-static").stdout.splitlines()
+    assert [a.query(w) for w in W] == [json.loads(line)["modes"] for line in lines]
+    # by hand (tests/mechanics/test_analysis.cpp): gravity at rest; a push with no load held by
+    # nothing; pressed and pushed at exactly mu: at rest or sliding right
+    assert [a.query(w) for w in W[:3]] == [["ff"], [], ["ff", "rr"]]

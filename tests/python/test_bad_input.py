@@ -74,7 +74,7 @@ def test_bad_json_and_files():
         ml.Scene.from_json('{"body": {"mass": 1, "mass": 2}, "contacts": []}')
     with pytest.raises(ValueError):
         ml.Scene.from_json(b"{}")
-    with pytest.raises(FileNotFoundError):
+    with pytest.raises(ValueError, match=r'^\$: cannot read file ".*no-such-scene.json" \(No such file or directory\)'):
         ml.Scene.from_file(EXAMPLES / "no-such-scene.json")
     with pytest.raises(ValueError, match=r"^\$: missing field \"body\""):
         ml.analyze(ml.Scene(contacts=GOOD["contacts"]))
@@ -169,3 +169,96 @@ def test_bad_force_set_arguments():
         ml.find_contacts([[0, 0], [1, 0]], [])  # two vertices: not a polygon
     with pytest.raises(ValueError, match=r"obstacles\[0\]"):
         ml.find_contacts([[0, 0], [1, 0], [0, 1]], [[[0, 0], [np.nan, 0], [0, 1]]])
+
+
+def test_files_are_read_as_the_cli_reads_them(tmp_path):
+    (tmp_path / "nul.json").write_bytes(b'{"contacts": [{"point": [0, 0], "normal": [0, 1]}]}\0')
+    (tmp_path / "latin1.json").write_bytes(b"\xff")
+    (tmp_path / "null.json").write_text("null")
+    for path in [tmp_path / "nul.json", tmp_path / "latin1.json", tmp_path / "null.json", tmp_path, "/dev/zero"]:
+        r = cli("modes", path, check=False)
+        assert r.returncode == 2
+        with pytest.raises(ValueError) as e:
+            ml.Scene.from_file(path)
+        assert "momentlab: " + str(e.value) == r.stderr.strip(), path
+
+
+def test_python_values_that_once_crashed_or_slipped_through():
+    # numpy long doubles (their tolist() is themselves), values that contain themselves, and
+    # nesting deeper than any scene needs: ValueError, never a crash.
+    body = {"mass": 1, "com": [0, 0], "inertia": 1}
+    s = ml.Scene(body=body, contacts=[{"point": [np.longdouble(0.5), 0], "normal": [0, 1]}])
+    assert s.points.tolist() == [[0.5, 0.0]]
+    with pytest.raises(ValueError, match=r"^\$\.contacts\[0\]\.point\[0\]: too small"):
+        ml.Scene(body=body, contacts=[{"point": [np.longdouble("1e-4000"), 0], "normal": [0, 1]}])
+    with pytest.raises(ValueError, match=r"^\$\.contacts\[0\]\.point\[1\]: expected a real number"):
+        ml.Scene(body=body, contacts=[{"point": [0, np.clongdouble(1j)], "normal": [0, 1]}])
+    p = [0, 0]
+    p.append(p)
+    with pytest.raises(ValueError, match="nested more than 100 levels"):
+        ml.Scene(body=body, contacts=[{"point": p, "normal": [0, 1]}])
+    deep = 0
+    for _ in range(30000):
+        deep = [deep]
+    with pytest.raises(ValueError, match="nested more than 100 levels"):
+        ml.Scene(body=body, contacts=[{"point": deep, "normal": [0, 1]}])
+    with pytest.raises(ValueError, match="^contacts: expected a list"):
+        ml.Scene(body=body, contacts=5)
+    assert len(ml.Scene(body=body, contacts=(c for c in [{"point": [0, 0], "normal": [0, 1]}])).points) == 1
+
+
+def test_unknown_fields_warn_and_raise_under_error_filters():
+    text = '{"contacts": [{"point": [0, 0], "normal": [0, 1]}], "foo": 1}'
+    with pytest.warns(UserWarning, match=r"^\$\.foo: "):
+        ml.Scene.from_json(text)
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(UserWarning, match=r"^\$\.foo: "):
+            ml.Scene.from_json(text)
+
+
+def test_numbers_outside_the_clis_range_and_unrepresentable_answers(block):
+    for w in ([1e300, -1e300, 0.0], [5e-324, 0.0, 0.0]):
+        with pytest.raises(ValueError, match="^wrench: out of range"):
+            block.query(w)
+        with pytest.raises(ValueError, match=r"^wrenches\[1\]: out of range"):
+            block.query(np.array([[0.0, -1.0, -0.5], w]))
+    with pytest.raises(ValueError, match="^centre: out of range"):
+        ml.plan_comply(block, "rr", (5e-324, 0.0))
+    with pytest.raises(ValueError, match="^mu:"):
+        ml.friction_cone((0, 0), (0, 1), 1e300)
+    with pytest.raises(ValueError, match="^mu:"):
+        ml.friction_cone((0, 0), (0, 1), "0.5")
+    # The inputs that once gave a vertex beyond the range of a double (1e-300) are refused.
+    with pytest.raises(ValueError, match=r"^direction: out of range"):
+        ml.force((0, 1e60), (1, 1e-300))
+
+
+def test_complex_strings_and_masked_arrays_are_refused(block):
+    with pytest.raises(ValueError, match="^points: expected real numbers"):
+        ml.contacts([[0, 1j]], [[0, 1]])
+    with pytest.raises(ValueError, match="^points: expected real numbers"):
+        ml.contacts(np.array([["0", "1"]]), [[0, 1]])
+    with pytest.raises(ValueError, match="^point: expected real numbers"):
+        ml.force(("0", "0"), ("1", "0"))
+    with pytest.raises(ValueError, match="^wrench: expected real numbers"):
+        ml.force((0, 0), (1, 0)).contains([1, -1, -0.75 + 1j])
+    with pytest.raises(ValueError, match="^wrench: a masked array"):
+        block.query(np.ma.masked_array([1.0, -1.0, -0.75], mask=[0, 1, 0]))
+    with pytest.raises(ValueError, match="^goal: expected a mode string"):
+        ml.plan_tilt(block, 5)
+    with pytest.raises(ValueError, match="^sign:"):
+        ml.pure_moments(1.5)
+    assert "rr" in block and "zz" not in block
+    modes = block.modes
+    modes.append("zz")
+    assert "zz" not in block.modes and len(block) == 10
+
+
+def test_found_contacts_round_trip_with_their_distance():
+    s = ml.Scene(body=dict(mass=1, com=[0, 1], inertia=0.2, polygon=[[-1, 0.05], [1, 0.05], [1, 2], [-1, 2]]),
+                 obstacles=[[[-0.5, -1], [0.5, -1], [0, 0]]], contact_distance=0.1)
+    again = ml.Scene.from_json(s.to_json())
+    assert json.loads(again.to_json()) == json.loads(s.to_json())
+    assert json.loads(s.to_json())["contact_distance"] == 0.1

@@ -85,3 +85,23 @@ def test_normals_as_written_and_mirror_images(seed):
     flipped = W * np.array([-1.0, 1.0, -1.0])
     for w, v in zip(W, flipped):
         assert sorted(x.translate(swap) for x in m.query(v)) == sorted(a.query(w))
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_quasi_static_agrees_with_the_oracle_without_inertia(seed):
+    # Quasi-static: inertia neglected, E_i = -T_i. The oracle's LP with a zero inertia matrix
+    # (mass, com and inertia all 0) decides the same question; the scene needs no body.
+    rng = random.Random(3000 + seed)
+    doc = oracle.random_scene(rng, 1 + seed % 3)
+    exact = oracle.exact_scene(doc)
+    exact.mass, exact.com, exact.inertia = oracle.Fraction(0), (oracle.Fraction(0), oracle.Fraction(0)), oracle.Fraction(0)
+    a = ml.analyze(ml.Scene(contacts=doc["contacts"]), quasi_static=True)
+    assert a.quasi_static and set(a.modes) == oracle.modes(exact)
+    wrenches = [oracle.random_wrench(rng) for _ in range(10)] + oracle.boundary_wrenches(exact, rng, 10)
+    batch = a.query(np.array(wrenches))
+    for k, w in enumerate(wrenches):
+        want = oracle.query(exact, w)
+        assert set(a.query(w)) == want, (doc, w)
+        assert {m for m, hit in zip(a.modes, batch[k]) if hit} == want
+    for sets in a:
+        assert sets.total.is_zero and sets.applied == -sets.contact

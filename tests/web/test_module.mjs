@@ -151,6 +151,29 @@ test('plans and labels equal the CLI', () => {
   }
 });
 
+test('closure and the quasi-static model equal the CLI', () => {
+  for (const name of ['closure-four-midpoints', 'closure-five-contacts', 'closure-antipodal-fingers']) {
+    const file = join(ROOT, 'examples', `${name}.json`);
+    const cli = JSON.parse(execFileSync(CLI, ['closure', file, '--json'], { encoding: 'utf8' }));
+    assertClose(ml.graspClosure(readFileSync(file, 'utf8')), cli);  // the quality is rounded arithmetic
+  }
+  const r = rng(77);
+  for (let k = 0; k < 30; ++k) {
+    const doc = randomScene(r, 1 + (k % 3));
+    delete doc.body;  // quasi-static needs no body
+    const file = join(scratch, 'qs.json');
+    writeFileSync(file, JSON.stringify(doc));
+    const wrenches = Array.from({ length: 16 }, () => [dyadic(r, -2, 2, 2), dyadic(r, -2, 2, 2), dyadic(r, -2, 2, 2)]);
+    const list = join(scratch, 'qs.txt');
+    writeFileSync(list, wrenches.map((w) => JSON.stringify(w)).join('\n') + '\n');
+    const answers = execFileSync(CLI, ['query', file, '--wrenches', list, '--quasi-static'], { encoding: 'utf8' })
+      .trim().split('\n').map((l) => JSON.parse(l).modes);
+    const a = ml.analyze(JSON.stringify(doc), { quasiStatic: true });
+    wrenches.forEach((w, i) => assert.deepEqual(a.query(w), answers[i]));
+    a.delete();
+  }
+});
+
 test('bad input throws an Error with the CLI message', () => {
   const bad = [
     '{"body": {"mass": 1, "com": [0, 0], "inertia": 1}, "contacts": [{"point": [0, 0], "normal": [0, 1], "mu": -1}]}',

@@ -90,10 +90,11 @@ class MomentlabAnalysis {
   }
 }
 
-/** Every mode of a scene (JSON text in the CLI's format, or an object) with its sets. */
-Module['analyze'] = function (scene) {
+/** Every mode of a scene (JSON text in the CLI's format, or an object) with its sets;
+ *  options.quasiStatic neglects inertia (E = -T, no body needed). */
+Module['analyze'] = function (scene, options) {
   const text = typeof scene === 'string' ? scene : JSON.stringify(scene);
-  const session = new Module['Session'](text);
+  const session = new Module['Session'](text, Boolean(options && options.quasiStatic));
   const error = session.error();
   if (error) {
     session.delete();
@@ -108,4 +109,11 @@ Module['forceSetLabels'] = function (forceSet, view) {
   const v = momentlabView(view);
   const text = typeof forceSet === 'string' ? forceSet : JSON.stringify(forceSet);
   return momentlabAnswer(Module['labels'](text, v[0], v[1], v[2], v[3]));
+};
+
+/** Grasp closure of a scene's contacts, as `momentlab closure --json`: {form_closure,
+ *  force_closure, form, force, reference, length, metric}. */
+Module['graspClosure'] = function (scene) {
+  const text = typeof scene === 'string' ? scene : JSON.stringify(scene);
+  return momentlabAnswer(Module['closure'](text));
 };

@@ -14,6 +14,7 @@
 #include "momentlab/io/json_output.hpp"
 #include "momentlab/io/scene_json.hpp"
 #include "momentlab/mechanics/analysis.hpp"
+#include "momentlab/mechanics/closure.hpp"
 #include "momentlab/mechanics/query_index.hpp"
 #include "momentlab/planning/comply.hpp"
 #include "momentlab/planning/push.hpp"
@@ -65,11 +66,13 @@ json force_set(const Cone& cone, const Box& view) {
 
 class Session {
 public:
-    explicit Session(const std::string& scene_text) {
+    Session(const std::string& scene_text, bool quasi_static) {
         try {
             scene_ = read_scene_text(scene_text, &warnings_);
-            if (!scene_.body) throw InputError("$", "missing field \"body\" (analyze needs its mass, com and inertia)");
-            analysis_ = analyze(scene_);
+            if (!scene_.body && !quasi_static) {
+                throw InputError("$", "missing field \"body\" (analyze needs its mass, com and inertia)");
+            }
+            analysis_ = analyze(scene_, AnalysisOptions{quasi_static});
             index_.emplace(analysis_);
         } catch (const std::exception& e) {
             error_ = e.what();
@@ -139,7 +142,7 @@ public:
             if (!(mu >= 0.0) || !std::isfinite(mu) || !magnitude_in_range(mu)) {
                 throw InputError("mu", "expected a finite mu >= 0 (0 or 1e-60 .. 1e60)");
             }
-            if (scene_.body->polygon.size() < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
+            if (!scene_.body || scene_.body->polygon.size() < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
             json out = {{"goal", goal}, {"mu", mu}, {"cases", json::array()}};
             for (const PushCase& c : momentlab::plan_push(scene_, find(goal), PushOptions{mu, ignore_interference})) {
                 out["cases"].push_back(to_json(c));
@@ -181,6 +184,11 @@ private:
     mutable std::vector<std::size_t> found_;
 };
 
+// Grasp closure of a scene's contacts (the body optional), as `momentlab closure --json`.
+std::string closure_of(const std::string& scene_text) {
+    return guarded([&] { return to_json(closure(read_scene_text(scene_text))); });
+}
+
 // The labels of a force set in the format of `momentlab label` (docs/formats.md), cut to a view.
 std::string labels(const std::string& text, double xmin, double ymin, double xmax, double ymax) {
     return guarded([&] { return force_set(read_force_set_text(text), *box_of(xmin, ymin, xmax, ymax)); });
@@ -192,7 +200,7 @@ std::string labels(const std::string& text, double xmin, double ymin, double xma
 EMSCRIPTEN_BINDINGS(momentlab) {
     using namespace momentlab::web;
     emscripten::class_<Session>("Session")
-        .constructor<std::string>()
+        .constructor<std::string, bool>()
         .function("error", &Session::error)
         .function("warnings", &Session::warnings)
         .function("modes", &Session::modes)
@@ -204,4 +212,5 @@ EMSCRIPTEN_BINDINGS(momentlab) {
         .function("planComply", &Session::plan_comply)
         .function("sceneJson", &Session::scene_json);
     emscripten::function("labels", &labels);
+    emscripten::function("closure", &closure_of);
 }

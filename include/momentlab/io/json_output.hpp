@@ -7,6 +7,7 @@
 
 #include "momentlab/geometry/cone.hpp"
 #include "momentlab/geometry/labels.hpp"
+#include "momentlab/mechanics/closure.hpp"
 #include "momentlab/planning/comply.hpp"
 #include "momentlab/planning/push.hpp"
 
@@ -31,5 +32,8 @@ namespace momentlab {
 [[nodiscard]] nlohmann::json to_json(const PushCase& push_case);
 /// The directions of one compliance centre with its "point", "label" and "verdict".
 [[nodiscard]] nlohmann::json to_json(const ComplyPlan& plan);
+/// {"form_closure", "force_closure", "form": {"holds", "quality" | "unresisted_wrench"}, "force":
+///  {...}, "reference", "length", "metric"} (docs/formats.md, Closure).
+[[nodiscard]] nlohmann::json to_json(const Closure& closure);
 
 }  // namespace momentlab

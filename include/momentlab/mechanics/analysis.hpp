@@ -25,10 +25,19 @@ struct ModeForces {
     Cone applied;  ///< E_i
 };
 
-/// Every mode with its force sets. Needs the body (mass, centre of mass, inertia).
-/// Throws std::invalid_argument if the scene has no body, or its com is not finite, or its
-/// mass or inertia is not finite and > 0 (and, through enumerate_modes, for bad contacts).
-[[nodiscard]] std::vector<ModeForces> analyze(const Scene& scene);
+/// How the body's dynamics enter the force sets.
+struct AnalysisOptions {
+    /// Quasi-static: inertia neglected, the applied wrench balances the contact wrench. Then
+    /// F_i = {0} and E_i = -T_i for every mode (each mode's set of motions is non-empty), and no
+    /// body is needed; a wrench in no E_i cannot be held quasi-statically (docs/design.md).
+    bool quasi_static = false;
+};
+
+/// Every mode with its force sets. Needs the body (mass, centre of mass, inertia) unless
+/// quasi-static. Throws std::invalid_argument if the scene has no body, or its com is not
+/// finite, or its mass or inertia is not finite and > 0 (and, through enumerate_modes, for bad
+/// contacts).
+[[nodiscard]] std::vector<ModeForces> analyze(const Scene& scene, const AnalysisOptions& options = {});
 
 /// How many modes an applied wrench produces.
 enum class Verdict { Unique, Ambiguous, Inconsistent };

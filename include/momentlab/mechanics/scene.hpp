@@ -61,6 +61,9 @@ struct Scene {
     std::optional<Body> body;
     std::vector<Contact> contacts;
     std::vector<Polygon> obstacles;
+    /// How far from the body's outline a contact may lie (scene files' "contact_distance"), when
+    /// the scene gave it; to_json writes it back so that the scene reads again.
+    std::optional<double> contact_distance;
 };
 
 }  // namespace momentlab

@@ -12,6 +12,7 @@
 #include "momentlab/geometry/cone.hpp"
 #include "momentlab/geometry/labels.hpp"
 #include "momentlab/mechanics/analysis.hpp"
+#include "momentlab/mechanics/closure.hpp"
 #include "momentlab/mechanics/scene.hpp"
 #include "momentlab/render/figure.hpp"
 
@@ -77,5 +78,12 @@ void add_scene(Panel& panel, const Scene& scene, SceneStyle style);
 /// The multi-contact friction cone of the scene (Figure 2 from a scene): one panel per
 /// contact's friction cone and their sum.
 [[nodiscard]] Figure friction_figure(const std::string& title, const Scene& scene, std::optional<Box> view = std::nullopt);
+
+/// Grasp closure explained by moment labels (Modern Robotics, ch. 12): the labels of the
+/// normals' wrenches (form closure) and of the friction cones' sum (force closure) over the
+/// scene. Closure holds exactly when both regions are empty; a point in the + region is a
+/// centre about which every contact wrench turns counter-clockwise, so nothing resists a
+/// clockwise turn about it.
+[[nodiscard]] Figure closure_figure(const std::string& title, const Scene& scene, std::optional<Box> view = std::nullopt);
 
 }  // namespace momentlab::render
