@@ -20,6 +20,7 @@ show "Figure 2: two friction cones combined (labels intersected)" label "$here/f
 show "Intersection of two parallel forces on different lines: only the zero wrench (the paper's hull shorthand would give y >= 0)" label "$here/parallel-rays-intersection.json" --at 0 -1
 show "Figure 3: the block along the wall, every mode (goal: rr)" analyze "$here/figure-3-block-along-wall.json"
 show "Figure 4: two-point peg insertion, every mode (goal: rl, down in two-point contact)" analyze "$here/figure-4-peg-in-hole.json"
+show "A peg on the hole's lip (normals meet at (4, -1.5)): every mode" analyze "$here/figure-4b-peg-on-the-lip.json"
 show "A block on a table: every mode" analyze "$here/block-on-table.json"
 show "... under its weight alone" query "$here/block-on-table.json" --wrench 0 -9.81 -4.905
 show "... pushed with 20 N along its base" query "$here/block-on-table.json" --wrench 20 -9.81 -5.105
@@ -78,6 +79,8 @@ figure figure-3 "Figure 3: sliding the block along the wall (mode rr)" \
 figure figure-3-modes "The block along the wall: every contact mode" \
     draw "$here/figure-3-block-along-wall.json" --what modes
 figure figure-4 "Figure 4: two-point peg insertion (mode rl)" draw "$here/figure-4-peg-in-hole.json" --mode rl
+figure figure-4b "A peg on the hole's lip: sliding in turns it about (4, -1.5), so its inertia matters (mode rl)" \
+    draw "$here/figure-4b-peg-on-the-lip.json" --mode rl
 figure figure-5 "Figure 5: tilting the block along the wall (goal rr)" \
     plan tilt "$here/figure-3-block-along-wall.json" --goal rr
 figure figure-6 "Figure 6: pushing the trailing edge, finger slip l (goal rr)" \

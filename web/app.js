@@ -120,8 +120,9 @@ function wrench() {
 
 // After every change: the scene is analysed again only when it changed (dragging the applied
 // force asks the same analysis a new question); the shown sets and the plans are cached by what
-// they depend on. The push table, the costliest plan, follows the frame (schedulePlans) when the
-// scene or the goal changed, so that a drag stays within one frame.
+// they depend on. The push table, the costliest plan (about 15 ms for a 16-gon), is computed
+// after the frame when the scene or the goal changed, and during a drag only when it ends, so
+// that every drag event stays within one frame.
 function recompute() {
   const t0 = performance.now();
   const key = JSON.stringify(app.doc);
@@ -268,14 +269,13 @@ function handle(g, p, s, colour, name, onMove, shape) {
     ev.preventDefault();
     onMove([p[0] + d[0], p[1] + d[1]]);
     recompute();
-    const again = document.querySelector(`[data-handle="${CSS.escape(name)}"]`);
-    if (again) again.focus();
   });
   return h;
 }
 
 function drawPicture(a, produced) {
   const svg = $('view');
+  const focused = document.activeElement && document.activeElement.dataset ? document.activeElement.dataset.handle : null;
   svg.textContent = '';
   const s = screen();
   svg.setAttribute('viewBox', `0 0 ${s.w} ${s.h}`);
@@ -349,6 +349,10 @@ function drawPicture(a, produced) {
   });
   if (app.centre) el('path', { d: `M${s.x(app.centre[0]) - 6},${s.y(app.centre[1]) - 6} l12,12 m-12,0 l12,-12`,
                                stroke: COLOURS.ink, 'stroke-width': 2, class: 'compliance-centre' }, svg);
+  if (focused) {  // a keyboard user keeps the handle they were on across redraws
+    const again = handles.querySelector(`[data-handle="${CSS.escape(focused)}"]`);
+    if (again) again.focus();
+  }
 }
 
 // The push table's feasible touches on the body, the tilt arcs at the centre of mass.
@@ -392,8 +396,8 @@ function drawPlans(a) {
   if (push) {
     if (app.shownPush !== push) drawPushTable(push);
     app.shownPush = push;
-  } else {
-    schedulePush(pushKey, goal);
+  } else if (!app.dragging) {
+    schedulePush(pushKey, goal);  // during a drag it waits for the drag's end
   }
 }
 
@@ -549,7 +553,11 @@ function start(ml) {
     app.dragging.onMove(screen().world(ev.clientX - r.left, ev.clientY - r.top));
     recompute();
   });
-  const stop = () => { app.dragging = null; };
+  const stop = () => {
+    if (!app.dragging) return;
+    app.dragging = null;
+    recompute();  // the push table of the scene where the drag ended
+  };
   svg.addEventListener('pointerup', stop);
   svg.addEventListener('pointercancel', stop);
   svg.addEventListener('click', (ev) => {

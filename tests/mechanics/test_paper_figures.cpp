@@ -127,3 +127,41 @@ TEST(PaperFigures, WedgedRodIsAmbiguous) {
 
 }  // namespace
 }  // namespace momentlab
+
+namespace momentlab {
+namespace {
+
+// A peg going into a hole with its side on the hole's right lip (examples/
+// figure-4b-peg-on-the-lip.json): its corner (-1, -3/2) on the left wall (normal (1, 0)) and the
+// lip (1, 0) on its side (normal (-2, 1), perpendicular to the side (1, 2)). The normals' lines,
+// y = -3/2 and (1 - 2s, s), meet at (4, -3/2): sliding down both (rl) is a turn about that finite
+// centre, counter-clockwise. So its total wrench depends on the inertia: the twist is
+// (vx, vy, w) = (-3/2, -4, 1) (zero velocity at (4, -3/2)) and with m = 1, c = (1/2, 1/4),
+// F = M xi = (-7/4, -7/2, rho^2 - 21/16): with the file's rho = 5/4 a torque of +1/4, with
+// rho = 1/2 one of -17/16 (the paper's Figure 4 has parallel normals, a translation, where the
+// inertia never enters).
+TEST(PaperFigures, PegOnTheLipTurnsAboutAFiniteCentreSoItsInertiaMatters) {
+    Scene scene = testing::example_scene("figure-4b-peg-on-the-lip.json");
+    const auto find = [](const std::vector<ModeForces>& a, const std::string& letters) -> const ModeForces& {
+        for (const ModeForces& m : a) {
+            if (m.mode.letters == letters) return m;
+        }
+        throw std::logic_error("no mode " + letters);
+    };
+    for (const auto& [rho, torque] : {std::pair{1.25, 0.25}, std::pair{0.5, -1.0625}}) {
+        scene.body->radius_of_gyration = rho;
+        const auto analysis = analyze(scene);
+        const ModeForces& rl = find(analysis, "rl");
+        const Labels centres = rotation_centres(rl.mode);
+        EXPECT_EQ(centres.plus().kind(), "point");
+        ASSERT_EQ(centres.plus().vertices.size(), 1u);
+        EXPECT_EQ(centres.plus().vertices[0], Vec2(4, -1.5));
+        EXPECT_TRUE(centres.minus().is_empty);
+        ASSERT_EQ(rl.total.rays().size(), 1u);
+        EXPECT_TRUE(rl.total.has(Vec3(-1.75, -3.5, torque))) << "rho " << rho;
+        EXPECT_FALSE(rl.total.has(Vec3(-1.75, -3.5, -torque))) << "rho " << rho;
+    }
+}
+
+}  // namespace
+}  // namespace momentlab
