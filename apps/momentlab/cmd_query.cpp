@@ -1,5 +1,6 @@
 // `momentlab query SCENE --wrench FX FY TAU | --wrenches FILE [--json]`: which modes an applied
 // wrench produces.
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -14,7 +15,23 @@ struct QueryOptions {
     std::string wrenches;
     bool json = false;
     bool quasi_static = false;
+    bool margin = false;
 };
+
+// A margin as JSON: a number, or "unbounded" (E = R^3, or no other mode's set to reach).
+nlohmann::json margin_json(double d) { return std::isfinite(d) ? nlohmann::json(output_value(d)) : nlohmann::json("unbounded"); }
+
+// {"inside": [per returned mode], "to_other": d, "metric": {"reference", "length"}}.
+nlohmann::json margins_json(const Problem& p, const QueryResult& r, const Vec3& e) {
+    const WrenchMetric metric = default_metric(p.scene);
+    const QueryMargins m = query_margins(p.analysis, r.modes, e, metric);
+    nlohmann::json inside = nlohmann::json::array();
+    for (double d : m.inside) inside.push_back(margin_json(d));
+    return {{"inside", inside},
+            {"to_other", m.to_other ? margin_json(*m.to_other) : nlohmann::json("unbounded")},
+            {"metric", {{"reference", {output_value(metric.reference.x()), output_value(metric.reference.y())}},
+                        {"length", output_value(metric.length)}}}};
+}
 
 nlohmann::json answer_json(const std::vector<ModeForces>& a, const QueryResult& r) {
     nlohmann::json modes = nlohmann::json::array();
@@ -24,7 +41,7 @@ nlohmann::json answer_json(const std::vector<ModeForces>& a, const QueryResult& 
 
 // One JSON array [fx, fy, tau] per line in, one JSON object per line out (answers stream: the
 // lines before a bad one have been answered).
-void answer_file(const Problem& p, const std::string& path) {
+void answer_file(const Problem& p, const std::string& path, bool margin) {
     LineReader in(path, "--wrenches");
     const QueryIndex index(p.analysis);  // compiled once for all the questions
     std::string line;
@@ -45,8 +62,10 @@ void answer_file(const Problem& p, const std::string& path) {
             throw InputError(where, "expected [fx, fy, tau]");
         }
         const Vec3 e = checked_wrench(w[0].get<double>(), w[1].get<double>(), w[2].get<double>(), where);
-        nlohmann::json out = answer_json(p.analysis, index.query(e));
+        const QueryResult r = index.query(e);
+        nlohmann::json out = answer_json(p.analysis, r);
         out["wrench"] = w;
+        if (margin) out["margins"] = margins_json(p, r, e);
         std::cout << out.dump() << "\n";
     }
 }
@@ -57,19 +76,30 @@ int run(const QueryOptions& o) {
     }
     const Problem p = load_problem(o.file, "query", o.quasi_static);
     if (!o.wrenches.empty()) {
-        answer_file(p, o.wrenches);
+        answer_file(p, o.wrenches, o.margin);
         return 0;
     }
     const Vec3 e = checked_wrench(o.wrench[0], o.wrench[1], o.wrench[2], "--wrench");
     const QueryResult r = query(p.analysis, e);
     if (o.json) {
-        std::cout << answer_json(p.analysis, r).dump() << "\n";
+        nlohmann::json out = answer_json(p.analysis, r);
+        if (o.margin) out["margins"] = margins_json(p, r, e);
+        std::cout << out.dump() << "\n";
         return 0;
     }
+    const nlohmann::json margins = o.margin ? margins_json(p, r, e) : nlohmann::json();
+    const auto said = [](const nlohmann::json& d) { return d.is_number() ? fmt(d.get<double>()) : d.get<std::string>(); };
     std::cout << "verdict: " << to_string(r.verdict) << "\n";
-    for (std::size_t i : r.modes) {
-        const std::string& letters = p.analysis[i].mode.letters;
-        std::cout << "  " << letters << "  " << describe_mode(p.scene, letters) << "\n";
+    for (std::size_t k = 0; k < r.modes.size(); ++k) {
+        const std::string& letters = p.analysis[r.modes[k]].mode.letters;
+        std::cout << "  " << letters << "  " << describe_mode(p.scene, letters);
+        if (o.margin) std::cout << "   (margin " << said(margins["inside"][k]) << " to the boundary of its set)";
+        std::cout << "\n";
+    }
+    if (o.margin) {
+        std::cout << "  margin to the nearest set of another mode: " << said(margins["to_other"])
+                  << "\n  (distances of (fx, fy, tau / L), tau about the reference " << fmt(default_metric(p.scene).reference)
+                  << ", L = " << fmt(default_metric(p.scene).length) << "; docs/design.md, Margins)\n";
     }
     return 0;
 }
@@ -89,6 +119,9 @@ std::function<int()> add_query_command(CLI::App& app) {
                          "FILE"));
     one->excludes(many);
     cmd->add_flag("--json", opts->json, "machine-readable output");
+    cmd->add_flag("--margin", opts->margin,
+                  "how far the wrench may move before the answer changes: to the boundary of each returned mode's set "
+                  "and to the nearest other mode's set (docs/design.md, Margins)");
     cmd->add_flag("--quasi-static", opts->quasi_static, "neglect inertia: the applied wrench balances the contact wrench, E = -T (docs/design.md)");
     return [opts] { return run(*opts); };
 }

@@ -45,6 +45,7 @@
 #include "momentlab/io/scene_json.hpp"
 #include "momentlab/mechanics/analysis.hpp"
 #include "momentlab/mechanics/closure.hpp"
+#include "momentlab/mechanics/margin.hpp"
 #include "momentlab/mechanics/query_index.hpp"
 #include "momentlab/mechanics/find_contacts.hpp"
 #include "momentlab/mechanics/modes.hpp"
