@@ -302,6 +302,16 @@ class Analysis:
             return self._analysis.query_one(a)
         return self._analysis.query_batch(a)
 
+    def margins(self, w) -> dict:
+        """How far the wrench (shape (3,)) may move before the answer changes (docs/design.md,
+        Margins): {'inside': {mode: distance to the boundary of its E}, 'to_other': distance to
+        the nearest other mode's E (inf when none), 'reference', 'length'}: distances of
+        (fx, fy, tau / length), tau about the reference."""
+        a = _wrenches(w)
+        if a.ndim != 1:
+            raise ValueError("wrench: margins take one wrench of shape (3,)")
+        return self._analysis.margins(a)
+
     def verdict(self, w):
         """'unique', 'ambiguous' or 'inconsistent' for one wrench; for a batch, an array of them."""
         a = _wrenches(w)

@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <limits>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -432,6 +433,23 @@ PYBIND11_MODULE(_momentlab, m) {
         .def("mode_at", [](const Analysis& a, std::size_t i) { return a.modes.at(i); }, py::return_value_policy::copy)
         .def("mode", [](const Analysis& a, const std::string& letters) { return a.mode(letters, "mode"); })
         .def("query_one", &query_one)
+        .def("margins",
+             [](const Analysis& a, const py::handle& wrench) {
+                 const Vec3 e = vector_of<3>(wrench, "wrench");
+                 const QueryResult r = a.index.query(e);
+                 const WrenchMetric metric = default_metric(a.scene);
+                 const QueryMargins margins = query_margins(a.modes, r.modes, e, metric);
+                 py::dict inside;
+                 for (std::size_t k = 0; k < r.modes.size(); ++k) {
+                     inside[py::str(a.modes[r.modes[k]].mode.letters)] = margins.inside[k];
+                 }
+                 py::dict out;
+                 out["inside"] = inside;
+                 out["to_other"] = margins.to_other.value_or(std::numeric_limits<double>::infinity());
+                 out["reference"] = std::vector<double>{metric.reference.x(), metric.reference.y()};
+                 out["length"] = metric.length;
+                 return out;
+             })
         .def("query_batch", &query_batch)
         .def("plan_tilt",
              [](const Analysis& a, const std::string& goal) {

@@ -221,3 +221,18 @@ def test_quasi_static_is_the_clis(tmp_path):
     # by hand (tests/mechanics/test_analysis.cpp): gravity at rest; a push with no load held by
     # nothing; pressed and pushed at exactly mu: at rest or sliding right
     assert [a.query(w) for w in W[:3]] == [["ff"], [], ["ff", "rr"]]
+
+
+def test_margins_are_the_clis():
+    path = EXAMPLES / "figure-3-block-along-wall.json"
+    a = ml.analyze(ml.Scene.from_file(path))
+    for w in ([1.0, -1.0, -0.75], [0.0, -1.0, -0.5], [3.0, -1.0, 0.25]):
+        want = cli("query", path, "--wrench", *w, "--margin", "--json")
+        got = a.margins(w)
+        assert list(got["inside"]) == want["modes"]
+        assert list(got["inside"].values()) == [x if x != "unbounded" else math.inf for x in want["margins"]["inside"]]
+        to_other = want["margins"]["to_other"]
+        assert got["to_other"] == (math.inf if to_other == "unbounded" else to_other)
+        assert got["reference"] == want["margins"]["metric"]["reference"]
+    # by hand (tests/mechanics/test_margin.cpp): 1/sqrt(5) from the friction line
+    assert math.isclose(a.margins([1.0, -1.0, -0.75])["inside"]["rr"], 1 / math.sqrt(5), rel_tol=1e-15)
