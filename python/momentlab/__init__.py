@@ -404,6 +404,7 @@ def plan_push(scene, goal: str, mu: float = 0.5, ignore_interference: bool = Fal
 
 
 def plan_comply(scene, goal: str, centre=None) -> dict:
-    """Compliance: {'goal', 'labels': the Labels of E_goal (centres outside both regions work),
-    'centre': {'point', 'label', 'verdict', 'intervals', 'best', 'margin'}} for a given centre."""
+    """Compliance: {'goal', 'labels': {'plus', 'minus'} regions of E_goal as plain data (the
+    centres outside both work), 'centre': {'point', 'label', 'verdict', 'intervals', 'best',
+    'margin'}} for a given centre (as `plan comply --json`)."""
     return _analysis_of(scene)._analysis.plan_comply(_goal(goal), centre)

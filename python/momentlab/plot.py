@@ -272,7 +272,7 @@ def comply(ax, analysis: Analysis, goal: str, centre=None, view=None):
     box = scene_view(analysis.scene) if view is None else tuple(view)
     size = max(box[2] - box[0], box[3] - box[1])
     scene(ax, analysis.scene, box, faint=True)
-    labels(ax, plan["labels"], box, show_forces=False, title=f"compliance centres for {goal}")
+    labels(ax, analysis[goal].applied, box, show_forces=False, title=f"compliance centres for {goal}")
     if centre is not None:
         c = np.asarray(centre, dtype=float)
         ax.plot([c[0]], [c[1]], "x", color=INK, ms=8, mew=2, zorder=9)

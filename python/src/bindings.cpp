@@ -474,7 +474,7 @@ PYBIND11_MODULE(_momentlab, m) {
                  const ModeForces& g = a.mode(goal, "goal");
                  py::dict out;
                  out["goal"] = goal;
-                 out["labels"] = compliance_labels(g);
+                 out["labels"] = python_of(to_json(compliance_labels(g)));  // plain data, as the CLI writes it
                  if (!centre.is_none()) out["centre"] = python_of(to_json(plan_comply(g, vector_of<2>(centre, "centre"))));
                  return out;
              });
