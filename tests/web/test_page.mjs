@@ -144,6 +144,36 @@ test('keyboard: a focused handle moves with the arrow keys', async () => {
   assert.deepEqual(await produced(), cliQueries(BLOCK, [after_])[0]);
 });
 
+test('the view exports as PNG', async () => {
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export-png')]);
+  const file = join(WEB, 'view.png');
+  await download.saveAs(file);
+  const png = readFileSync(file);
+  assert.deepEqual([...png.subarray(0, 8)], [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
+  assert.ok(png.length > 10000, `${png.length} bytes`);
+});
+
+test('touch: dragging the force with a finger', async () => {
+  const context = await browser.newContext({ viewport: { width: 1024, height: 768 }, hasTouch: true });
+  const touchPage = await context.newPage();
+  await touchPage.goto(`file://${join(WEB, 'index.html')}`);
+  await touchPage.waitForFunction(() => window.momentlabApp && window.momentlabApp.ready, null, { timeout: 30000 });
+  const box = await touchPage.locator('[data-handle="force tip"]').boundingBox();
+  const [x, y] = [box.x + box.width / 2, box.y + box.height / 2];
+  const cdp = await context.newCDPSession(touchPage);
+  const touch = (type, px, py) => cdp.send('Input.dispatchTouchEvent',
+                                           { type, touchPoints: type === 'touchEnd' ? [] : [{ x: px, y: py }] });
+  const before_ = await touchPage.evaluate(() => window.momentlabApp.wrench());
+  await touch('touchStart', x, y);
+  for (let k = 1; k <= 10; ++k) await touch('touchMove', x + 8 * k, y - 2 * k);
+  await touch('touchEnd');
+  const after_ = await touchPage.evaluate(() => window.momentlabApp.wrench());
+  assert.ok(after_[0] > before_[0] + 0.1, `${before_} -> ${after_}`);
+  const shown = await touchPage.$eval('#produced', (e) => e.dataset.modes.split(' ').filter(Boolean));
+  assert.deepEqual(shown, cliQueries(BLOCK, [after_])[0]);
+  await context.close();
+});
+
 test('the view exports as SVG', async () => {
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export-svg')]);
   const file = join(WEB, 'view.svg');
