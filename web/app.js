@@ -111,6 +111,14 @@ function onBoundary(p, polygon) {
   return best;
 }
 
+// Contacts put on the outline by the page are rounded there: the file's contact_distance (default
+// 1e-9) is raised to the rounding of coordinates of this size, so large scenes stay editable.
+function projectedTolerance() {
+  let size = 1;
+  for (const p of app.doc.body.polygon || []) size = Math.max(size, Math.abs(p[0]), Math.abs(p[1]));
+  app.doc.contact_distance = Math.max(app.doc.contact_distance || 1e-9, 1e-12 * size);
+}
+
 function wrench() {
   const [px, py] = app.force.point, [fx, fy] = app.force.vector;
   return [fx, fy, px * fy - py * fx + app.force.moment];
@@ -131,16 +139,22 @@ function recompute() {
     try {
       analysis = app.ml.analyze(key);
     } catch (e) {
+      // An impossible edit (crossing edges, a contact off the outline): said, and undone, so
+      // that the picture, the answers and a saved file stay those of the last good scene.
       showError(e.message);
+      if (app.goodDoc) app.doc = JSON.parse(JSON.stringify(app.goodDoc));
+      if (app.analysis) redraw();
       return false;
     }
     if (app.analysis) app.analysis.delete();
     app.analysis = analysis;
     app.sceneKey = key;
+    app.goodDoc = JSON.parse(key);
     app.cache = {};
     if (!analysis.modes.includes(app.selected)) app.selected = null;
   }
   showError('');
+  $('warnings').textContent = (app.warnings || []).length ? `warnings: ${app.warnings.join('; ')}` : '';
   try {
     redraw();
   } catch (e) {
@@ -195,7 +209,7 @@ function drawModes(a, produced) {
 
 function drawForceText(produced, verdict) {
   const w = wrench();
-  $('wrench').textContent = `(${w.map((x) => (Math.abs(x) < 5e-4 ? 0 : x).toFixed(3)).join(', ')})`;
+  $('wrench').textContent = `(${w.map((x) => (x === 0 ? '0' : Number(x.toPrecision(4)).toString())).join(', ')})`;
   $('produced').textContent = produced.length ? produced.join(', ') : 'no mode';
   $('produced').dataset.modes = produced.join(' ');
   $('verdict').textContent = verdict;
@@ -247,12 +261,21 @@ function arrow(g, from, to, colour, s, width, cls) {
 }
 
 function handle(g, p, s, colour, name, onMove, shape) {
+  // Squares (vertices, normal tips) are larger than the dots drawn over them, so their corners
+  // stay reachable; the force's point is a ring around the centre of mass it starts on.
   const h = el(shape === 'square' ? 'rect' : 'circle', shape === 'square'
-    ? { x: s.x(p[0]) - 6, y: s.y(p[1]) - 6, width: 12, height: 12 }
-    : { cx: s.x(p[0]), cy: s.y(p[1]), r: 7 }, g);
-  h.setAttribute('fill', colour);
-  h.setAttribute('fill-opacity', 0.8);
-  h.setAttribute('stroke', '#fff');
+    ? { x: s.x(p[0]) - 9, y: s.y(p[1]) - 9, width: 18, height: 18 }
+    : { cx: s.x(p[0]), cy: s.y(p[1]), r: shape === 'ring' ? 11 : 6 }, g);
+  if (shape === 'ring') {
+    h.setAttribute('fill', 'none');
+    h.setAttribute('stroke', colour);
+    h.setAttribute('stroke-width', 5);
+    h.setAttribute('pointer-events', 'stroke');
+  } else {
+    h.setAttribute('fill', colour);
+    h.setAttribute('fill-opacity', 0.8);
+    h.setAttribute('stroke', '#fff');
+  }
   h.setAttribute('class', 'handle');
   h.setAttribute('tabindex', '0');
   h.dataset.handle = name;
@@ -263,7 +286,7 @@ function handle(g, p, s, colour, name, onMove, shape) {
     app.dragging = { name, onMove };
   });
   h.addEventListener('keydown', (ev) => {
-    const step = ev.shiftKey ? 0.005 : 0.05;
+    const step = (app.view[2] - app.view[0]) * (ev.shiftKey ? 0.002 : 0.02);  // in the scene's scale
     const d = { ArrowLeft: [-step, 0], ArrowRight: [step, 0], ArrowUp: [0, step], ArrowDown: [0, -step] }[ev.key];
     if (!d) return;
     ev.preventDefault();
@@ -326,27 +349,37 @@ function drawPicture(a, produced) {
   arrow(scene, f.point, tip, produced.length === 1 ? COLOURS.ink : '#b00', s, 2.5, 'applied-force');
   // handles: body vertices, contact points, normal tips, the force's point and tip
   const handles = el('g', { id: 'handles' }, svg);
+  // Every move edits the scene as it is now (by index), not the objects of this drawing: an edit
+  // that was undone replaced them.
+  const now = () => app.doc;
   (body.polygon || []).forEach((p, i) => handle(handles, p, s, COLOURS.body, `vertex ${i}`, (q) => {
-    body.polygon[i] = q;
-    for (const c of app.doc.contacts || []) c.point = onBoundary(c.point, body.polygon);
+    const b = now().body;
+    b.polygon[i] = q;
+    for (const c of now().contacts || []) c.point = onBoundary(c.point, b.polygon);
+    projectedTolerance();
   }, 'square'));
-  handle(handles, body.com, s, COLOURS.body, 'centre of mass', (q) => { body.com = q; });
+
   (app.doc.contacts || []).forEach((c, j) => {
     handle(handles, c.point, s, COLOURS.friction, `contact ${j}`, (q) => {
-      c.point = body.polygon && body.polygon.length >= 3 ? onBoundary(q, body.polygon) : q;
+      const poly = now().body.polygon;
+      now().contacts[j].point = poly && poly.length >= 3 ? onBoundary(q, poly) : q;
+      projectedTolerance();
     });
     const u = unitNormal(c.normal);
     handle(handles, [c.point[0] + len * u[0], c.point[1] + len * u[1]], s, COLOURS.friction, `normal ${j}`, (q) => {
-      const d = [q[0] - c.point[0], q[1] - c.point[1]];
-      if (Math.hypot(d[0], d[1]) > 1e-9) c.normal = d;
+      const contact = now().contacts[j];
+      const d = [q[0] - contact.point[0], q[1] - contact.point[1]];
+      if (Math.hypot(d[0], d[1]) > 1e-9 * (app.view[2] - app.view[0])) contact.normal = d;
     }, 'square');
   });
   (app.doc.obstacles || []).forEach((o, k) => o.polygon.forEach((p, i) =>
-    handle(handles, p, s, COLOURS.obstacle, `obstacle ${k} vertex ${i}`, (q) => { o.polygon[i] = q; }, 'square')));
-  handle(handles, f.point, s, COLOURS.ink, 'force point', (q) => { f.point = q; });
+    handle(handles, p, s, COLOURS.obstacle, `obstacle ${k} vertex ${i}`, (q) => { now().obstacles[k].polygon[i] = q; },
+           'square')));
+  handle(handles, f.point, s, COLOURS.ink, 'force point', (q) => { f.point = q; }, 'ring');
   handle(handles, tip, s, COLOURS.ink, 'force tip', (q) => {
     f.vector = [(q[0] - f.point[0]) / (len * 2), (q[1] - f.point[1]) / (len * 2)];
   });
+  handle(handles, body.com, s, COLOURS.body, 'centre of mass', (q) => { now().body.com = q; });  // above the ring
   if (app.centre) el('path', { d: `M${s.x(app.centre[0]) - 6},${s.y(app.centre[1]) - 6} l12,12 m-12,0 l12,-12`,
                                stroke: COLOURS.ink, 'stroke-width': 2, class: 'compliance-centre' }, svg);
   if (focused) {  // a keyboard user keeps the handle they were on across redraws
@@ -396,7 +429,7 @@ function drawPlans(a) {
   if (push) {
     if (app.shownPush !== push) drawPushTable(push);
     app.shownPush = push;
-  } else if (!app.dragging) {
+  } else if (!app.dragging && !app.sliding) {
     schedulePush(pushKey, goal);  // during a drag it waits for the drag's end
   }
 }
@@ -438,32 +471,28 @@ function buildMuSliders() {
     const row = document.createElement('div');
     row.className = 'row';
     const label = document.createElement('label');
-    label.textContent = `contact ${j}${c.name ? ` (${c.name})` : ''} \u03bc`;
+    label.textContent = `contact ${j}${c.name ? ` (${c.name})` : ''} \u03bc (static = kinetic)`;
     const input = document.createElement('input');
-    Object.assign(input, { type: 'range', min: 0, max: 1.5, step: 0.05, value: c.mu || 0 });
+    Object.assign(input, { type: 'range', min: 0, max: Math.max(1.5, c.mu || 0), step: 0.05, value: c.mu || 0 });
     input.id = `mu-${j}`;
     label.htmlFor = input.id;
     const value = document.createElement('span');
     value.textContent = String(c.mu || 0);
+    input.title = 'static and kinetic friction (the slider sets both)';
     input.addEventListener('input', () => {
       c.mu = Number(input.value);
-      if (c.mu_kinetic !== undefined && c.mu_kinetic > c.mu) c.mu_kinetic = c.mu;
+      c.mu_kinetic = c.mu;
       value.textContent = input.value;
+      app.sliding = true;  // the push table waits for the release
       recompute();
     });
+    input.addEventListener('change', () => { app.sliding = false; recompute(); });
     row.append(label, input, value);
     box.appendChild(row);
   });
 }
 
 function loadScene(text, name) {
-  let doc;
-  try {
-    doc = JSON.parse(text);
-  } catch (e) {
-    showError(`${name || 'scene'}: $: ${e.message}`);
-    return false;
-  }
   let analysis;
   try {
     analysis = app.ml.analyze(text);  // the library's own checks, with the CLI's messages
@@ -473,12 +502,17 @@ function loadScene(text, name) {
   }
   // Keep the scene as the library read it (contacts written out, found ones included).
   app.doc = JSON.parse(analysis.sceneJson());
+  app.goodDoc = JSON.parse(JSON.stringify(app.doc));
+  app.warnings = analysis.warnings;
   analysis.delete();
+  app.dragging = null;  // a drag of the previous scene ends here
   app.selected = null;
   app.centre = null;
   app.view = fitView(app.doc);
   const com = app.doc.body.com;
   app.force = { point: com.slice(), vector: [0, -1], moment: 0 };
+  const size = app.view[2] - app.view[0];
+  Object.assign($('moment'), { min: -size, max: size, step: size / 200 });  // torques of the scene's size
   $('moment').value = 0;
   $('moment-value').textContent = '0';
   buildMuSliders();
@@ -525,16 +559,23 @@ function exportPng() {
 function start(ml) {
   app.ml = ml;
   const select = $('examples');
+  const fromFile = document.createElement('option');
+  fromFile.value = '';
+  fromFile.textContent = '(an opened file)';
+  fromFile.disabled = true;
+  select.appendChild(fromFile);
   for (const name of Object.keys(MOMENTLAB_EXAMPLES)) {
     const o = document.createElement('option');
     o.value = o.textContent = name;
     select.appendChild(o);
   }
   select.value = 'figure-3-block-along-wall';
-  select.addEventListener('change', () => loadScene(JSON.stringify(MOMENTLAB_EXAMPLES[select.value]), select.value));
+  select.addEventListener('change', () => {
+    if (select.value) loadScene(JSON.stringify(MOMENTLAB_EXAMPLES[select.value]), select.value);
+  });
   $('open').addEventListener('change', async (ev) => {
     const file = ev.target.files[0];
-    if (file) loadScene(await file.text(), file.name);
+    if (file && loadScene(await file.text(), file.name)) $('examples').value = '';
   });
   $('save').addEventListener('click', () => download('scene.json', 'application/json', JSON.stringify(app.doc, null, 1)));
   $('export-svg').addEventListener('click', () => download('momentlab.svg', 'image/svg+xml', svgText()));
@@ -547,7 +588,7 @@ function start(ml) {
   });
   $('finger-mu').addEventListener('input', () => { $('finger-mu-value').textContent = $('finger-mu').value; recompute(); });
   const svg = $('view');
-  svg.addEventListener('pointermove', (ev) => {
+  window.addEventListener('pointermove', (ev) => {
     if (!app.dragging) return;
     const r = svg.getBoundingClientRect();
     app.dragging.onMove(screen().world(ev.clientX - r.left, ev.clientY - r.top));
@@ -558,10 +599,13 @@ function start(ml) {
     app.dragging = null;
     recompute();  // the push table of the scene where the drag ended
   };
-  svg.addEventListener('pointerup', stop);
-  svg.addEventListener('pointercancel', stop);
+  window.addEventListener('pointerup', stop);  // a release anywhere ends the drag
+  window.addEventListener('pointercancel', stop);
+  $('place-centre').addEventListener('click', () => { app.placing = true; $('place-centre').textContent = 'tap the picture'; });
   svg.addEventListener('click', (ev) => {
-    if (!ev.shiftKey) return;
+    if (!ev.shiftKey && !app.placing) return;
+    app.placing = false;
+    $('place-centre').textContent = 'place it';
     const r = svg.getBoundingClientRect();
     app.centre = screen().world(ev.clientX - r.left, ev.clientY - r.top);
     recompute();

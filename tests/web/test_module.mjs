@@ -195,7 +195,12 @@ test('bad input throws an Error with the CLI message', () => {
   assert.throws(() => a.query([1, 2]), /wrench: expected 3 numbers/);
   assert.throws(() => a.queryBatch([[1, 2, 3], [4, Infinity, 6]]), /wrenches\[1\]: expected finite numbers/);
   assert.throws(() => a.mode('xx'), /no mode "xx" in this scene/);
+  assert.throws(() => a.query([1e300, 0, 0]), /^Error: wrench: out of range/);
+  assert.throws(() => a.queryBatch([[1, 2, 3, 4], [5, 6]]), /^Error: wrenches\[0\]: expected 3 numbers/);
+  assert.throws(() => a.planComply('rr', [1e300, 0]), /^Error: centre: out of range/);
+  assert.throws(() => ml.analyze(undefined), /^Error: \$: expected the JSON text of a scene/);
   assert.throws(() => a.planPush('rr', { mu: -1 }), /^Error: mu:/);
   assert.throws(() => a.mode('rr', [1, 1, 0, 0]), /^Error: view:/);
   a.delete();
+  assert.throws(() => a.query([0, 0, 1]), /^Error: analysis: already deleted/);
 });

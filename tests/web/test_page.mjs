@@ -106,7 +106,7 @@ test('a picked mode shows its E regions where the CLI labels their points', asyn
 });
 
 test('each bundled example loads with the CLI modes', async () => {
-  const names = await page.$$eval('#examples option', (os) => os.map((o) => o.value));
+  const names = await page.$$eval('#examples option', (os) => os.map((o) => o.value).filter(Boolean));
   const files = readdirSync(join(ROOT, 'examples')).filter((f) => f.endsWith('.json'))
     .filter((f) => JSON.parse(readFileSync(join(ROOT, 'examples', f), 'utf8')).body);
   assert.deepEqual(names.sort(), files.map((f) => f.replace(/\.json$/, '')).sort());
@@ -122,16 +122,56 @@ test('each bundled example loads with the CLI modes', async () => {
 test('a malformed file is reported in the page with the CLI message, and the view stays', async () => {
   const bad = '{"body": {"mass": 1, "com": [0, 0], "inertia": 1}, "contacts": [{"point": [0, 0], "normal": [0, 1], "mu": -1}]}';
   await page.setInputFiles('#open', { name: 'bad.json', mimeType: 'application/json', buffer: Buffer.from(bad) });
-  await page.waitForSelector('#error.shown');
+  await page.waitForFunction(() => document.getElementById('error').textContent.startsWith('bad.json'));
   assert.equal(await page.textContent('#error'), 'bad.json: $.contacts[0].mu: expected mu >= 0');
   await page.screenshot({ path: join(WEB, 'bad-file.png') });
   assert.deepEqual(await shownModes(), json(['modes', BLOCK]).modes);  // the last good scene stays
+  // The file is read asynchronously: wait for the page to say it.
   await page.setInputFiles('#open', { name: 'broken.json', mimeType: 'application/json', buffer: Buffer.from('{"body": ') });
+  await page.waitForFunction(() => document.getElementById('error').textContent.startsWith('broken.json'));
   assert.match(await page.textContent('#error'), /^broken\.json: \$: /);
   // A good file clears the message.
   await page.setInputFiles('#open', { name: 'block.json', mimeType: 'application/json', buffer: readFileSync(BLOCK) });
-  assert.equal(await page.$eval('#error', (e) => e.classList.contains('shown')), false);
+  await page.waitForFunction(() => !document.getElementById('error').classList.contains('shown'));
   assert.deepEqual(await shownModes(), json(['modes', BLOCK]).modes);
+});
+
+test('an impossible edit is said and undone; a drag released anywhere ends', async () => {
+  // Dragging the block's vertex 2 across the body makes its edges cross: the library's message,
+  // and the scene stays the last good one, which the CLI reads.
+  const [vx, vy] = await centreOf('vertex 2');
+  const [cx, cy] = await centreOf('force point');
+  await page.mouse.move(vx, vy);
+  await page.mouse.down();
+  await page.mouse.move(cx - 2 * (vx - cx), vy + 0.2 * (cy - vy), { steps: 4 });
+  assert.match(await page.textContent('#error'), /^\$\.body\.polygon: /);
+  const good = await page.evaluate(() => JSON.stringify(window.momentlabApp.doc));
+  writeFileSync(join(scratch, 'kept.json'), good);
+  assert.ok(json(['modes', join(scratch, 'kept.json')]).modes.length > 0);
+  // released over the side panel, not the picture: the drag ends all the same
+  const panel = await page.locator('aside').boundingBox();
+  await page.mouse.move(panel.x + 50, panel.y + 50);
+  await page.mouse.up();
+  assert.equal(await page.evaluate(() => window.momentlabApp.dragging), null);
+  const released = await page.evaluate(() => JSON.stringify(window.momentlabApp.doc));
+  await page.mouse.move(vx + 30, vy + 30);  // hovering afterwards moves nothing
+  assert.equal(await page.evaluate(() => JSON.stringify(window.momentlabApp.doc)), released);
+  await page.selectOption('#examples', 'figure-4-peg-in-hole');
+  await page.selectOption('#examples', 'figure-3-block-along-wall');
+  assert.equal(await page.$eval('#error', (e) => e.classList.contains('shown')), false);
+});
+
+test('a friction slider sets the static and kinetic mu of its contact, as the CLI reads the saved scene', async () => {
+  await page.$eval('#mu-0', (e) => { e.value = '1'; e.dispatchEvent(new Event('input')); e.dispatchEvent(new Event('change')); });
+  const doc = await page.evaluate(() => window.momentlabApp.doc);
+  assert.equal(doc.contacts[0].mu, 1);
+  assert.equal(doc.contacts[0].mu_kinetic, 1);
+  const file = join(scratch, 'mu.json');
+  writeFileSync(file, JSON.stringify(doc));
+  const w = await page.evaluate(() => window.momentlabApp.wrench());
+  assert.deepEqual(await produced(), cliQueries(file, [w])[0]);
+  await page.selectOption('#examples', 'figure-4-peg-in-hole');
+  await page.selectOption('#examples', 'figure-3-block-along-wall');
 });
 
 test('keyboard: a focused handle moves with the arrow keys', async () => {

@@ -14,11 +14,24 @@ function momentlabAnswer(text) {
   return value;
 }
 
-function momentlabWrench(w) {
-  if (!w || w.length !== 3) throw new Error('wrench: expected 3 numbers [fx, fy, tau]');
+// The CLI's range for numbers: 0, or magnitudes 1e-60 .. 1e60.
+function momentlabInRange(x) {
+  const m = Math.abs(x);
+  return m === 0 || (m >= 1e-60 && m <= 1e60);
+}
+
+function momentlabWrench(w, what = 'wrench') {
+  if (!w || w.length !== 3) throw new Error(`${what}: expected 3 numbers [fx, fy, tau]`);
   const e = [Number(w[0]), Number(w[1]), Number(w[2])];
-  if (!e.every(Number.isFinite)) throw new Error('wrench: expected finite numbers');
+  if (!e.every(Number.isFinite)) throw new Error(`${what}: expected finite numbers`);
+  if (!e.every(momentlabInRange)) throw new Error(`${what}: out of range: each number must be 0 or of magnitude 1e-60 .. 1e60`);
   return e;
+}
+
+function momentlabText(scene, what) {
+  if (typeof scene === 'string') return scene;
+  if (scene === null || typeof scene !== 'object') throw new Error(`$: expected the JSON text of a ${what} or an object`);
+  return JSON.stringify(scene);
 }
 
 function momentlabView(view) {
@@ -31,11 +44,15 @@ const momentlabVerdicts = ['inconsistent', 'unique', 'ambiguous'];
 
 class MomentlabAnalysis {
   constructor(session) {
-    this._session = session;
+    this._live = session;
     /** The mode strings, the all-f mode first. */
     this.modes = Array.from(session.modes());
     /** Warnings about the scene (unknown fields), each "path: message". */
     this.warnings = Array.from(session.warnings());
+  }
+  get _session() {
+    if (!this._live) throw new Error('analysis: already deleted');
+    return this._live;
   }
   /** The modes whose closed E_i holds the applied wrench [fx, fy, tau] (tau about the origin). */
   query(w) {
@@ -49,10 +66,14 @@ class MomentlabAnalysis {
   /** For N wrenches (an array of [fx, fy, tau] or a flat array of 3 N numbers): a Uint8Array of
    *  N * modes.length, 1 where mode k holds wrench i (index i * modes.length + k). */
   queryBatch(wrenches) {
-    const flat = Array.isArray(wrenches) && Array.isArray(wrenches[0]) ? wrenches.flat() : Array.from(wrenches);
-    if (flat.length % 3 !== 0) throw new Error('wrenches: expected 3 numbers per wrench');
-    for (let i = 0; i < flat.length; ++i) {
-      if (!Number.isFinite(flat[i])) throw new Error(`wrenches[${Math.floor(i / 3)}]: expected finite numbers`);
+    let flat;
+    if (Array.isArray(wrenches) && wrenches.length && Array.isArray(wrenches[0])) {
+      flat = [];
+      wrenches.forEach((w, i) => flat.push(...momentlabWrench(w, `wrenches[${i}]`)));
+    } else {
+      flat = Array.from(wrenches || []);
+      if (flat.length % 3 !== 0) throw new Error('wrenches: expected 3 numbers per wrench');
+      for (let i = 0; i < flat.length; i += 3) momentlabWrench(flat.slice(i, i + 3), `wrenches[${i / 3}]`);
     }
     return this._session.queryBatch(flat);
   }
@@ -76,6 +97,9 @@ class MomentlabAnalysis {
   planComply(goal, centre, view) {
     const v = momentlabView(view);
     if (!centre || centre.length !== 2) throw new Error('centre: expected [x, y]');
+    if (!centre.every((x) => Number.isFinite(Number(x)) && momentlabInRange(Number(x)))) {
+      throw new Error('centre: out of range: each number must be 0 or of magnitude 1e-60 .. 1e60');
+    }
     return momentlabAnswer(this._session.planComply(String(goal), Number(centre[0]), Number(centre[1]),
                                                     v[0], v[1], v[2], v[3]));
   }
@@ -85,15 +109,15 @@ class MomentlabAnalysis {
   }
   /** Frees the analysis (WebAssembly memory is not garbage collected). */
   delete() {
-    if (this._session) this._session.delete();
-    this._session = null;
+    if (this._live) this._live.delete();
+    this._live = null;
   }
 }
 
 /** Every mode of a scene (JSON text in the CLI's format, or an object) with its sets;
  *  options.quasiStatic neglects inertia (E = -T, no body needed). */
 Module['analyze'] = function (scene, options) {
-  const text = typeof scene === 'string' ? scene : JSON.stringify(scene);
+  const text = momentlabText(scene, 'scene');
   const session = new Module['Session'](text, Boolean(options && options.quasiStatic));
   const error = session.error();
   if (error) {
@@ -107,13 +131,13 @@ Module['analyze'] = function (scene, options) {
  *  the view: {cone, plus, minus, both}. */
 Module['forceSetLabels'] = function (forceSet, view) {
   const v = momentlabView(view);
-  const text = typeof forceSet === 'string' ? forceSet : JSON.stringify(forceSet);
+  const text = momentlabText(forceSet, 'force set');
   return momentlabAnswer(Module['labels'](text, v[0], v[1], v[2], v[3]));
 };
 
 /** Grasp closure of a scene's contacts, as `momentlab closure --json`: {form_closure,
  *  force_closure, form, force, reference, length, metric}. */
 Module['graspClosure'] = function (scene) {
-  const text = typeof scene === 'string' ? scene : JSON.stringify(scene);
+  const text = momentlabText(scene, 'scene');
   return momentlabAnswer(Module['closure'](text));
 };
