@@ -611,6 +611,25 @@ function start(ml) {
     recompute();
   });
   window.addEventListener('resize', () => app.analysis && recompute());
+  // Zoom (wheel, or + and - keys) about the pointer or the centre: obstacles beyond the first
+  // view come into reach.
+  const zoom = (factor, at) => {
+    const [x0, y0, x1, y1] = app.view;
+    const [cx, cy] = at || [(x0 + x1) / 2, (y0 + y1) / 2];
+    app.view = [cx + (x0 - cx) * factor, cy + (y0 - cy) * factor, cx + (x1 - cx) * factor, cy + (y1 - cy) * factor];
+    app.cache = {};
+    recompute();
+  };
+  svg.addEventListener('wheel', (ev) => {
+    ev.preventDefault();
+    const r = svg.getBoundingClientRect();
+    zoom(ev.deltaY > 0 ? 1.25 : 0.8, screen().world(ev.clientX - r.left, ev.clientY - r.top));
+  }, { passive: false });
+  window.addEventListener('keydown', (ev) => {
+    if (ev.target && ev.target.tagName === 'INPUT') return;
+    if (ev.key === '+' || ev.key === '=') zoom(0.8);
+    if (ev.key === '-' || ev.key === '_') zoom(1.25);
+  });
   app.wrench = wrench;
   app.screen = screen;
   app.loadScene = loadScene;

@@ -174,6 +174,25 @@ test('a friction slider sets the static and kinetic mu of its contact, as the CL
   await page.selectOption('#examples', 'figure-3-block-along-wall');
 });
 
+test('zoom: the wheel and the - key widen the view, so the obstacles come into reach', async () => {
+  const before_ = await page.evaluate(() => window.momentlabApp.view.slice());
+  await page.mouse.move(300, 400);
+  await page.mouse.wheel(0, 200);
+  await page.keyboard.press('-');
+  const after_ = await page.evaluate(() => window.momentlabApp.view.slice());
+  assert.ok(after_[2] - after_[0] > 1.5 * (before_[2] - before_[0]), `${before_} -> ${after_}`);
+  const view = await page.locator('#view').boundingBox();
+  const seen = async () => {
+    const box = await page.locator('[data-handle="obstacle 0 vertex 0"]').boundingBox();
+    return box.x >= view.x && box.y >= view.y && box.x + box.width <= view.x + view.width &&
+           box.y + box.height <= view.y + view.height;
+  };
+  for (let k = 0; k < 4 && !(await seen()); ++k) await page.keyboard.press('-');
+  assert.ok(await seen(), 'obstacle vertex 0 in the picture');
+  await page.selectOption('#examples', 'figure-4-peg-in-hole');
+  await page.selectOption('#examples', 'figure-3-block-along-wall');
+});
+
 test('keyboard: a focused handle moves with the arrow keys', async () => {
   const before_ = await page.evaluate(() => window.momentlabApp.wrench());
   await page.focus('[data-handle="force tip"]');
