@@ -77,7 +77,11 @@ DirectionPlan plan_directions_through(const Vec2& point, const Cone& goal_applie
         if (minor_sign(s.rays()[0], s.rays()[1], 0, 1) == Sign::Negative) std::swap(a, b);
         start = a;
         add_arc(plan.intervals, a, b);
-        width = std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
+        // The width from the intervals' own angles (atan2 of each end), so that the best
+        // direction lies inside them: acos of the ends' dot product loses half the digits for
+        // nearly equal directions (a width of 2e-16 came out as 2e-8).
+        width = 0.0;
+        for (const AngleInterval& i : plan.intervals) width += i.to - i.from;
     }
     plan.margin = width / 2.0;
     plan.best = std::remainder(angle_of(start) + plan.margin, 2.0 * M_PI);

@@ -89,5 +89,21 @@ TEST(Comply, DirectionsAtTheCornerAndAtTheCentreOfMass) {
     EXPECT_EQ(com.directions.intervals[0].to, 0.0);
 }
 
+// A centre a hair's breadth from the contact (0, 0): the spring directions through it that
+// produce rr are nearly the one direction of the contact force's line, an arc of about 1e-16.
+// The best direction lies in the arc and the margin is half of it (they were computed from acos
+// of the ends' dot product, which made the margin 1e-8 and put the best outside the arc).
+TEST(Comply, BestDirectionLiesInItsArcEvenWhenTheArcIsTiny) {
+    const Scene scene = testing::example_scene("figure-3-block-along-wall.json");
+    const auto analysis = analyze(scene);
+    const ComplyPlan near = plan_comply(rr_of(analysis), Vec2(1e-16, 0));
+    ASSERT_EQ(near.directions.intervals.size(), 1u);
+    const AngleInterval& arc = near.directions.intervals[0];
+    EXPECT_LE(arc.from, near.directions.best);
+    EXPECT_LE(near.directions.best, arc.to);
+    EXPECT_LE(near.directions.margin, (arc.to - arc.from) / 2.0 + 1e-300);
+    EXPECT_LT(arc.to - arc.from, 1e-15);
+}
+
 }  // namespace
 }  // namespace momentlab
