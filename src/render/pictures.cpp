@@ -410,6 +410,19 @@ void add_scene(Panel& panel, const Scene& scene, SceneStyle style) {
     }
 }
 
+namespace {
+
+// The scene, faint, over a labels panel (drawn after its regions; the marks stay on top: they
+// are texts).
+void add_faint_scene(Panel& panel, const Scene& scene) {
+    Panel scene_layer;
+    scene_layer.view = panel.view;
+    add_scene(scene_layer, scene, SceneStyle::Faint);
+    panel.shapes.insert(panel.shapes.end(), scene_layer.shapes.begin(), scene_layer.shapes.end());
+}
+
+}  // namespace
+
 Box scene_view(const Scene& scene) {
     std::vector<Vec2> points;
     if (scene.body) {
@@ -509,11 +522,7 @@ Figure scene_sets_figure(const std::string& title, const Scene& scene, const std
     figure.columns = 3;
     for (const ForcePanel& s : sets) {
         Panel p = labels_panel(s, *view);
-        Panel scene_layer;
-        scene_layer.view = *view;
-        add_scene(scene_layer, scene, SceneStyle::Faint);
-        // The scene, faint, over the labels (the marks stay on top: they are texts).
-        p.shapes.insert(p.shapes.end(), scene_layer.shapes.begin(), scene_layer.shapes.end());
+        add_faint_scene(p, scene);
         figure.panels.push_back(std::move(p));
     }
     figure.legend = labels_legend();
@@ -561,12 +570,7 @@ Figure friction_figure(const std::string& title, const Scene& scene, std::option
     }
     if (!view) view = scene_view(scene);
     Figure figure = labels_figure(title, parts, false, sum(cones), view);
-    for (Panel& p : figure.panels) {
-        Panel scene_layer;
-        scene_layer.view = p.view;
-        add_scene(scene_layer, scene, SceneStyle::Faint);
-        p.shapes.insert(p.shapes.end(), scene_layer.shapes.begin(), scene_layer.shapes.end());
-    }
+    for (Panel& p : figure.panels) add_faint_scene(p, scene);
     for (const LegendEntry& e : scene_legend()) figure.legend.push_back(e);
     return figure;
 }
@@ -583,11 +587,8 @@ Figure closure_figure(const std::string& title, const Scene& scene, std::optiona
     for (const auto& [heading, test] : {std::pair<std::string, const ClosureTest*>{"form closure (normals): ", &c.form},
                                          std::pair<std::string, const ClosureTest*>{"force closure (friction cones): ", &c.force}}) {
         Panel panel = labels_panel(ForcePanel{heading + says(*test), test->wrenches, anchors}, *view);
-        Panel scene_layer;
-        scene_layer.view = panel.view;
-        add_scene(scene_layer, scene, SceneStyle::Faint);
-        panel.shapes.insert(panel.shapes.end(), scene_layer.shapes.begin(), scene_layer.shapes.end());
-        figure.panels.push_back(panel);
+        add_faint_scene(panel, scene);
+        figure.panels.push_back(std::move(panel));
     }
     figure.legend = labels_legend();
     for (const LegendEntry& e : scene_legend()) figure.legend.push_back(e);
