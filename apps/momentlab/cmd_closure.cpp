@@ -43,8 +43,8 @@ int run(const ClosureCommandOptions& o) {
     } else {
         print_test("form closure (frictionless contacts)", c.form, true);
         print_test("force closure (each contact's friction cone)", c.force, false);
-        std::cout << "  (quality: " << to_json(c)["metric"].get<std::string>() << "; reference " << fmt(c.reference) << ", length " << fmt(c.length)
-                  << ")\n";
+        std::cout << "  (quality: " << kClosureQualityMetric << "; reference " << fmt(c.reference) << ", length "
+                  << fmt(c.length) << ")\n";
     }
     if (!o.picture.files.empty()) {
         const std::string title = o.picture.title.empty() ? stem(o.file) + ": grasp closure" : o.picture.title;

@@ -98,8 +98,9 @@ int run(const QueryOptions& o) {
     }
     if (o.margin) {
         std::cout << "  margin to the nearest set of another mode: " << said(margins["to_other"])
-                  << "\n  (distances of (fx, fy, tau / L), tau about the reference " << fmt(default_metric(p.scene).reference)
-                  << ", L = " << fmt(default_metric(p.scene).length) << "; docs/design.md, Margins)\n";
+                  << "\n  (distances of (fx, fy, tau / L), tau about the reference ("
+                  << said(margins["metric"]["reference"][0]) << ", " << said(margins["metric"]["reference"][1])
+                  << "), L = " << said(margins["metric"]["length"]) << "; docs/design.md, Margins)\n";
     }
     return 0;
 }

@@ -113,8 +113,7 @@ nlohmann::json to_json(const Closure& c) {
             {"force", closure_test_json(c.force)},
             {"reference", vec(c.reference)},
             {"length", output_value(c.length)},
-            {"metric", "radius of the largest ball about 0 inside the convex hull of the contacts' unit wrenches "
-                       "(fx, fy, tau / length), tau about the reference point"}};
+            {"metric", kClosureQualityMetric}};
 }
 
 }  // namespace momentlab

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "momentlab/geometry/force_sets.hpp"
+#include "momentlab/mechanics/margin.hpp"
 
 namespace momentlab {
 namespace {
@@ -62,45 +63,36 @@ ClosureTest test(const std::vector<ExactVector>& generators, const std::vector<V
     return t;
 }
 
-Vec3 unit_wrench(const Vec2& point, const Vec2& force, const Vec2& reference, double length) {
+// The wrench of a unit force along `force` at `point`, in the metric's scaled space.
+Vec3 unit_wrench(const Vec2& point, const Vec2& force, const WrenchMetric& metric) {
     const Vec2 u = force / force.norm();
-    const Vec2 r = point - reference;
-    return Vec3(u.x(), u.y(), (r.x() * u.y() - r.y() * u.x()) / length);
+    return metric.scaled(Vec3(u.x(), u.y(), point.x() * u.y() - point.y() * u.x()));
 }
 
 }  // namespace
 
 Closure closure(const Scene& scene, const ClosureOptions& options) {
     if (scene.contacts.empty()) throw std::invalid_argument("closure: the scene has no contacts");
-    Closure out;
-    if (options.reference) {
-        out.reference = *options.reference;
-    } else if (scene.body) {
-        out.reference = scene.body->com;
-    } else {
-        Vec2 sum = Vec2::Zero();
-        for (const Contact& c : scene.contacts) sum += c.point;
-        out.reference = sum / static_cast<double>(scene.contacts.size());
-    }
+    // The quality's metric: the margins' defaults (mechanics/margin.hpp), or the options.
+    WrenchMetric metric = default_metric(scene, options.reference);
     if (options.length) {
         if (!(*options.length > 0.0) || !std::isfinite(*options.length)) {
             throw std::invalid_argument("closure: the length must be finite and > 0");
         }
-        out.length = *options.length;
-    } else {
-        double far = 0.0;
-        for (const Contact& c : scene.contacts) far = std::max(far, (c.point - out.reference).norm());
-        out.length = far > 0.0 && std::isfinite(far) ? far : 1.0;
+        metric.length = *options.length;
     }
+    Closure out;
+    out.reference = metric.reference;
+    out.length = metric.length;
     std::vector<ExactVector> normals, edges;
     std::vector<Vec3> unit_normals, unit_edges;
     for (const Contact& c : scene.contacts) {
         normals.push_back(c.normal_wrench());
-        unit_normals.push_back(unit_wrench(c.point, c.normal, out.reference, out.length));
+        unit_normals.push_back(unit_wrench(c.point, c.normal, metric));
         for (const ExactVector& w : friction_cone_edges(c.point, c.normal, c.mu)) {  // n + mu t, n - mu t at p
             edges.push_back(w);
             const Vec3 v = w.value();
-            unit_edges.push_back(unit_wrench(c.point, Vec2(v.x(), v.y()), out.reference, out.length));
+            unit_edges.push_back(unit_wrench(c.point, Vec2(v.x(), v.y()), metric));
         }
     }
     out.form = test(normals, unit_normals);

@@ -29,9 +29,11 @@ Vec3 WrenchMetric::scaled(const Vec3& w) const {
     return Vec3(w.x(), w.y(), torque_here / length);
 }
 
-WrenchMetric default_metric(const Scene& scene) {
+WrenchMetric default_metric(const Scene& scene, std::optional<Vec2> reference) {
     WrenchMetric m;
-    if (scene.body) {
+    if (reference) {
+        m.reference = *reference;
+    } else if (scene.body) {
         m.reference = scene.body->com;
     } else if (!scene.contacts.empty()) {
         Vec2 sum = Vec2::Zero();

@@ -40,6 +40,11 @@ struct ClosureOptions {
     std::optional<double> length;
 };
 
+/// What the quality measures, in words (the CLI and the JSON view say it).
+inline constexpr const char* kClosureQualityMetric =
+    "radius of the largest ball about 0 inside the convex hull of the contacts' unit wrenches (fx, fy, tau / length), "
+    "tau about the reference point";
+
 /// Form and force closure of a scene's contacts (the body is optional).
 struct Closure {
     ClosureTest form;

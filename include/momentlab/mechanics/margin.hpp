@@ -27,9 +27,9 @@ struct WrenchMetric {
     [[nodiscard]] Vec3 scaled(const Vec3& w) const;
 };
 
-/// The body's centre of mass (else the contacts' centroid) and the largest distance of a
-/// contact from it (1 when there is none).
-[[nodiscard]] WrenchMetric default_metric(const Scene& scene);
+/// The reference (default: the body's centre of mass, else the contacts' centroid) and the
+/// largest distance of a contact from it (1 when there is none). Closure's quality uses the same.
+[[nodiscard]] WrenchMetric default_metric(const Scene& scene, std::optional<Vec2> reference = std::nullopt);
 
 /// The distance from w to the closed cone c in the metric (0 when c holds w).
 [[nodiscard]] double distance_to(const Cone& c, const Vec3& w, const WrenchMetric& metric);
