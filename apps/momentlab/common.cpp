@@ -44,20 +44,8 @@ Scene read_scene_file(const std::string& path) {
 Problem load_problem(const std::string& path, const std::string& command, bool quasi_static) {
     Problem p;
     p.scene = read_scene_file(path);
-    if (!p.scene.body && !quasi_static) {
-        throw InputError("$", "missing field \"body\" (" + command + " needs its mass, com and inertia)");
-    }
-    p.analysis = analyze(p.scene, AnalysisOptions{quasi_static});
+    p.analysis = analyze_input(p.scene, command, AnalysisOptions{quasi_static});
     return p;
-}
-
-const ModeForces& find_mode(const std::vector<ModeForces>& analysis, const std::string& letters, const std::string& option) {
-    for (const ModeForces& m : analysis) {
-        if (m.mode.letters == letters) return m;
-    }
-    std::string modes;
-    for (const ModeForces& m : analysis) modes += (modes.empty() ? "" : ", ") + m.mode.letters;
-    throw InputError(option, "no mode \"" + letters + "\" in this scene (its modes: " + modes + ")");
 }
 
 // ---------------------------------------------------------------------------------------------

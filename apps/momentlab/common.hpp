@@ -44,10 +44,7 @@ struct Problem {
 /// names what needs it in the message).
 Problem load_problem(const std::string& path, const std::string& command, bool quasi_static = false);
 
-/// The mode with these letters; an unknown mode is an InputError at `option` that lists the
-/// scene's modes.
-const ModeForces& find_mode(const std::vector<ModeForces>& analysis, const std::string& letters,
-                            const std::string& option);
+// find_mode: io/scene_json.hpp.
 
 // ---------------------------------------------------------------------------------------------
 // Options.

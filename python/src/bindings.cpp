@@ -218,23 +218,9 @@ struct Analysis {
     QueryIndex index;
 
     Analysis(Scene s, bool quasi_static)
-        : scene(checked(std::move(s), quasi_static)), modes(analyze(scene, AnalysisOptions{quasi_static})), index(modes) {}
+        : scene(std::move(s)), modes(analyze_input(scene, "analyze", AnalysisOptions{quasi_static})), index(modes) {}
 
-    static Scene checked(Scene s, bool quasi_static) {
-        if (!s.body && !quasi_static) {
-            throw InputError("$", "missing field \"body\" (analyze needs its mass, com and inertia)");
-        }
-        return s;
-    }
-
-    const ModeForces& mode(const std::string& letters, const char* option) const {
-        for (const ModeForces& m : modes) {
-            if (m.mode.letters == letters) return m;
-        }
-        std::string all;
-        for (const ModeForces& m : modes) all += (all.empty() ? "" : ", ") + m.mode.letters;
-        throw InputError(option, "no mode \"" + letters + "\" in this scene (its modes: " + all + ")");
-    }
+    const ModeForces& mode(const std::string& letters, const char* option) const { return find_mode(modes, letters, option); }
 };
 
 // The modes of a batch of wrenches, one row per wrench, without the interpreter's lock.

@@ -175,4 +175,21 @@ json to_json(const Scene& scene) {
     return doc;
 }
 
+std::vector<ModeForces> analyze_input(const Scene& scene, const std::string& command, const AnalysisOptions& options) {
+    if (!scene.body && !options.quasi_static) {
+        throw InputError("$", "missing field \"body\" (" + command + " needs its mass, com and inertia)");
+    }
+    return analyze(scene, options);
+}
+
+const ModeForces& find_mode(const std::vector<ModeForces>& analysis, const std::string& letters,
+                            const std::string& where) {
+    for (const ModeForces& m : analysis) {
+        if (m.mode.letters == letters) return m;
+    }
+    std::string modes;
+    for (const ModeForces& m : analysis) modes += (modes.empty() ? "" : ", ") + m.mode.letters;
+    throw InputError(where, "no mode \"" + letters + "\" in this scene (its modes: " + modes + ")");
+}
+
 }  // namespace momentlab

@@ -69,10 +69,7 @@ public:
     Session(const std::string& scene_text, bool quasi_static) {
         try {
             scene_ = read_scene_text(scene_text, &warnings_);
-            if (!scene_.body && !quasi_static) {
-                throw InputError("$", "missing field \"body\" (analyze needs its mass, com and inertia)");
-            }
-            analysis_ = analyze(scene_, AnalysisOptions{quasi_static});
+            analysis_ = analyze_input(scene_, "analyze", AnalysisOptions{quasi_static});
             index_.emplace(analysis_);
         } catch (const std::exception& e) {
             error_ = e.what();
@@ -167,14 +164,7 @@ public:
     [[nodiscard]] std::string scene_json() const { return to_json(scene_).dump(); }
 
 private:
-    const ModeForces& find(const std::string& letters) const {
-        for (const ModeForces& m : analysis_) {
-            if (m.mode.letters == letters) return m;
-        }
-        std::string all;
-        for (const ModeForces& m : analysis_) all += (all.empty() ? "" : ", ") + m.mode.letters;
-        throw InputError("mode", "no mode \"" + letters + "\" in this scene (its modes: " + all + ")");
-    }
+    const ModeForces& find(const std::string& letters) const { return find_mode(analysis_, letters, "mode"); }
 
     Scene scene_;
     std::vector<ModeForces> analysis_;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "momentlab/io/input_error.hpp"
+#include "momentlab/mechanics/analysis.hpp"
 #include "momentlab/mechanics/scene.hpp"
 
 namespace momentlab {
@@ -26,6 +27,17 @@ namespace momentlab {
 /// so that read_scene gives back the same scene: normals as given, and the radius of gyration
 /// instead of the inertia when the scene was given one.
 [[nodiscard]] nlohmann::json to_json(const Scene& scene);
+
+/// The analysis of a scene a user gave, with the message the CLI, Python and the web module all
+/// give when the dynamic model lacks the body: an InputError at "$" naming `command`, what needs
+/// the body's mass, com and inertia.
+[[nodiscard]] std::vector<ModeForces> analyze_input(const Scene& scene, const std::string& command,
+                                                    const AnalysisOptions& options = {});
+
+/// The mode a user named by its letters; an unknown mode is an InputError at `where` that lists
+/// the scene's modes.
+[[nodiscard]] const ModeForces& find_mode(const std::vector<ModeForces>& analysis, const std::string& letters,
+                                          const std::string& where);
 
 /// Parses `text` as JSON and reads the scene.
 [[nodiscard]] Scene read_scene_text(const std::string& text, InputWarnings* warnings = nullptr);
