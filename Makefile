@@ -29,9 +29,11 @@ SMOKE_SECONDS ?= 5
 all: build
 
 # Install the Debian packages that are missing (needs root or sudo; no-op when all present).
+# npm only when there is no npm command: Debian's nodejs has none, other nodejs builds bring theirs.
 deps:
 	@missing=$$(for p in $(APT_PACKAGES); do \
 	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
+	command -v npm >/dev/null || missing="$$missing npm"; \
 	if [ -n "$$missing" ]; then \
 	    echo "Installing:" $$missing; \
 	    SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
