@@ -47,9 +47,12 @@ function cliQueries(file, wrenches) {
   return execFileSync(CLI, ['query', file, '--wrenches', list], { encoding: 'utf8' }).trim().split('\n').map((l) => JSON.parse(l).modes);
 }
 
+// A handle's centre on the page, measured in one step (a redraw replaces the handles' elements).
 async function centreOf(name) {
-  const box = await page.locator(`[data-handle="${name}"]`).boundingBox();
-  return [box.x + box.width / 2, box.y + box.height / 2];
+  return page.evaluate((handle) => {
+    const box = document.querySelector(`[data-handle="${handle}"]`).getBoundingClientRect();
+    return [box.left + box.width / 2, box.top + box.height / 2];
+  }, name);
 }
 
 test('opens from disk on Figure 3 with its ten modes and no console error', async () => {
@@ -181,12 +184,13 @@ test('zoom: the wheel and the - key widen the view, so the obstacles come into r
   await page.keyboard.press('-');
   const after_ = await page.evaluate(() => window.momentlabApp.view.slice());
   assert.ok(after_[2] - after_[0] > 1.5 * (before_[2] - before_[0]), `${before_} -> ${after_}`);
-  const view = await page.locator('#view').boundingBox();
-  const seen = async () => {
-    const box = await page.locator('[data-handle="obstacle 0 vertex 0"]').boundingBox();
-    return box.x >= view.x && box.y >= view.y && box.x + box.width <= view.x + view.width &&
-           box.y + box.height <= view.y + view.height;
-  };
+  // Measured in one step in the page: a redraw (the push table follows a frame) replaces the
+  // handle's element between two of the test's calls.
+  const seen = () => page.evaluate(() => {
+    const box = document.querySelector('[data-handle="obstacle 0 vertex 0"]').getBoundingClientRect();
+    const view = document.getElementById('view').getBoundingClientRect();
+    return box.left >= view.left && box.top >= view.top && box.right <= view.right && box.bottom <= view.bottom;
+  });
   for (let k = 0; k < 4 && !(await seen()); ++k) await page.keyboard.press('-');
   assert.ok(await seen(), 'obstacle vertex 0 in the picture');
   await page.selectOption('#examples', 'figure-4-peg-in-hole');
@@ -217,8 +221,10 @@ test('touch: dragging the force with a finger', async () => {
   const touchPage = await context.newPage();
   await touchPage.goto(`file://${join(WEB, 'index.html')}`);
   await touchPage.waitForFunction(() => window.momentlabApp && window.momentlabApp.ready, null, { timeout: 30000 });
-  const box = await touchPage.locator('[data-handle="force tip"]').boundingBox();
-  const [x, y] = [box.x + box.width / 2, box.y + box.height / 2];
+  const [x, y] = await touchPage.evaluate(() => {
+    const box = document.querySelector('[data-handle="force tip"]').getBoundingClientRect();
+    return [box.left + box.width / 2, box.top + box.height / 2];
+  });
   const cdp = await context.newCDPSession(touchPage);
   const touch = (type, px, py) => cdp.send('Input.dispatchTouchEvent',
                                            { type, touchPoints: type === 'touchEnd' ? [] : [{ x: px, y: py }] });
