@@ -27,7 +27,35 @@ struct PlanOptions {
     bool ignore_interference = false;
     std::vector<double> centre;
     bool quasi_static = false;
+    std::vector<double> gravity;
+    std::vector<double> fixed;
 };
+
+// Arcs as text: "[0, 1.5708], 3.14159 only".
+std::string arcs_text(const std::vector<AngleInterval>& arcs) {
+    std::string out;
+    for (const AngleInterval& i : arcs) {
+        out += out.empty() ? "" : ", ";
+        out += i.from == i.to ? fmt(i.from) + " only" : "[" + fmt(i.from) + ", " + fmt(i.to) + "]";
+    }
+    return out.empty() ? "none" : out;
+}
+
+// The margins of a best action (a unit force) in the wrench metric.
+std::string margins_text(const QueryMargins& m) {
+    const auto said = [](double d) { return std::isfinite(d) ? fmt(d) : std::string("unbounded"); };
+    return "margin " + said(m.inside.empty() ? 0.0 : m.inside.front()) + " to the boundary of the goal's set, " +
+           (m.to_other ? said(*m.to_other) : std::string("unbounded")) + " to the nearest other mode's set";
+}
+
+// The context of a plan: every mode, the metric of margins, and the fixed wrench.
+PlanContext plan_context(const Scene& scene, const std::vector<ModeForces>& analysis, const std::optional<Exact3>& fixed) {
+    PlanContext context;
+    context.modes = analysis;
+    context.fixed = fixed;
+    context.metric = default_metric(scene);
+    return context;
+}
 
 // The intervals, a single direction said as such; the best direction and its margin only when
 // some direction lies inside E_goal (`knife_edge`: every solution is on its boundary).
@@ -43,9 +71,31 @@ void print_directions(const DirectionPlan& plan, bool knife_edge) {
     if (knife_edge) {
         std::cout << "  a knife edge: every such direction lies on the boundary of the goal's set, no margin\n";
     } else {
-        std::cout << "  best " << fmt(plan.best) << " (" << degrees(plan.best) << "), margin " << fmt(plan.margin)
-                  << " (" << degrees(plan.margin) << ") to the nearest boundary\n";
+        std::cout << "  best " << fmt(plan.best) << " (" << degrees(plan.best) << "), margin " << fmt(plan.margin) << " ("
+                  << degrees(plan.margin) << ") to the nearest "
+                  << (plan.best_unique ? "direction where the goal is not alone" : "boundary") << "\n";
     }
+    if (plan.uniqueness_known) {
+        std::cout << "  the goal alone: " << arcs_text(plan.unique) << "\n  shared with another mode: " << arcs_text(plan.shared)
+                  << "\n";
+        if (!plan.best_unique && !knife_edge) std::cout << "  (no arc where the goal is alone: the best direction is shared)\n";
+    }
+    if (plan.best_margins && !knife_edge) {
+        std::cout << "  the best direction as a unit force: " << margins_text(*plan.best_margins)
+                  << " (docs/design.md, Margins)\n";
+    }
+    if (plan.magnitudes_known && !knife_edge) {
+        std::cout << "  magnitudes along the best direction that give the goal: "
+                  << (plan.best_magnitudes ? magnitude_text(*plan.best_magnitudes) : std::string("none (only in the limit)"))
+                  << "\n";
+    }
+}
+
+// The bands of magnitudes of the force through `point` along `angle`, added to the fixed wrench.
+void print_best_bands(const std::vector<ModeForces>& analysis, const Exact3& fixed, const Vec2& point, double angle) {
+    const Vec2 d(std::cos(angle), std::sin(angle));
+    std::cout << "  along the best direction, the force's magnitude from 0 up (with the fixed wrench):\n";
+    print_bands(magnitude_bands(analysis, fixed, wrench_through(exact(point), exact(d))), analysis);
 }
 
 // Every interval a single direction.
@@ -59,17 +109,24 @@ int run_tilt(const PlanOptions& o) {
     const Problem p = load_problem(o.file, "plan tilt", o.quasi_static);
     const Scene& scene = p.scene;
     const ModeForces& goal = find_mode(p.analysis, o.goal, "--goal");
-    const DirectionPlan plan = plan_tilt(scene, goal);
+    if (!o.gravity.empty()) {
+        throw InputError("--gravity", "a tilt turns gravity itself: give a fixed wrench acting besides it with --wrench");
+    }
+    const std::optional<Exact3> fixed = fixed_wrench(scene, {}, o.fixed);
+    const DirectionPlan plan = plan_tilt(scene, goal, plan_context(scene, p.analysis, fixed));
     if (o.json) {
         nlohmann::json out = to_json(plan);
         out["goal"] = o.goal;
+        if (fixed) out["fixed"] = {output_value(to_double(*fixed).x()), output_value(to_double(*fixed).y()), output_value(to_double(*fixed).z())};
         std::cout << out.dump() << "\n";
     } else if (!plan.feasible()) {
         std::cout << "no tilt produces mode " << o.goal << " (W \u2229 E is {0})\n";
     } else {
         std::cout << "tilts that produce mode " << o.goal
                   << ": gravity directions, radians from +x (boundaries shared with a neighbouring mode)\n";
+        if (fixed) std::cout << "  with the fixed wrench " << fmt(to_double(*fixed)) << " acting too\n";
         print_directions(plan, single_directions(plan));
+        if (fixed) print_best_bands(p.analysis, *fixed, scene.body->com, plan.best);
     }
     if (!o.picture.files.empty()) {
         const std::string title = o.picture.title.empty() ? stem(o.file) + ": tilts that produce mode " + o.goal
@@ -89,8 +146,9 @@ int run_comply(const PlanOptions& o) {
     const Scene& scene = p.scene;
     const ModeForces& goal = find_mode(p.analysis, o.goal, "--goal");
     const Labels region = compliance_labels(goal);
+    const std::optional<Exact3> fixed = fixed_wrench(scene, o.gravity, o.fixed);
     std::optional<ComplyPlan> plan;
-    if (!centre.empty()) plan = plan_comply(goal, centre.front());
+    if (!centre.empty()) plan = plan_comply(goal, centre.front(), plan_context(scene, p.analysis, fixed));
     if (o.json) {
         nlohmann::json out = {{"goal", o.goal}, {"labels", to_json(region)}};
         if (plan) {
@@ -110,6 +168,7 @@ int run_comply(const PlanOptions& o) {
             } else {
                 std::cout << "; spring force (offset) directions, radians from +x:\n";
                 print_directions(plan->directions, plan->verdict != CentreVerdict::Works);
+                if (fixed) print_best_bands(p.analysis, *fixed, plan->centre, plan->directions.best);
             }
         }
     }
@@ -127,6 +186,7 @@ std::string case_line(const PushCase& c) {
     std::ostringstream s;
     s << "  " << std::left << std::setw(10) << c.feature.name() << std::setw(6) << letter(c.slip) << std::setw(10)
       << to_string(c.verdict);
+    if (c.uniqueness_known) s << std::setw(8) << (c.unique && c.shared ? "both" : c.unique ? "alone" : c.shared ? "shared" : "");
     std::string where;
     for (const auto& [p, q] : c.touch) where += (where.empty() ? "" : ", ") + (p == q ? fmt(p) : fmt(p) + " - " + fmt(q));
     s << std::setw(34) << where;
@@ -155,8 +215,9 @@ int run_push(const PlanOptions& o) {
     const std::vector<ModeForces> analysis = analyze(scene, AnalysisOptions{o.quasi_static});
     const ModeForces& goal = find_mode(analysis, o.goal, "--goal");
     const PushOptions options{o.mu, o.ignore_interference};
+    const std::optional<Exact3> fixed = fixed_wrench(scene, o.gravity, o.fixed);
     std::vector<PushCase> cases;
-    for (PushCase& c : plan_push(scene, goal, options)) {
+    for (PushCase& c : plan_push(scene, goal, options, plan_context(scene, analysis, fixed))) {
         const bool is_edge = c.feature.kind == PushFeature::Kind::Edge;
         const bool feature_ok = (!o.edge && !o.vertex) || (o.edge && is_edge && c.feature.index == *o.edge) ||
                                 (o.vertex && !is_edge && c.feature.index == *o.vertex);
@@ -165,17 +226,36 @@ int run_push(const PlanOptions& o) {
     const char* interference = o.ignore_interference ? "ignored" : "considered";
     if (o.json) {
         nlohmann::json out = {{"goal", o.goal}, {"mu", o.mu}, {"interference", interference}, {"cases", nlohmann::json::array()}};
+        if (fixed) out["fixed"] = {output_value(to_double(*fixed).x()), output_value(to_double(*fixed).y()), output_value(to_double(*fixed).z())};
         for (const PushCase& c : cases) out["cases"].push_back(to_json(c));
         std::cout << out.dump() << "\n";
     } else {
         const auto feasible = std::count_if(cases.begin(), cases.end(), [](const PushCase& c) { return c.feasible(); });
         std::cout << "pushing into mode " << o.goal << ": a point finger with mu = " << fmt(o.mu) << ", obstacles "
                   << interference << "; " << feasible << " of " << cases.size() << " cases feasible\n";
-        std::cout << "  " << std::left << std::setw(10) << "feature" << std::setw(6) << "slip" << std::setw(10)
-                  << "verdict" << std::setw(34) << "touch" << "push directions (from +x)\n";
+        if (fixed) std::cout << "  with the fixed wrench " << fmt(to_double(*fixed)) << " (--gravity, --wrench) acting too\n";
+        std::cout << "  " << std::left << std::setw(10) << "feature" << std::setw(6) << "slip" << std::setw(10) << "verdict"
+                  << std::setw(8) << (fixed ? "" : "goal") << std::setw(34) << "touch" << "push directions (from +x)\n";
         for (const PushCase& c : cases) std::cout << case_line(c) << "\n";
         std::cout << "  (feasible: some push lies inside E_" << o.goal << "; boundary: only on its boundary, a knife edge;\n"
-                  << "   blocked: only where obstacles leave no room; docs/planning.md)\n";
+                  << "   blocked: only where obstacles leave no room; goal: alone, shared with another mode, or both\n"
+                  << "   in parts; docs/planning.md)\n";
+        for (const PushCase& c : cases) {
+            if (!c.best || c.verdict != PushVerdict::Feasible) continue;
+            std::cout << "  " << c.feature.name() << " slip " << letter(c.slip) << ": best push " << fmt(c.best->direction)
+                      << " at " << fmt(c.best->point) << (c.best_unique ? " (the goal alone)" : "");
+            if (c.best_margins) std::cout << "; as a unit force, " << margins_text(*c.best_margins);
+            if (c.magnitudes_known) {
+                std::cout << "; magnitudes "
+                          << (c.best_magnitudes ? magnitude_text(*c.best_magnitudes) : std::string("none (only in the limit)"));
+            }
+            std::cout << "\n";
+            if (fixed && cases.size() == 1) {
+                std::cout << "  the best push's magnitude from 0 up (with the fixed wrench):\n";
+                print_bands(magnitude_bands(analysis, *fixed, wrench_through(exact(c.best->point), exact(c.best->direction))),
+                            analysis);
+            }
+        }
     }
     if (!o.picture.files.empty() && !cases.empty()) {
         const PushCase& c = cases.front();
@@ -222,6 +302,18 @@ std::function<int()> add_plan_command(CLI::App& app) {
     comply->add_option("--centre", opts->centre, "the compliance centre X Y")->expected(2, 2)->transform(number_check());
     comply->add_flag("--json", opts->json, "machine-readable output: {\"labels\": ..., \"centre\": {\"intervals\": ...}}");
     add_picture_options(comply, opts->picture, false);
+    tilt->add_option("--gravity", opts->gravity, "not for tilts: gravity is what a tilt turns")->expected(2);
+    tilt->add_option("--wrench", opts->fixed, "FX FY TAU: a wrench acting besides the tilted gravity (docs/planning.md)")
+        ->expected(3)
+        ->transform(number_check());
+    for (CLI::App* cmd : {push, comply}) {
+        cmd->add_option("--gravity", opts->gravity, "GX GY: gravity acting on the body through its centre of mass, besides the push")
+            ->expected(2)
+            ->transform(number_check());
+        cmd->add_option("--wrench", opts->fixed, "FX FY TAU: a fixed wrench acting besides the push (docs/planning.md)")
+            ->expected(3)
+            ->transform(number_check());
+    }
     for (CLI::App* cmd : {tilt, push, comply}) cmd->add_flag("--quasi-static", opts->quasi_static, "neglect inertia: the applied wrench balances the contact wrench, E = -T (docs/design.md)");
     return [opts, tilt, push, comply] {
         if (tilt->parsed()) return run_tilt(*opts);

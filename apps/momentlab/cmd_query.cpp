@@ -16,7 +16,34 @@ struct QueryOptions {
     bool json = false;
     bool quasi_static = false;
     bool margin = false;
+    std::vector<double> push;
+    std::vector<double> gravity;
 };
+
+// `--push X Y DX DY`: the force of direction (DX, DY) through (X, Y), its magnitude from 0 up, added
+// to the fixed wrench (--gravity, --wrench): which modes at which magnitudes.
+int run_push_line(const QueryOptions& o, const Problem& p) {
+    if (!o.wrenches.empty()) throw InputError("--push", "give --push with one question, not --wrenches");
+    const std::vector<Vec2> at = checked_points(o.push, "--push", 2);
+    if (at[1].isZero()) throw InputError("--push", "the direction DX DY must not be zero");
+    const std::optional<Exact3> fixed = fixed_wrench(p.scene, o.gravity, o.wrench);
+    const Exact3 g = fixed ? *fixed : Exact3{};
+    const std::vector<MagnitudeBand> bands = magnitude_bands(p.analysis, g, wrench_through(exact(at[0]), exact(at[1])));
+    if (o.json) {
+        const Vec3 gv = to_double(g);
+        nlohmann::json out = {{"point", {output_value(at[0].x()), output_value(at[0].y())}},
+                              {"direction", {output_value(at[1].x()), output_value(at[1].y())}},
+                              {"fixed", {output_value(gv.x()), output_value(gv.y()), output_value(gv.z())}},
+                              {"bands", to_json(bands, p.analysis)}};
+        std::cout << out.dump() << "\n";
+        return 0;
+    }
+    std::cout << "the force lambda (" << fmt(at[1]) << ") through " << fmt(at[0]) << ", lambda from 0 up";
+    if (fixed) std::cout << ", added to the fixed wrench " << fmt(to_double(g));
+    std::cout << ":\n";
+    print_bands(bands, p.analysis);
+    return 0;
+}
 
 // A margin as JSON: a number, or "unbounded" (E = R^3, or no other mode's set to reach).
 nlohmann::json margin_json(double d) { return std::isfinite(d) ? nlohmann::json(output_value(d)) : nlohmann::json("unbounded"); }
@@ -71,6 +98,11 @@ void answer_file(const Problem& p, const std::string& path, bool margin) {
 }
 
 int run(const QueryOptions& o) {
+    if (!o.push.empty()) {
+        if (o.margin) throw InputError("--margin", "give --margin with one wrench, not with --push");
+        return run_push_line(o, load_problem(o.file, "query", o.quasi_static));
+    }
+    if (!o.gravity.empty()) throw InputError("--gravity", "gravity goes with --push (a fixed wrench plus a push)");
     if (o.wrenches.empty() && o.wrench.size() != 3) {
         throw InputError("--wrench", "expected three numbers FX FY TAU (or --wrenches FILE)");
     }
@@ -119,6 +151,14 @@ std::function<int()> add_query_command(CLI::App& app) {
                          [](std::string& s) { return s.empty() ? std::string("expected a file name, got an empty string") : ""; },
                          "FILE"));
     one->excludes(many);
+    cmd->add_option("--push", opts->push,
+                    "X Y DX DY: a force of direction (DX, DY) through (X, Y) whose magnitude runs from 0 up, added to the "
+                    "fixed wrench (--gravity, and --wrench then names a fixed wrench): which modes at which magnitudes")
+        ->expected(4)
+        ->transform(number_check());
+    cmd->add_option("--gravity", opts->gravity, "GX GY: with --push, gravity on the body through its centre of mass")
+        ->expected(2)
+        ->transform(number_check());
     cmd->add_flag("--json", opts->json, "machine-readable output");
     cmd->add_flag("--margin", opts->margin,
                   "how far the wrench may move before the answer changes: to the boundary of each returned mode's set "

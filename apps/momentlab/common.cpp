@@ -95,6 +95,46 @@ Vec3 checked_wrench(double fx, double fy, double tau, const std::string& where) 
     return e;
 }
 
+std::optional<Exact3> fixed_wrench(const Scene& scene, const std::vector<double>& gravity, const std::vector<double>& wrench,
+                                   const std::string& gravity_option, const std::string& wrench_option) {
+    std::optional<Exact3> out;
+    if (!gravity.empty()) {
+        const Vec2 g = checked_points(gravity, gravity_option, 1).front();
+        if (!scene.body) throw InputError("$", "missing field \"body\" (" + gravity_option + " acts on its mass through its centre of mass)");
+        out = gravity_wrench(*scene.body, g);
+    }
+    if (!wrench.empty()) {
+        if (wrench.size() != 3) throw InputError(wrench_option, "expected three numbers FX FY TAU");
+        const Exact3 w = exact(checked_wrench(wrench[0], wrench[1], wrench[2], wrench_option));
+        out = out ? *out + w : w;
+    }
+    return out;
+}
+
+std::string magnitude_text(const MagnitudeRange& range) {
+    if (!range.hi) return "from " + fmt(range.lo.value()) + " up";
+    if (compare(range.lo, *range.hi) == 0) return fmt(range.lo.value()) + " only";
+    return "from " + fmt(range.lo.value()) + " to " + fmt(range.hi->value());
+}
+
+void print_bands(const std::vector<MagnitudeBand>& bands, const std::vector<ModeForces>& analysis) {
+    for (const MagnitudeBand& b : bands) {
+        std::string range;
+        if (b.to && compare(b.from, *b.to) == 0) {
+            range = fmt(b.from.value()) + " only";
+        } else {
+            range = std::string(b.from_closed ? "[" : "(") + fmt(b.from.value()) + ", " +
+                    (b.to ? fmt(b.to->value()) + (b.to_closed ? "]" : ")") : std::string("unbounded)"));
+        }
+        std::string modes;
+        for (std::size_t j : b.modes) modes += (modes.empty() ? "" : " ") + analysis[j].mode.letters;
+        if (modes.empty()) modes = "(no mode)";
+        std::string line = "  " + range;
+        line.resize(std::max<std::size_t>(line.size() + 2, 30), ' ');
+        std::cout << line << modes << "   " << to_string(verdict_of(b.modes.size())) << "\n";
+    }
+}
+
 std::vector<Vec2> checked_points(const std::vector<double>& values, const std::string& option,
                                  std::optional<std::size_t> count) {
     if (values.size() % 2 != 0 || (count && values.size() != 2 * *count)) {

@@ -60,6 +60,16 @@ const CLI::Validator& index_check();
 /// coordinate of magnitude 1e-60 .. 1e60, like every vector read (docs/reliability.md).
 Vec3 checked_wrench(double fx, double fy, double tau, const std::string& where);
 
+/// The wrench acting whatever the controller does: gravity (--gravity GX GY, an acceleration
+/// through the body's centre of mass) plus --wrench FX FY TAU, exactly; none when neither is given.
+/// `gravity_option`/`wrench_option` name the options in messages.
+std::optional<Exact3> fixed_wrench(const Scene& scene, const std::vector<double>& gravity, const std::vector<double>& wrench,
+                                   const std::string& gravity_option = "--gravity", const std::string& wrench_option = "--wrench");
+/// "from 4.905 to 9.81", "9.81 only", "from 4.905 up": a range of magnitudes.
+std::string magnitude_text(const MagnitudeRange& range);
+/// The magnitude bands, one per line: "  [0, 4.905)   ff   unique".
+void print_bands(const std::vector<MagnitudeBand>& bands, const std::vector<ModeForces>& analysis);
+
 /// Points given as a flat list X Y X Y ... (--at, --centre): an even count of finite numbers in
 /// range; `count` pairs when given.
 std::vector<Vec2> checked_points(const std::vector<double>& values, const std::string& option,

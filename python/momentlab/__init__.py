@@ -41,7 +41,7 @@ from . import _momentlab
 __all__ = [
     "Analysis", "Body", "Cone", "Contact", "Labels", "ModeSets", "Region", "Scene",
     "analyze", "closure", "contacts", "find_contacts", "force", "force_set_from_json", "forces_through_point",
-    "friction_cone", "labels", "line_of_force", "plan_comply", "plan_push", "plan_tilt",
+    "friction_cone", "labels", "line_of_force", "plan_comply", "plan_push", "plan_tilt", "push_line",
     "pure_moments",
 ]
 
@@ -391,20 +391,32 @@ def _analysis_of(what) -> Analysis:
     raise ValueError("expected a momentlab.Scene or Analysis")
 
 
-def plan_tilt(scene, goal: str) -> dict:
+def plan_tilt(scene, goal: str, wrench=None) -> dict:
     """The tilts (gravity directions, radians from +x) that produce mode `goal`:
-    {'goal', 'intervals': [[from, to], ...], 'best', 'margin'} (best and margin when feasible)."""
-    return _analysis_of(scene)._analysis.plan_tilt(_goal(goal))
+    {'goal', 'intervals': [[from, to], ...], 'best', 'margin', 'unique', 'shared', 'best_unique',
+    'best_margins'} (best and the rest when feasible). With `wrench` (FX, FY, TAU) acting besides
+    the tilted force, the directions for which some magnitude works and 'best_magnitudes'."""
+    return _analysis_of(scene)._analysis.plan_tilt(_goal(goal), wrench)
 
 
-def plan_push(scene, goal: str, mu: float = 0.5, ignore_interference: bool = False) -> list:
+def plan_push(scene, goal: str, mu: float = 0.5, ignore_interference: bool = False, gravity=None, wrench=None) -> list:
     """The pushing table for mode `goal`: one dict per feature (edge, vertex) and finger slip
-    (l, f, r) with 'verdict', 'feasible', 'touch', 'directions' and 'best' (docs/planning.md)."""
-    return _analysis_of(scene)._analysis.plan_push(_goal(goal), _number(mu, "mu"), bool(ignore_interference))
+    (l, f, r) with 'verdict', 'feasible', 'touch', 'directions', 'best', and whether the goal is
+    'unique' or 'shared' there (docs/planning.md). With `gravity` (GX, GY) and/or a fixed `wrench`
+    acting besides the push: the pushes for which some magnitude works, with 'best_magnitudes'."""
+    return _analysis_of(scene)._analysis.plan_push(_goal(goal), _number(mu, "mu"), bool(ignore_interference), gravity, wrench)
 
 
-def plan_comply(scene, goal: str, centre=None) -> dict:
+def plan_comply(scene, goal: str, centre=None, gravity=None, wrench=None) -> dict:
     """Compliance: {'goal', 'labels': {'plus', 'minus'} regions of E_goal as plain data (the
     centres outside both work), 'centre': {'point', 'label', 'verdict', 'intervals', 'best',
-    'margin'}} for a given centre (as `plan comply --json`)."""
-    return _analysis_of(scene)._analysis.plan_comply(_goal(goal), centre)
+    'margin', 'unique', 'shared', ...}} for a given centre (as `plan comply --json`)."""
+    return _analysis_of(scene)._analysis.plan_comply(_goal(goal), centre, gravity, wrench)
+
+
+def push_line(scene, point, direction, gravity=None, wrench=None) -> list:
+    """The force lambda * direction through `point`, lambda from 0 up, added to the fixed wrench
+    (`gravity` through the centre of mass, plus `wrench`): a list of bands {'from', 'to',
+    'from_closed', 'to_closed', 'modes', 'verdict'} ('to' is 'unbounded' for the last), as
+    `momentlab query --push X Y DX DY --json` gives them."""
+    return _analysis_of(scene)._analysis.push_line(point, direction, gravity, wrench)

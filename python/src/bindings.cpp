@@ -257,6 +257,24 @@ std::vector<std::string> query_one(const Analysis& a, const py::handle& wrench) 
 
 std::string label_text(Label l) { return to_string(l); }
 
+// A plan's context: every mode, the margins' metric, and the fixed wrench of `gravity` (GX, GY
+// through the centre of mass) plus `wrench` (FX, FY, TAU), either may be None.
+PlanContext context_of(const Analysis& a, const py::handle& gravity, const py::handle& wrench) {
+    PlanContext context;
+    context.modes = a.modes;
+    context.metric = default_metric(a.scene);
+    if (!gravity.is_none()) {
+        const Vec2 g = vector_of<2>(gravity, "gravity");
+        if (!a.scene.body) throw InputError("$", "missing field \"body\" (gravity acts on its mass through its centre of mass)");
+        context.fixed = gravity_wrench(*a.scene.body, g);
+    }
+    if (!wrench.is_none()) {
+        const Exact3 w = exact(vector_of<3>(wrench, "wrench"));
+        context.fixed = context.fixed ? *context.fixed + w : w;
+    }
+    return context;
+}
+
 }  // namespace
 }  // namespace momentlab::python
 
@@ -438,31 +456,46 @@ PYBIND11_MODULE(_momentlab, m) {
              })
         .def("query_batch", &query_batch)
         .def("plan_tilt",
-             [](const Analysis& a, const std::string& goal) {
-                 py::dict out = python_of(to_json(plan_tilt(a.scene, a.mode(goal, "goal"))));
+             [](const Analysis& a, const std::string& goal, const py::handle& wrench) {
+                 const PlanContext context = context_of(a, py::none(), wrench);
+                 py::dict out = python_of(to_json(plan_tilt(a.scene, a.mode(goal, "goal"), context)));
                  out["goal"] = goal;
                  return out;
              })
         .def("plan_push",
-             [](const Analysis& a, const std::string& goal, double mu, bool ignore_interference) {
+             [](const Analysis& a, const std::string& goal, double mu, bool ignore_interference, const py::handle& gravity,
+                const py::handle& wrench) {
                  if (!(mu >= 0.0) || !std::isfinite(mu) || !magnitude_in_range(mu)) {
                      throw InputError("mu", "expected a finite mu >= 0 (0 or 1e-60 .. 1e60)");
                  }
                  if (!a.scene.body || a.scene.body->polygon.size() < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
+                 const PlanContext context = context_of(a, gravity, wrench);
                  py::list out;
-                 for (const PushCase& c : plan_push(a.scene, a.mode(goal, "goal"), PushOptions{mu, ignore_interference})) {
+                 for (const PushCase& c : plan_push(a.scene, a.mode(goal, "goal"), PushOptions{mu, ignore_interference}, context)) {
                      out.append(python_of(to_json(c)));
                  }
                  return out;
              })
         .def("plan_comply",
-             [](const Analysis& a, const std::string& goal, const py::handle& centre) {
+             [](const Analysis& a, const std::string& goal, const py::handle& centre, const py::handle& gravity,
+                const py::handle& wrench) {
                  const ModeForces& g = a.mode(goal, "goal");
+                 const PlanContext context = context_of(a, gravity, wrench);
                  py::dict out;
                  out["goal"] = goal;
                  out["labels"] = python_of(to_json(compliance_labels(g)));  // plain data, as the CLI writes it
-                 if (!centre.is_none()) out["centre"] = python_of(to_json(plan_comply(g, vector_of<2>(centre, "centre"))));
+                 if (!centre.is_none()) out["centre"] = python_of(to_json(plan_comply(g, vector_of<2>(centre, "centre"), context)));
                  return out;
+             })
+        .def("push_line",
+             [](const Analysis& a, const py::handle& point, const py::handle& direction, const py::handle& gravity,
+                const py::handle& wrench) {
+                 const Vec2 p = vector_of<2>(point, "point");
+                 const Vec2 d = vector_of<2>(direction, "direction");
+                 if (d.isZero()) throw InputError("direction", "must not be zero");
+                 const PlanContext context = context_of(a, gravity, wrench);
+                 const Exact3 fixed = context.fixed ? *context.fixed : Exact3{};
+                 return python_of(to_json(magnitude_bands(a.modes, fixed, wrench_through(exact(p), exact(d))), a.modes));
              });
 
     // Force sets of the paper's Figure 1, their combinations and files.

@@ -53,13 +53,56 @@ nlohmann::json to_json(const Labels& labels) {
 }
 
 
+namespace {
+
+nlohmann::json intervals_json(const std::vector<AngleInterval>& intervals) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const AngleInterval& i : intervals) out.push_back({output_value(i.from), output_value(i.to)});
+    return out;
+}
+
+nlohmann::json distance_json(double d) { return std::isfinite(d) ? nlohmann::json(output_value(d)) : nlohmann::json("unbounded"); }
+
+}  // namespace
+
+nlohmann::json to_json(const MagnitudeRange& range) {
+    return {{"from", output_value(range.lo.value())},
+            {"to", range.hi ? nlohmann::json(output_value(range.hi->value())) : nlohmann::json("unbounded")}};
+}
+
+nlohmann::json to_json(const QueryMargins& margins) {
+    nlohmann::json inside = nlohmann::json::array();
+    for (double d : margins.inside) inside.push_back(distance_json(d));
+    return {{"inside", inside}, {"to_other", margins.to_other ? distance_json(*margins.to_other) : nlohmann::json("unbounded")}};
+}
+
+nlohmann::json to_json(const std::vector<MagnitudeBand>& bands, std::span<const ModeForces> analysis) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const MagnitudeBand& b : bands) {
+        nlohmann::json modes = nlohmann::json::array();
+        for (std::size_t j : b.modes) modes.push_back(analysis[j].mode.letters);
+        out.push_back({{"from", output_value(b.from.value())},
+                       {"to", b.to ? nlohmann::json(output_value(b.to->value())) : nlohmann::json("unbounded")},
+                       {"from_closed", b.from_closed},
+                       {"to_closed", b.to_closed},
+                       {"modes", modes},
+                       {"verdict", to_string(verdict_of(b.modes.size()))}});
+    }
+    return out;
+}
+
 nlohmann::json to_json(const DirectionPlan& plan) {
-    nlohmann::json intervals = nlohmann::json::array();
-    for (const AngleInterval& i : plan.intervals) intervals.push_back({output_value(i.from), output_value(i.to)});
-    nlohmann::json out = {{"intervals", intervals}};
+    nlohmann::json out = {{"intervals", intervals_json(plan.intervals)}};
     if (plan.feasible()) {
         out["best"] = output_value(plan.best);
         out["margin"] = output_value(plan.margin);
+        if (plan.uniqueness_known) {
+            out["unique"] = intervals_json(plan.unique);
+            out["shared"] = intervals_json(plan.shared);
+            out["best_unique"] = plan.best_unique;
+        }
+        if (plan.best_margins) out["best_margins"] = to_json(*plan.best_margins);
+        if (plan.magnitudes_known) out["best_magnitudes"] = plan.best_magnitudes ? to_json(*plan.best_magnitudes) : nlohmann::json();
     }
     return out;
 }
@@ -81,6 +124,13 @@ nlohmann::json to_json(const PushCase& c) {
         out["best"] = {{"point", vec(c.best->point)},
                        {"direction", output_value(std::atan2(c.best->direction.y(), c.best->direction.x()))}};
     }
+    if (c.uniqueness_known) {
+        out["unique"] = c.unique;
+        out["shared"] = c.shared;
+        out["best_unique"] = c.best_unique;
+    }
+    if (c.best_margins) out["best_margins"] = to_json(*c.best_margins);
+    if (c.magnitudes_known && c.best) out["best_magnitudes"] = c.best_magnitudes ? to_json(*c.best_magnitudes) : nlohmann::json();
     return out;
 }
 

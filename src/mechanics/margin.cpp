@@ -83,16 +83,24 @@ double distance_to(const Cone& c, const Vec3& w, const WrenchMetric& metric) {
     return least;
 }
 
-QueryMargins query_margins(const std::vector<ModeForces>& analysis, const std::vector<std::size_t>& modes,
+QueryMargins query_margins(std::span<const ModeForces> analysis, const std::vector<std::size_t>& modes,
                            const Vec3& e, const WrenchMetric& metric) {
     QueryMargins out;
-    for (std::size_t k : modes) out.inside.push_back(distance_to_boundary(analysis.at(k).applied, e, metric));
+    for (std::size_t k : modes) out.inside.push_back(distance_to_boundary(analysis[k].applied, e, metric));
     for (std::size_t j = 0; j < analysis.size(); ++j) {
         if (std::find(modes.begin(), modes.end(), j) != modes.end()) continue;
         const double d = distance_to(analysis[j].applied, e, metric);
         out.to_other = out.to_other ? std::min(*out.to_other, d) : d;
     }
     return out;
+}
+
+QueryMargins margins_of(std::span<const ModeForces> analysis, const Vec3& e, const WrenchMetric& metric) {
+    std::vector<std::size_t> holding;
+    for (std::size_t j = 0; j < analysis.size(); ++j) {
+        if (analysis[j].applied.has(e)) holding.push_back(j);
+    }
+    return query_margins(analysis, holding, e, metric);
 }
 
 }  // namespace momentlab

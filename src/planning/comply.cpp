@@ -12,17 +12,20 @@ const char* to_string(CentreVerdict v) {
     return "?";
 }
 
-ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre) {
+ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre) { return plan_comply(goal, centre, PlanContext{}); }
+
+ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre, const PlanContext& context) {
+    const Cone target = context.fixed ? reachable_directions(goal.applied, *context.fixed) : goal.applied;
     ComplyPlan plan;
     plan.centre = centre;
-    plan.label = moment_label(goal.applied, centre);  // without building E_goal's regions
-    plan.directions = plan_directions_through(centre, goal.applied);
+    plan.label = moment_label(target, centre);  // without building the regions
+    plan.directions = plan_directions_through(centre, goal, context);
     // W_c ∩ E_goal is exact: {0} exactly when c is strictly inside a labelled region, and it meets
     // the interior of E_goal (the test plan_push makes) exactly when c is unlabelled and E_goal is
     // full-dimensional.
     if (!plan.directions.feasible()) {
         plan.verdict = CentreVerdict::Fails;
-    } else if (meets_interior(plan.directions.solutions, goal.applied)) {
+    } else if (meets_interior(plan.directions.solutions, target)) {
         plan.verdict = CentreVerdict::Works;
     } else {
         plan.verdict = CentreVerdict::Boundary;

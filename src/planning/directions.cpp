@@ -6,6 +6,7 @@
 
 #include "momentlab/core/predicates.hpp"
 #include "momentlab/geometry/force_sets.hpp"
+#include "momentlab/planning/unique.hpp"
 
 namespace momentlab {
 namespace {
@@ -16,25 +17,39 @@ double angle_of(const Vec2& d) { return std::atan2(d.y(), d.x()); }
 // would turn an arc ending at pi into one wrapping through it.
 Vec2 force_of(const ExactVector& w) { return Vec2(w.value().x() + 0.0, w.value().y() + 0.0); }
 
-// The arc counter-clockwise from a to b, split at pi; a == b is the one direction a (an arc
-// of width 0, not the full turn).
-void add_arc(std::vector<AngleInterval>& out, const Vec2& a, const Vec2& b, bool full_turn = false) {
-    double from = angle_of(a), to = angle_of(b);
+// How b lies from a, counter-clockwise, decided exactly: the same direction, less than a
+// half-turn, a half-turn, or more.
+enum class Turn { Same, Narrow, Half, Wide };
+
+// The width of the arc counter-clockwise from a to b, from the rounded angles, kept within the
+// range its exact turn allows (rounding can swap two nearly equal directions, which would turn
+// a sliver into nearly the whole turn, or the reverse).
+double arc_width(const Vec2& a, const Vec2& b, Turn turn) {
+    if (turn == Turn::Same) return 0.0;
+    if (turn == Turn::Half) return M_PI;
+    double w = angle_of(b) - angle_of(a);
+    if (w < 0.0) w += 2.0 * M_PI;
+    if (turn == Turn::Narrow) return w >= M_PI ? 0.0 : w;
+    return w <= M_PI ? 2.0 * M_PI : w;
+}
+
+// The arc counter-clockwise from a to b (its exact turn given), split at pi; a single direction
+// is an arc of width 0; the whole turn is [-pi, pi].
+void add_arc(std::vector<AngleInterval>& out, const Vec2& a, const Vec2& b, Turn turn, bool full_turn = false) {
+    double from = angle_of(a);
     if (from == M_PI) from = -M_PI;
-    if (full_turn) {
+    const double width = full_turn ? 2.0 * M_PI : arc_width(a, b, turn);
+    if (width >= 2.0 * M_PI) {
         out.push_back({-M_PI, M_PI, a, a});
         return;
     }
-    if (a == b) {
-        out.push_back({from, from, a, b});
+    const double to = from + width;
+    if (to <= M_PI) {
+        out.push_back({from, turn == Turn::Same ? from : to, a, b});
         return;
     }
-    if (to < from) {  // through pi
-        out.push_back({from, M_PI, a, Vec2(-1.0, 0.0)});
-        out.push_back({-M_PI, to, Vec2(-1.0, 0.0), b});
-        return;
-    }
-    out.push_back({from, to, a, b});
+    out.push_back({from, M_PI, a, Vec2(-1.0, 0.0)});  // through pi
+    out.push_back({-M_PI, to - 2.0 * M_PI, Vec2(-1.0, 0.0), b});
 }
 
 }  // namespace
@@ -50,7 +65,7 @@ DirectionPlan plan_directions_through(const Vec2& point, const Cone& goal_applie
     Vec2 start = Vec2::Zero();
     if (s.lineality_dimension() == 2) {
         start = force_of(s.lineality()[0]);
-        add_arc(plan.intervals, start, start, true);
+        add_arc(plan.intervals, start, start, Turn::Same, true);
         plan.best = 0.0;
         plan.margin = M_PI;
         return plan;
@@ -58,8 +73,8 @@ DirectionPlan plan_directions_through(const Vec2& point, const Cone& goal_applie
     if (s.lineality_dimension() == 1) {  // a line of W, and maybe a half-plane of it
         const Vec2 d = force_of(s.lineality()[0]);
         if (s.rays().empty()) {  // two opposite directions
-            add_arc(plan.intervals, d, d);
-            add_arc(plan.intervals, -d, -d);
+            add_arc(plan.intervals, d, d, Turn::Same);
+            add_arc(plan.intervals, -d, -d, Turn::Same);
             plan.best = angle_of(d);
             return plan;
         }
@@ -67,16 +82,16 @@ DirectionPlan plan_directions_through(const Vec2& point, const Cone& goal_applie
         // to the left of d (exact).
         const bool left = minor_sign(s.lineality()[0], s.rays()[0], 0, 1) == Sign::Positive;
         start = left ? d : Vec2(-d);
-        add_arc(plan.intervals, start, -start);
+        add_arc(plan.intervals, start, -start, Turn::Half);
         width = M_PI;
     } else if (s.rays().size() == 1) {
         start = force_of(s.rays()[0]);
-        add_arc(plan.intervals, start, start);
+        add_arc(plan.intervals, start, start, Turn::Same);
     } else {  // a wedge of W: two rays, less than pi apart
         Vec2 a = force_of(s.rays()[0]), b = force_of(s.rays()[1]);
         if (minor_sign(s.rays()[0], s.rays()[1], 0, 1) == Sign::Negative) std::swap(a, b);
         start = a;
-        add_arc(plan.intervals, a, b);
+        add_arc(plan.intervals, a, b, Turn::Narrow);
         // The width from the intervals' own angles (atan2 of each end), so that the best
         // direction lies inside them: acos of the ends' dot product loses half the digits for
         // nearly equal directions (a width of 2e-16 came out as 2e-8).
@@ -85,6 +100,58 @@ DirectionPlan plan_directions_through(const Vec2& point, const Cone& goal_applie
     }
     plan.margin = width / 2.0;
     plan.best = std::remainder(angle_of(start) + plan.margin, 2.0 * M_PI);
+    return plan;
+}
+
+namespace {
+
+// The arcs of a plane (normal nu) as angle intervals, and the widest arc of positive width
+// (start angle, width), if any.
+std::optional<std::pair<double, double>> add_arcs(std::vector<AngleInterval>& out, const ExactVector& nu,
+                                                   const std::vector<WrenchArc>& arcs) {
+    std::optional<std::pair<double, double>> widest;
+    for (const WrenchArc& arc : arcs) {
+        const Vec2 from = force_of(arc.from), to = force_of(arc.to);
+        const Sign s = det_sign(nu, arc.from, arc.to);
+        const Turn turn = s == Sign::Positive ? Turn::Narrow
+                          : s == Sign::Negative ? Turn::Wide
+                          : dot_sign(arc.from, arc.to) == Sign::Positive ? Turn::Same
+                                                                         : Turn::Half;
+        add_arc(out, from, to, turn, arc.whole);
+        const double width = arc.whole ? 2.0 * M_PI : arc_width(from, to, turn);
+        if (width > 0.0 && (!widest || width > widest->second)) widest = std::pair(angle_of(from), width);
+    }
+    return widest;
+}
+
+}  // namespace
+
+DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal, const PlanContext& context) {
+    const Cone target = context.fixed ? reachable_directions(goal.applied, *context.fixed) : goal.applied;
+    DirectionPlan plan = plan_directions_through(point, target);
+    if (!plan.feasible()) return plan;
+    if (!context.modes.empty() && !context.fixed) {
+        // The plane of forces through the point, oriented so that counter-clockwise forces turn
+        // positively about its normal (p.y, -p.x, 1).
+        const ExactVector normal = ExactVector::input(Vec3(point.y(), -point.x(), 1.0));
+        const PlaneSplit split = split_plane(normal, plan.solutions, context.modes, goal);
+        plan.uniqueness_known = true;
+        const auto widest = add_arcs(plan.unique, normal, split.unique);
+        add_arcs(plan.shared, normal, split.shared);
+        if (widest) {
+            plan.margin = widest->second / 2.0;
+            plan.best = std::remainder(widest->first + plan.margin, 2.0 * M_PI);
+            plan.best_unique = true;
+        }
+    }
+    if (!context.modes.empty() && !context.fixed && context.metric) {
+        plan.best_margins = margins_of(context.modes, wrench_at(point, Vec2(std::cos(plan.best), std::sin(plan.best))), *context.metric);
+    }
+    if (context.fixed) {
+        const Exact3 u = wrench_through(exact(point), exact(Vec2(std::cos(plan.best), std::sin(plan.best))));
+        plan.best_magnitudes = magnitudes(goal.applied, *context.fixed, u);
+        plan.magnitudes_known = true;
+    }
     return plan;
 }
 

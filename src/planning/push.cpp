@@ -7,6 +7,7 @@
 #include "momentlab/core/predicates.hpp"
 #include "momentlab/geometry/force_sets.hpp"
 #include "momentlab/geometry/polygon.hpp"
+#include "momentlab/planning/unique.hpp"
 
 namespace momentlab {
 namespace {
@@ -212,8 +213,37 @@ void describe(PushCase& c, const std::vector<const PushPiece*>& chosen) {
 
 // One case: solved on the whole feature (its verdict: feasible, boundary or no), then, when
 // obstacles cover part of it and the case is feasible, again on the free parts only.
+// Which of the shown pieces push into the goal alone, and a unique best push when one, rounded,
+// still lies in E_goal's interior, in no other mode's set and where the finger is free.
+void tell_uniqueness(PushCase& c, const std::vector<const PushPiece*>& shown, const ModeForces& goal,
+                     std::span<const ModeForces> modes, const std::vector<Polygon>* obstacles) {
+    c.uniqueness_known = true;
+    for (const PushPiece* piece : shown) {
+        const Uniqueness u = uniqueness(piece->solutions, modes, goal);
+        c.shared = c.shared || u.shared;
+        if (!u.unique) continue;
+        c.unique = true;
+        if (c.best_unique) continue;
+        const Vec3 w = u.representative->value();
+        Push push;
+        push.direction = force_of(w).normalized();
+        push.point = c.feature.kind == PushFeature::Kind::Edge
+                         ? Vec2(c.feature.from + std::clamp(touch_parameter(c.feature, w), 0.0, 1.0) * (c.feature.to - c.feature.from))
+                         : c.feature.from;
+        const Vec3 e = push.wrench();
+        const bool alone = std::none_of(modes.begin(), modes.end(), [&](const ModeForces& m) {
+            return m.mode.letters != goal.mode.letters && m.applied.has(e);
+        });
+        if (alone && goal.applied.in_relative_interior(e) && !(obstacles && in_obstacle(*obstacles, push.point))) {
+            c.best = push;
+            c.best_unique = true;
+        }
+    }
+}
+
 PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, ContactMode slip, double mu,
-                    const std::optional<FreeParts>& free, const Cone& goal, const std::vector<Polygon>& obstacles) {
+                    const std::optional<FreeParts>& free, const Cone& goal, const std::vector<Polygon>& obstacles,
+                    const ModeForces& goal_mode, const PlanContext& context) {
     PushCase c;
     c.feature = f;
     c.slip = slip;
@@ -245,17 +275,31 @@ PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, c
         if (c.verdict == PushVerdict::Feasible ? p.robust : has_solutions(p)) shown.push_back(&p);
     }
     describe(c, shown);
+    if (!context.modes.empty() && !context.fixed && !shown.empty()) {
+        tell_uniqueness(c, shown, goal_mode, context.modes, free ? &obstacles : nullptr);
+    }
+    if (!context.modes.empty() && !context.fixed && context.metric && c.best) {
+        c.best_margins = margins_of(context.modes, c.best->wrench(), *context.metric);
+    }
+    c.magnitudes_known = context.fixed.has_value();
+    if (context.fixed && c.best) c.best_magnitudes = magnitudes(goal_mode.applied, *context.fixed, wrench_through(exact(c.best->point), exact(c.best->direction)));
     return c;
 }
 
 }  // namespace
 
 std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options) {
+    return plan_push(scene, goal, options, PlanContext{});
+}
+
+std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options,
+                                const PlanContext& context) {
     if (!scene.body || scene.body->polygon.size() < 3) throw std::invalid_argument("plan_push: the body needs a polygon");
     if (!(options.mu >= 0.0) || !std::isfinite(options.mu)) throw std::invalid_argument("plan_push: mu must be finite and >= 0");
     const Polygon& poly = scene.body->polygon;
     const std::size_t n = poly.size();
     const bool ccw = is_counter_clockwise(poly);
+    const Cone target = context.fixed ? reachable_directions(goal.applied, *context.fixed) : goal.applied;
     // The inward normal of edge i, exact (not unit: every condition is homogeneous in it), and
     // its unit rounding for the feature's description.
     std::vector<Exact2> normals(n);
@@ -293,7 +337,8 @@ std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, cons
             const std::optional<FreeParts> free =
                 options.ignore_interference ? std::nullopt : std::optional(free_parts(f.from, f.to, scene.obstacles));
             for (ContactMode slip : {ContactMode::SlidingLeft, ContactMode::Fixed, ContactMode::SlidingRight}) {
-                cases.push_back(solve_case(f, cw, ccw_normal, bisector, slip, options.mu, free, goal.applied, scene.obstacles));
+                cases.push_back(
+                    solve_case(f, cw, ccw_normal, bisector, slip, options.mu, free, target, scene.obstacles, goal, context));
             }
         }
     }

@@ -25,15 +25,26 @@ namespace momentlab {
 [[nodiscard]] nlohmann::json to_json(const Labels& labels);
 
 /// {"intervals": [[from, to], ...], "best", "margin"} (best and margin only when feasible):
-/// the answer of `plan tilt` and of one compliance centre, radians from +x.
+/// the answer of `plan tilt` and of one compliance centre, radians from +x; told the modes also
+/// "unique", "shared" (intervals) and "best_unique"; "best_margins" with a metric;
+/// "best_magnitudes" (a range or null) with a fixed wrench.
 [[nodiscard]] nlohmann::json to_json(const DirectionPlan& plan);
 /// {"feature", "from", "to", "slip", "verdict", "feasible", "blocked", "touch", "directions",
-///  "best": {"point", "direction"}} of one pushing case (docs/formats.md, Planning).
+///  "best": {"point", "direction"}} of one pushing case (docs/formats.md, Planning); told the
+///  modes also "unique", "shared", "best_unique"; "best_margins", "best_magnitudes" as above.
 [[nodiscard]] nlohmann::json to_json(const PushCase& push_case);
 /// The directions of one compliance centre with its "point", "label" and "verdict".
 [[nodiscard]] nlohmann::json to_json(const ComplyPlan& plan);
 /// {"form_closure", "force_closure", "form": {"holds", "quality" | "unresisted_wrench"}, "force":
 ///  {...}, "reference", "length", "metric"} (docs/formats.md, Closure).
 [[nodiscard]] nlohmann::json to_json(const Closure& closure);
+
+/// {"from": lo, "to": hi or "unbounded"}: magnitudes of a controlled force.
+[[nodiscard]] nlohmann::json to_json(const MagnitudeRange& range);
+/// {"inside": [d, ...], "to_other": d}: distances, "unbounded" for infinite ones (or no other set).
+[[nodiscard]] nlohmann::json to_json(const QueryMargins& margins);
+/// [{"from", "to", "from_closed", "to_closed", "modes": [letters], "verdict"}, ...]: the bands of
+/// magnitude_bands, "to" "unbounded" for the last.
+[[nodiscard]] nlohmann::json to_json(const std::vector<MagnitudeBand>& bands, std::span<const ModeForces> analysis);
 
 }  // namespace momentlab

@@ -10,6 +10,7 @@
 /// decide.
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "momentlab/geometry/cone.hpp"
@@ -47,7 +48,10 @@ struct QueryMargins {
 };
 
 /// The margins of the wrench e whose answer is `modes` (indices into `analysis`, as query gives).
-[[nodiscard]] QueryMargins query_margins(const std::vector<ModeForces>& analysis, const std::vector<std::size_t>& modes,
+[[nodiscard]] QueryMargins query_margins(std::span<const ModeForces> analysis, const std::vector<std::size_t>& modes,
                                          const Vec3& e, const WrenchMetric& metric);
+
+/// The margins of a wrench whose answer is computed here (exactly, by each mode's own set).
+[[nodiscard]] QueryMargins margins_of(std::span<const ModeForces> analysis, const Vec3& e, const WrenchMetric& metric);
 
 }  // namespace momentlab

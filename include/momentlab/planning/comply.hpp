@@ -44,6 +44,11 @@ struct ComplyPlan {
 /// Boundary case (some force of E_goal passes through it).
 [[nodiscard]] ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre);
 
+/// The same told the context (directions.hpp): unique and shared offsets with the modes; with a
+/// fixed wrench, the label and verdict are those of the reachable directions E_goal + cone(-g)
+/// (fixed_wrench.hpp), and the directions' magnitudes say how hard the spring must push.
+[[nodiscard]] ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre, const PlanContext& context);
+
 /// The labels of E_goal: the compliance centres that work are the points outside both regions
 /// (docs/design.md, Synthesis); the regions are drawn and written as for any force set.
 [[nodiscard]] Labels compliance_labels(const ModeForces& goal);

@@ -5,10 +5,15 @@
 /// forces through one point that lie in a goal's set of applied wrenches (the tilts of
 /// planning/tilt.hpp, the spring directions of planning/comply.hpp).
 
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "momentlab/core/vec.hpp"
 #include "momentlab/geometry/cone.hpp"
+#include "momentlab/mechanics/analysis.hpp"
+#include "momentlab/mechanics/margin.hpp"
+#include "momentlab/planning/fixed_wrench.hpp"
 
 namespace momentlab {
 
@@ -23,6 +28,21 @@ struct AngleInterval {
     Vec2 to_direction = Vec2::Zero();
 };
 
+/// What a planner may be told beyond its goal.
+struct PlanContext {
+    /// Every mode's sets (the analysis the goal belongs to). With them a plan says where the goal
+    /// is the only mode and where another mode's set holds the same wrench (planning/unique.hpp),
+    /// and picks its best action among the unique ones. Empty: not said.
+    std::span<const ModeForces> modes;
+    /// A wrench acting whatever the controller does (gravity_wrench, or any): the plan is then for
+    /// fixed + lambda u, lambda >= 0 (planning/fixed_wrench.hpp). Uniqueness then depends on the
+    /// magnitude too: ask magnitude_bands at the action chosen.
+    std::optional<Exact3> fixed;
+    /// With the modes (and no fixed wrench): the metric in which a plan gives the margins of its
+    /// best action, a unit force (mechanics/margin.hpp, as query --margin).
+    std::optional<WrenchMetric> metric;
+};
+
 /// The forces through one point that produce a goal mode: tilts (gravity through the centre of
 /// mass), or a spring through a compliance centre (comply.hpp).
 struct DirectionPlan {
@@ -33,14 +53,34 @@ struct DirectionPlan {
     std::vector<AngleInterval> intervals;
     /// The direction farthest from every boundary (the middle of the widest arc) and that
     /// distance in radians (0 when the arc is a single direction; pi when every tilt works).
+    /// With PlanContext::modes (and no fixed wrench): the best direction is the middle of the
+    /// widest arc where the goal is unique (when there is one of positive width), and the margin
+    /// the distance to where it stops being unique.
     double best = 0.0;
     double margin = 0.0;
+    /// Told the modes (and no fixed wrench): the closures of the directions where the goal is the
+    /// only mode and of those where another mode's set holds them too; `intervals` is their union.
+    bool uniqueness_known = false;
+    std::vector<AngleInterval> unique;
+    std::vector<AngleInterval> shared;
+    bool best_unique = false;  ///< `best` lies in an arc of `unique`
+    /// With a fixed wrench: the magnitudes of the force along `best` that give the goal (none when
+    /// only the limit of ever larger forces reaches E_goal, on the boundary of `intervals`).
+    std::optional<MagnitudeRange> best_magnitudes;
+    bool magnitudes_known = false;  ///< planned with a fixed wrench
+    /// With the modes and a metric: the margins of the unit force along `best` (query_margins).
+    std::optional<QueryMargins> best_margins;
     [[nodiscard]] bool feasible() const { return !intervals.empty(); }
 };
 
 /// The directions of the forces through `point` that lie in `goal_applied` (an E_i). The
 /// boundary directions belong to the intervals (E_i is closed).
 [[nodiscard]] DirectionPlan plan_directions_through(const Vec2& point, const Cone& goal_applied);
+
+/// The same for the goal mode, told the context: the directions u of forces through `point` for
+/// which fixed + lambda u lies in E_goal for some lambda >= 0 (or its limit), split into unique and
+/// shared arcs when the modes are given. Exact as above.
+[[nodiscard]] DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal, const PlanContext& context);
 
 /// Force directions counter-clockwise from `from` to `to` (radians from +x, from in [-pi, pi),
 /// to - from in [0, 2 pi)).

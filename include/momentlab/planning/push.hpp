@@ -98,6 +98,19 @@ struct PushCase {
     /// A representative solution, exactly in the interior of E_goal for feasible cases: the
     /// mean of the solution cone's extreme unit forces.
     std::optional<Push> best;
+    /// Told the modes (and no fixed wrench): whether some pushes of the case's solutions, a part
+    /// of their own dimension, give the goal alone, and whether some give another mode too; `best`
+    /// is then a unique push when there is one that lies, as rounded, in E_goal's interior and in
+    /// no other mode's set (best_unique).
+    bool uniqueness_known = false;
+    bool unique = false;
+    bool shared = false;
+    bool best_unique = false;
+    /// With a fixed wrench: the magnitudes of `best` (a unit force times lambda) that give the goal.
+    std::optional<MagnitudeRange> best_magnitudes;
+    bool magnitudes_known = false;  ///< planned with a fixed wrench
+    /// With the modes and a metric: the margins of `best` as a unit force (query_margins).
+    std::optional<QueryMargins> best_margins;
     [[nodiscard]] bool feasible() const { return verdict == PushVerdict::Feasible; }
 };
 
@@ -113,5 +126,12 @@ struct PushOptions {
 /// that order: 6 n cases for n vertices. Throws std::invalid_argument if the scene has no body
 /// polygon or mu is negative or not finite.
 [[nodiscard]] std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options = {});
+
+/// The same told the context (directions.hpp): with the modes, which cases push into the goal
+/// alone; with a fixed wrench g (gravity), the pushes u for which g + lambda u gives the goal at
+/// some magnitude lambda (the cases are solved on E_goal + cone(-g)), and the magnitudes of each
+/// case's best push.
+[[nodiscard]] std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options,
+                                              const PlanContext& context);
 
 }  // namespace momentlab

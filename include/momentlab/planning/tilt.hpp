@@ -18,4 +18,9 @@ namespace momentlab {
 /// neighbour. Throws std::invalid_argument if the scene has no body.
 [[nodiscard]] DirectionPlan plan_tilt(const Scene& scene, const ModeForces& goal);
 
+/// The same told the context: with the modes, where the goal is unique; with a fixed wrench g
+/// (not gravity itself, which is what the tilt turns: say a constant push), the directions of the
+/// force through the centre of mass for which g plus that force, at some magnitude, gives the goal.
+[[nodiscard]] DirectionPlan plan_tilt(const Scene& scene, const ModeForces& goal, const PlanContext& context);
+
 }  // namespace momentlab
