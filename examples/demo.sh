@@ -42,6 +42,11 @@ show "Tilting the block along the wall: which gravity directions slide it right 
 show "Pushing it: 4 edges + 4 vertices x 3 finger slips = 24 cases (the paper finds 4)" plan push "$here/figure-3-block-along-wall.json" --goal rr
 show "A spring through a compliance centre at its outboard trailing corner" plan comply "$here/figure-3-block-along-wall.json" --goal rr --centre 0 0.5
 
+# Gravity plus a push: the magnitude matters (docs/planning.md, "A fixed wrench plus a push").
+show "The block on the table under gravity (0, -9.81), pushed horizontally at the top of its rear face: at rest, sliding (rr), then tipping (sr)" query "$here/block-on-table.json" --gravity 0 -9.81 --push 0 0.5 1 0
+show "... pushed low, at height 0.1: it slides, then its front lifts (rs)" query "$here/block-on-table.json" --gravity 0 -9.81 --push 0 0.1 1 0
+show "... which pushes of a sticking finger on the rear face tip it (sr), and how hard" plan push "$here/block-on-table.json" --goal sr --gravity 0 -9.81 --edge 3 --slip f
+
 # Many questions at once (a planner's use): one wrench per line in, one JSON answer per line out.
 wrenches=$(mktemp)
 printf '%s\n' '[0, -9.81, -4.905]' '[20, -9.81, -5.105]' '[20, -9.81, -14.705]' '[0, 9.81, 4.905]' > "$wrenches"

@@ -234,12 +234,13 @@ int run_push(const PlanOptions& o) {
         std::cout << "pushing into mode " << o.goal << ": a point finger with mu = " << fmt(o.mu) << ", obstacles "
                   << interference << "; " << feasible << " of " << cases.size() << " cases feasible\n";
         if (fixed) std::cout << "  with the fixed wrench " << fmt(to_double(*fixed)) << " (--gravity, --wrench) acting too\n";
-        std::cout << "  " << std::left << std::setw(10) << "feature" << std::setw(6) << "slip" << std::setw(10) << "verdict"
-                  << std::setw(8) << (fixed ? "" : "goal") << std::setw(34) << "touch" << "push directions (from +x)\n";
+        std::cout << "  " << std::left << std::setw(10) << "feature" << std::setw(6) << "slip" << std::setw(10) << "verdict";
+        if (!fixed) std::cout << std::setw(8) << "goal";
+        std::cout << std::setw(34) << "touch" << "push directions (from +x)\n";
         for (const PushCase& c : cases) std::cout << case_line(c) << "\n";
         std::cout << "  (feasible: some push lies inside E_" << o.goal << "; boundary: only on its boundary, a knife edge;\n"
-                  << "   blocked: only where obstacles leave no room; goal: alone, shared with another mode, or both\n"
-                  << "   in parts; docs/planning.md)\n";
+                  << "   blocked: only where obstacles leave no room;"
+                  << (fixed ? "" : " goal: alone, shared with another mode, or both\n   in parts;") << " docs/planning.md)\n";
         for (const PushCase& c : cases) {
             if (!c.best || c.verdict != PushVerdict::Feasible) continue;
             std::cout << "  " << c.feature.name() << " slip " << letter(c.slip) << ": best push " << fmt(c.best->direction)

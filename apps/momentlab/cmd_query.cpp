@@ -38,7 +38,7 @@ int run_push_line(const QueryOptions& o, const Problem& p) {
         std::cout << out.dump() << "\n";
         return 0;
     }
-    std::cout << "the force lambda (" << fmt(at[1]) << ") through " << fmt(at[0]) << ", lambda from 0 up";
+    std::cout << "the force lambda " << fmt(at[1]) << " through " << fmt(at[0]) << ", lambda from 0 up";
     if (fixed) std::cout << ", added to the fixed wrench " << fmt(to_double(g));
     std::cout << ":\n";
     print_bands(bands, p.analysis);

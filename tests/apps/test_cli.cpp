@@ -272,6 +272,57 @@ TEST(Cli, KnifeEdgesAreSaidWithoutABestDirection) {
     EXPECT_NE(r.out.find("best"), std::string::npos) << r.out;
 }
 
+// The block on the table pushed at the top of its rear face with gravity (0, -10): at rest up
+// to mu m g = 5, sliding from 5 to 15, tipping forward from 15 (docs/planning.md, worked by hand
+// in tests/planning/test_fixed_wrench.cpp); every end belongs to both bands it joins.
+TEST(Cli, QueryPushUnderGravityGivesTheBands) {
+    const std::string scene = kExamples + "/block-on-table.json";
+    Result r = run("query " + scene + " --gravity 0 -10 --push 0 0.5 1 0 --json");
+    ASSERT_EQ(r.status, 0) << stderr_text();
+    const auto bands = nlohmann::json::parse(r.out)["bands"];
+    const std::vector<std::pair<std::vector<std::string>, nlohmann::json>> want = {
+        {{"ff"}, 5}, {{"ff", "rr"}, 5}, {{"rr"}, 15}, {{"sr", "rr"}, 15}, {{"sr"}, "unbounded"}};
+    ASSERT_EQ(bands.size(), want.size()) << r.out;
+    for (std::size_t k = 0; k < want.size(); ++k) {
+        auto modes = bands[k]["modes"].get<std::vector<std::string>>();
+        auto expected = want[k].first;
+        std::sort(modes.begin(), modes.end());
+        std::sort(expected.begin(), expected.end());
+        EXPECT_EQ(modes, expected) << k;
+        EXPECT_EQ(bands[k]["to"], want[k].second) << k;
+    }
+    EXPECT_EQ(bands[1]["from_closed"], true);
+    EXPECT_EQ(bands[2]["from_closed"], false);
+    r = run("query " + scene + " --gravity 0 -10 --push 0 0.5 1 0");
+    EXPECT_NE(r.out.find("(5, 15)"), std::string::npos) << r.out;
+    // The same through --wrench: the fixed wrench of gravity written out, m (0, -10) at (1/2, 1/4).
+    r = run("query " + scene + " --wrench 0 -10 -5 --push 0 0.5 1 0 --json");
+    ASSERT_EQ(r.status, 0) << stderr_text();
+    EXPECT_EQ(nlohmann::json::parse(r.out)["bands"], bands);
+}
+
+// plan push under gravity: the sticking finger on the rear face (edge 3) tips the block (sr), its
+// best push with a magnitude range; tilts say where the goal is alone.
+TEST(Cli, PlansWithGravityAndUniqueness) {
+    const std::string table = kExamples + "/block-on-table.json";
+    Result r = run("plan push " + table + " --goal sr --gravity 0 -10 --edge 3 --slip f --json");
+    ASSERT_EQ(r.status, 0) << stderr_text();
+    auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["cases"].size(), 1u);
+    EXPECT_EQ(j["cases"][0]["verdict"], "feasible");
+    EXPECT_TRUE(j["cases"][0]["best_magnitudes"]["from"].is_number());
+    EXPECT_EQ(j["fixed"], nlohmann::json({0, -10, -5}));
+    // The block along the wall: rr alone on (-atan 2, 0), shared at both ends (docs/planning.md).
+    r = run("plan tilt " + kExamples + "/figure-3-block-along-wall.json --goal rr --json");
+    j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["unique"].size(), 1u);
+    EXPECT_NEAR(j["unique"][0][0].get<double>(), -std::atan(2.0), 1e-15);
+    EXPECT_EQ(j["unique"][0][1], 0.0);
+    ASSERT_EQ(j["shared"].size(), 2u);
+    EXPECT_EQ(j["best_unique"], true);
+    EXPECT_TRUE(j["best_margins"]["inside"][0].is_number());
+}
+
 TEST_F(CliPictures, PlanBadRequestsExitTwoNamingTheOption) {
     const std::string scene = kExamples + "/figure-3-block-along-wall.json";
     const std::vector<std::pair<std::string, std::string>> cases = {
@@ -281,6 +332,15 @@ TEST_F(CliPictures, PlanBadRequestsExitTwoNamingTheOption) {
         {"plan push " + scene + " --goal zz", "--goal"},
         {"plan comply " + scene + " --goal rr -o " + at("a.svg"), "-o"},
         {"plan comply " + scene + " --goal rr --centre 0 nan", "--centre"},
+        {"plan tilt " + scene + " --goal rr --gravity 0 -1", "--gravity"},
+        {"plan push " + scene + " --goal rr --gravity 0 nan", "--gravity"},
+        {"plan push " + scene + " --goal rr --wrench 1 2", "--wrench"},
+        {"query " + scene + " --push 0 0 0 0", "--push"},
+        {"query " + scene + " --push 0 0 1", "--push"},
+        {"query " + scene + " --push 0 0.5 1 0 --margin", "--margin"},
+        {"query " + scene + " --push 0 0.5 1 0 --wrenches " + scene, "--push"},
+        {"query " + scene + " --wrench 1 0 0 --gravity 0 -1", "--gravity"},
+        {"query " + scene + " --push 0 0.5 1 0 --gravity 0 1e400", "--gravity"},
     };
     for (const auto& [args, names] : cases) {
         const Result r = run(args);

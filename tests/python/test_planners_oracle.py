@@ -202,3 +202,34 @@ def test_tilt_plans_move_with_exact_transforms(seed):
                 want = canon(p.get(key, []), turn, f is mirror)
                 got = canon(q.get(key, []))
                 assert same_arcs(got, want), (seed, f.__name__, goal, key, p.get(key), q.get(key))
+
+
+@pytest.mark.parametrize("seed", range(16))
+def test_push_line_bands_against_the_oracle(seed):
+    """query --push / push_line: inside each band (its middle, or past its start when unbounded)
+    the modes of g + lambda u are exactly the band's, by the oracle; the bands tile [0, inf)."""
+    rng = random.Random(4000 + seed)
+    doc = oracle.random_scene(rng, 1 + seed % 3)
+    o = Oracle(doc)
+    a = analysis_of(doc)
+    gravity = [float(oracle._grid(rng, -2, 2, 2)), float(oracle._grid(rng, -4, 0, 2))]
+    point = [float(oracle._grid(rng, -2, 2, 4)), float(oracle._grid(rng, -2, 2, 4))]
+    direction = [float(oracle._grid(rng, -2, 2, 4)), float(oracle._grid(rng, -2, 2, 4))]
+    if direction == [0.0, 0.0]:
+        direction = [1.0, 0.0]
+    bands = ml.push_line(a, point, direction, gravity=gravity)
+    assert bands[0]["from"] == 0 and bands[-1]["to"] == "unbounded"
+    for prev, band in zip(bands, bands[1:]):
+        assert prev["to"] == band["from"] and prev["to_closed"] != band["from_closed"]
+    m, com = oracle.exact(doc["body"]["mass"]), [oracle.exact(x) for x in doc["body"]["com"]]
+    g = oracle.wrench_at(com, (m * oracle.exact(gravity[0]), m * oracle.exact(gravity[1])))
+    u = oracle.wrench_at([oracle.exact(x) for x in point], [oracle.exact(x) for x in direction])
+    for band in bands:
+        if band["to"] == "unbounded":
+            lam = Fraction(band["from"]) * 2 + 1
+        elif band["to"] - band["from"] > 1e-9 * max(1.0, band["to"]):
+            lam = (Fraction(band["from"]) + Fraction(band["to"])) / 2
+        else:
+            continue
+        w = tuple(gi + lam * ui for gi, ui in zip(g, u))
+        assert {x for x in o.modes if oracle.produces(o.scene, x, w)} == set(band["modes"]), (doc, band, bands)
