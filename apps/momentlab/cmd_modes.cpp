@@ -15,7 +15,9 @@ struct ModesOptions {
 
 int run(const ModesOptions& o) {
     const Scene scene = read_scene_file(o.file);
-    const ModeSet set = enumerate_modes(scene.contacts);
+    TerminalProgress progress;
+    const ModeSet set = enumerate_modes(scene.contacts, progress.callback());
+    progress.finish();
     if (o.json) {
         nlohmann::json modes = nlohmann::json::array();
         for (const Mode& m : set.modes) modes.push_back(m.letters);

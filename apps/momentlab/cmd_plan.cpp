@@ -212,7 +212,9 @@ int run_push(const PlanOptions& o) {
     if (n < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
     if (o.edge && *o.edge >= n) throw InputError("--edge", "the body has edges 0 .. " + std::to_string(n - 1));
     if (o.vertex && *o.vertex >= n) throw InputError("--vertex", "the body has vertices 0 .. " + std::to_string(n - 1));
-    const std::vector<ModeForces> analysis = analyze(scene, AnalysisOptions{o.quasi_static});
+    TerminalProgress progress;
+    const std::vector<ModeForces> analysis = analyze(scene, AnalysisOptions{o.quasi_static, progress.callback()});
+    progress.finish();
     const ModeForces& goal = find_mode(analysis, o.goal, "--goal");
     const PushOptions options{o.mu, o.ignore_interference};
     const std::optional<Exact3> fixed = fixed_wrench(scene, o.gravity, o.fixed);

@@ -7,7 +7,10 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <cstdio>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <iomanip>
@@ -41,10 +44,53 @@ Scene read_scene_file(const std::string& path) {
     return scene;
 }
 
+// How long work goes before its progress is drawn: 1 s, or MOMENTLAB_PROGRESS_DELAY_MS (tests
+// set 0 to see the line on short work).
+std::chrono::milliseconds progress_delay() {
+    const char* env = std::getenv("MOMENTLAB_PROGRESS_DELAY_MS");
+    if (!env || !*env) return std::chrono::milliseconds(1000);
+    char* end = nullptr;
+    const long ms = std::strtol(env, &end, 10);
+    return std::chrono::milliseconds(*end == '\0' && ms >= 0 ? ms : 1000);
+}
+
+struct TerminalProgress::State {
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    std::chrono::milliseconds delay = progress_delay();
+    std::chrono::steady_clock::time_point last{};
+    bool shown = false;
+};
+
+TerminalProgress::TerminalProgress() : state_(isatty(STDERR_FILENO) ? std::make_shared<State>() : nullptr) {}
+
+TerminalProgress::~TerminalProgress() { finish(); }
+
+Progress TerminalProgress::callback() {
+    if (!state_) return nullptr;
+    return [state = state_](std::string_view what, std::size_t done, std::size_t total) {
+        using namespace std::chrono_literals;
+        const auto now = std::chrono::steady_clock::now();
+        if (now - state->start < state->delay || now - state->last < 100ms) return;
+        state->last = now;
+        state->shown = true;
+        std::fprintf(stderr, "\r\033[Kmomentlab: %.*s: %zu of %zu", static_cast<int>(what.size()), what.data(), done, total);
+        std::fflush(stderr);
+    };
+}
+
+void TerminalProgress::finish() {
+    if (state_ && state_->shown) {
+        std::fputs("\r\033[K", stderr);
+        std::fflush(stderr);
+        state_->shown = false;
+    }
+}
+
 Problem load_problem(const std::string& path, const std::string& command, bool quasi_static) {
     Problem p;
     p.scene = read_scene_file(path);
-    p.analysis = analyze_input(p.scene, command, AnalysisOptions{quasi_static});
+    TerminalProgress progress;
+    p.analysis = analyze_input(p.scene, command, AnalysisOptions{quasi_static, progress.callback()});
     return p;
 }
 

@@ -36,6 +36,25 @@ Scene read_scene_file(const std::string& path);
 
 /// A scene with a body, and every mode with its sets (the start of query, analyze, draw
 /// --what forces and the planners). `command` names what needs the body, for the message.
+/// Progress of long work on stderr, when stderr is a terminal and the work has taken more than a
+/// second (MOMENTLAB_PROGRESS_DELAY_MS): one line, redrawn at most ten times a second, erased when done (or destroyed). Quiet in
+/// pipes, files and tests.
+class TerminalProgress {
+public:
+    TerminalProgress();
+    ~TerminalProgress();
+    TerminalProgress(const TerminalProgress&) = delete;
+    TerminalProgress& operator=(const TerminalProgress&) = delete;
+    /// The callback to give the library (empty when stderr is not a terminal).
+    [[nodiscard]] Progress callback();
+    /// Erases the line, if one was drawn.
+    void finish();
+
+private:
+    struct State;
+    std::shared_ptr<State> state_;
+};
+
 struct Problem {
     Scene scene;
     std::vector<ModeForces> analysis;

@@ -25,7 +25,7 @@ std::vector<ModeForces> analyze(const Scene& scene, const AnalysisOptions& optio
         }
         m = inertia_at_origin(*scene.body);
     }
-    const ModeSet modes = enumerate_modes(scene.contacts);
+    const ModeSet modes = enumerate_modes(scene.contacts, options.progress);
     // Each contact's friction edges, built once for all the modes (exact constructions; copies
     // share them): the static cone's two edges, and the kinetic ones n + mu_k t, n - mu_k t.
     std::vector<std::array<ExactVector, 2>> static_edges, kinetic_edges;
@@ -37,6 +37,7 @@ std::vector<ModeForces> analyze(const Scene& scene, const AnalysisOptions& optio
     std::vector<ModeForces> out;
     out.reserve(modes.modes.size());
     for (const Mode& mode : modes.modes) {
+        if (options.progress) options.progress("force sets of the modes", out.size(), modes.modes.size());
         std::vector<ExactVector> contact_generators;
         for (std::size_t j = 0; j < scene.contacts.size(); ++j) {
             switch (mode.at(j)) {

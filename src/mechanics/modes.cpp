@@ -40,14 +40,17 @@ public:
         }
     }
 
-    ModeSet run() {
+    ModeSet run(const Progress& progress) {
         ModeSet out;
         out.feasible_twists = Cone::from_halfspaces(normals_);
         const Cone& a = out.feasible_twists;
         std::vector<Q3> lineality;
         for (const ExactVector& l : a.lineality()) lineality.push_back(l.exact());
         add(std::string(n_.size(), letter(ContactMode::Fixed)), {});  // xi = 0: every contact fixed
-        for (const Face& face : a.faces()) {
+        const std::vector<Face> faces = a.faces();
+        for (std::size_t f = 0; f < faces.size(); ++f) {
+            if (progress) progress("faces of the cone of motions", f, faces.size());
+            const Face& face = faces[f];
             std::vector<Q3> rays;
             for (int i : face.rays) rays.push_back(a.rays()[static_cast<std::size_t>(i)].exact());
             if (face.dimension == 0) continue;
@@ -197,14 +200,14 @@ private:
 
 }  // namespace
 
-ModeSet enumerate_modes(const std::vector<Contact>& contacts) {
+ModeSet enumerate_modes(const std::vector<Contact>& contacts, const Progress& progress) {
     for (const Contact& c : contacts) {
         if (!c.point.allFinite() || !c.normal.allFinite() || (c.normal.x() == 0.0 && c.normal.y() == 0.0) ||
             !(c.mu >= 0.0) || !(c.mu_kinetic >= 0.0) || !std::isfinite(c.mu) || !std::isfinite(c.mu_kinetic)) {
             throw std::invalid_argument("enumerate_modes: every contact needs a finite point, a finite non-zero normal and finite mu, mu_kinetic >= 0 (Contact::make)");
         }
     }
-    return Enumerator(contacts).run();
+    return Enumerator(contacts).run(progress);
 }
 
 ContactMode contact_mode(char c) {

@@ -323,6 +323,23 @@ TEST(Cli, PlansWithGravityAndUniqueness) {
     EXPECT_TRUE(j["best_margins"]["inside"][0].is_number());
 }
 
+// Long work shows its progress on a terminal (here a pseudo-terminal from script(1), with the
+// delay before the first line set to 0), erased when done; in a pipe nothing is written.
+TEST(Cli, ProgressOnATerminalOnly) {
+    const std::string scene = kExamples + "/block-on-table.json";
+    const std::string cmd = "MOMENTLAB_PROGRESS_DELAY_MS=0 script -qec '" + std::string(MOMENTLAB_BIN) + " analyze " + scene +
+                            " --json > /dev/null' /dev/null";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buf{};
+    while (std::fgets(buf.data(), buf.size(), p)) out += buf.data();
+    ASSERT_EQ(WEXITSTATUS(pclose(p)), 0) << out;
+    EXPECT_NE(out.find("momentlab: faces of the cone of motions: 0 of 4"), std::string::npos) << out;  // the first call
+    EXPECT_EQ(out.substr(out.size() - 4), "\r\033[K") << out;  // erased at the end
+    EXPECT_EQ(run("analyze " + scene + " --json").status, 0);
+    EXPECT_EQ(stderr_text(), "");
+}
+
 TEST_F(CliPictures, PlanBadRequestsExitTwoNamingTheOption) {
     const std::string scene = kExamples + "/figure-3-block-along-wall.json";
     const std::vector<std::pair<std::string, std::string>> cases = {

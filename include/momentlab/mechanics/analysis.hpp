@@ -31,6 +31,8 @@ struct AnalysisOptions {
     /// F_i = {0} and E_i = -T_i for every mode (each mode's set of motions is non-empty), and no
     /// body is needed; a wrench in no E_i cannot be held quasi-statically (docs/design.md).
     bool quasi_static = false;
+    /// Told how the enumeration and the per-mode sets go (may be empty).
+    Progress progress = nullptr;
 };
 
 /// Every mode with its force sets. Needs the body (mass, centre of mass, inertia) unless

@@ -7,7 +7,9 @@
 /// with t . v > 0, l sliding with t . v < 0.
 
 #include <iosfwd>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "momentlab/geometry/cone.hpp"
@@ -15,6 +17,10 @@
 #include "momentlab/mechanics/scene.hpp"
 
 namespace momentlab {
+
+/// Told how long work goes: `what` is being done, `done` of `total` units (called often, from the
+/// working thread; may be empty). The command line draws it on a terminal (docs/architecture.md).
+using Progress = std::function<void(std::string_view what, std::size_t done, std::size_t total)>;
 
 /// What one contact does in a mode, with its letter (docs/design.md, Conventions): it separates
 /// (the paper's parting), stays fixed (rolls or sticks), or slides with t . v > 0 (r) or
@@ -58,6 +64,6 @@ struct ModeSet {
 /// the stored N_j = (n_j, p_j x n_j) and T_j = (t_j, p_j x t_j). O(n log n) for n contacts.
 /// Throws std::invalid_argument for a contact with a non-finite point, a zero or non-finite
 /// normal, or a negative or non-finite mu / mu_kinetic (as Contact::make would).
-[[nodiscard]] ModeSet enumerate_modes(const std::vector<Contact>& contacts);
+[[nodiscard]] ModeSet enumerate_modes(const std::vector<Contact>& contacts, const Progress& progress = nullptr);
 
 }  // namespace momentlab
