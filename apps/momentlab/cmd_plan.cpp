@@ -125,7 +125,7 @@ int run_tilt(const PlanOptions& o) {
         std::cout << "tilts that produce mode " << o.goal
                   << ": gravity directions, radians from +x (boundaries shared with a neighbouring mode)\n";
         if (fixed) std::cout << "  with the fixed wrench " << fmt(to_double(*fixed)) << " acting too\n";
-        print_directions(plan, single_directions(plan));
+        print_directions(plan, plan.knife_edge || single_directions(plan));
         if (fixed) print_best_bands(p.analysis, *fixed, scene.body->com, plan.best);
     }
     if (!o.picture.files.empty()) {
@@ -145,8 +145,8 @@ int run_comply(const PlanOptions& o) {
     const Problem p = load_problem(o.file, "plan comply", o.quasi_static);
     const Scene& scene = p.scene;
     const ModeForces& goal = find_mode(p.analysis, o.goal, "--goal");
-    const Labels region = compliance_labels(goal);
     const std::optional<Exact3> fixed = fixed_wrench(scene, o.gravity, o.fixed);
+    const Labels region = compliance_labels(goal, plan_context(scene, p.analysis, fixed));
     std::optional<ComplyPlan> plan;
     if (!centre.empty()) plan = plan_comply(goal, centre.front(), plan_context(scene, p.analysis, fixed));
     if (o.json) {
@@ -157,6 +157,7 @@ int run_comply(const PlanOptions& o) {
         std::cout << out.dump() << "\n";
     } else {
         std::cout << "compliance centres for mode " << o.goal << ": those outside both labelled regions of E_" << o.goal
+                  << (fixed ? " + cone(-g) (g the fixed wrench " + fmt(to_double(*fixed)) + ")" : std::string())
                   << " work (on a region's boundary only as a knife edge)\n"
                   << "  + region " << region_text(region.plus()) << "\n"
                   << "  - region " << region_text(region.minus()) << "\n";
@@ -247,6 +248,12 @@ int run_push(const PlanOptions& o) {
             if (!c.best || c.verdict != PushVerdict::Feasible) continue;
             std::cout << "  " << c.feature.name() << " slip " << letter(c.slip) << ": best push " << fmt(c.best->direction)
                       << " at " << fmt(c.best->point) << (c.best_unique ? " (the goal alone)" : "");
+            if (c.unique && c.unique_directions) {
+                std::string where;
+                for (const auto& [p, q] : c.unique_touch) where += (where.empty() ? "" : ", ") + (p == q ? fmt(p) : fmt(p) + " - " + fmt(q));
+                std::cout << "; the goal alone touching " << where << ", directions " << degrees(c.unique_directions->from)
+                          << " .. " << degrees(c.unique_directions->to);
+            }
             if (c.best_margins) std::cout << "; as a unit force, " << margins_text(*c.best_margins);
             if (c.magnitudes_known) {
                 std::cout << "; magnitudes "

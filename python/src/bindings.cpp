@@ -483,7 +483,7 @@ PYBIND11_MODULE(_momentlab, m) {
                  const PlanContext context = context_of(a, gravity, wrench);
                  py::dict out;
                  out["goal"] = goal;
-                 out["labels"] = python_of(to_json(compliance_labels(g)));  // plain data, as the CLI writes it
+                 out["labels"] = python_of(to_json(compliance_labels(g, context)));  // plain data, as the CLI writes it
                  if (!centre.is_none()) out["centre"] = python_of(to_json(plan_comply(g, vector_of<2>(centre, "centre"), context)));
                  return out;
              })

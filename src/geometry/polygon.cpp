@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <set>
+#include <utility>
+#include <vector>
 
 #include "momentlab/core/dyadic.hpp"
 #include "momentlab/core/predicates.hpp"
@@ -63,6 +67,90 @@ bool in_closed_polygon(std::span<const Vec2> polygon, const Vec2& p) {
     return winding != 0;
 }
 
+namespace {
+
+bool lex_less(const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); }
+
+// An edge of the sweep: its lexicographically smaller end `l`, larger end `r`, and its number.
+struct SweepEdge {
+    Vec2 l, r;
+    std::size_t index = 0;
+};
+
+// Where q lies from the edge e: +1 above its line (a vertical edge: above its top), -1 below, 0 on.
+int side(const SweepEdge& e, const Vec2& q) {
+    if (e.l.x() == e.r.x()) return q.y() > e.r.y() ? 1 : (q.y() < e.l.y() ? -1 : 0);
+    const Sign s = orient2d(e.l, e.r, q);
+    return s == Sign::Positive ? 1 : (s == Sign::Negative ? -1 : 0);
+}
+
+// +1 when b rises more steeply than a (directions l -> r, all in x >= 0), -1 less, 0 parallel. Exact.
+int steeper(const SweepEdge& a, const SweepEdge& b) {
+    using D = Dyadic;
+    const D c = (D(a.r.x()) - D(a.l.x())) * (D(b.r.y()) - D(b.l.y())) - (D(a.r.y()) - D(a.l.y())) * (D(b.r.x()) - D(b.l.x()));
+    return c.sign() == Sign::Positive ? 1 : (c.sign() == Sign::Negative ? -1 : 0);
+}
+
+// a below b at the sweep line, judged where the later of them starts: while no two edges have
+// met, the order of the edges crossing the sweep line does not change between events.
+bool below(const SweepEdge& a, const SweepEdge& b) {
+    if (a.index == b.index) return false;
+    const bool b_later = !lex_less(b.l, a.l);
+    const SweepEdge& first = b_later ? a : b;
+    const SweepEdge& later = b_later ? b : a;
+    int up = side(first, later.l);  // +1: the later edge lies above the first
+    if (up == 0) up = steeper(first, later);
+    if (up == 0) up = later.index > first.index ? 1 : -1;  // collinear: they overlap (and meet)
+    return b_later ? up > 0 : up < 0;
+}
+
+// Two edges that meet other than at the vertex they share, found by a sweep from left to right
+// (Shamos and Hoey, "Geometric intersection problems", FOCS 1976): an edge is compared with its
+// neighbours along the sweep line when it enters and when it leaves, so the first meeting is
+// seen before the order could go wrong. Needs distinct vertices. O(n log n), exact.
+std::optional<std::pair<std::size_t, std::size_t>> meeting_edges(std::span<const Vec2> p) {
+    const std::size_t n = p.size();
+    std::vector<SweepEdge> edges(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec2 &a = p[i], &b = p[(i + 1) % n];
+        edges[i] = lex_less(a, b) ? SweepEdge{a, b, i} : SweepEdge{b, a, i};
+    }
+    const auto adjacent = [n](std::size_t i, std::size_t j) { return (i + 1) % n == j || (j + 1) % n == i; };
+    const auto cmp = [&](std::size_t i, std::size_t j) { return below(edges[i], edges[j]); };
+    std::set<std::size_t, decltype(cmp)> status(cmp);
+    std::vector<std::set<std::size_t, decltype(cmp)>::iterator> where(n, status.end());
+    std::optional<std::pair<std::size_t, std::size_t>> found;
+    const auto check = [&](std::size_t i, std::size_t j) {
+        if (found || adjacent(i, j)) return;
+        const SweepEdge &a = edges[i], &b = edges[j];
+        if (segments_meet(a.l, a.r, b.l, b.r)) found = std::pair(std::min(i, j), std::max(i, j));
+    };
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return lex_less(p[i], p[j]); });
+    for (std::size_t v : order) {
+        const std::size_t in = (v + n - 1) % n, out = v;  // the edges ending and starting at vertex v
+        for (std::size_t e : {in, out}) {  // first the edges that end here (v is their right end)
+            if (edges[e].r != p[v]) continue;
+            auto it = where[e];
+            if (it != status.begin() && std::next(it) != status.end()) check(*std::prev(it), *std::next(it));
+            status.erase(it);
+            where[e] = status.end();
+        }
+        for (std::size_t e : {in, out}) {
+            if (edges[e].l != p[v]) continue;
+            const auto it = status.insert(e).first;
+            where[e] = it;
+            if (it != status.begin()) check(*std::prev(it), e);
+            if (std::next(it) != status.end()) check(e, *std::next(it));
+        }
+        if (found) return found;
+    }
+    return found;
+}
+
+}  // namespace
+
 std::string polygon_problem(std::span<const Vec2> polygon) {
     const std::size_t n = polygon.size();
     if (n < 3) return "expected a polygon of at least 3 vertices, got " + std::to_string(n);
@@ -76,21 +164,27 @@ std::string polygon_problem(std::span<const Vec2> polygon) {
         }
     }
     for (std::size_t i = 0; i < n; ++i) {
-        const Vec2 &a = polygon[i], &b = polygon[(i + 1) % n];
         // The next edge b c may only touch this one at b: not fold back along it.
-        const Vec2& c = polygon[(i + 2) % n];
+        const Vec2 &a = polygon[i], &b = polygon[(i + 1) % n], &c = polygon[(i + 2) % n];
         if (orient2d(a, b, c) == Sign::Zero && (within(a, b, c) || within(b, c, a))) {
             return "edges " + std::to_string(i) + " and " + std::to_string((i + 1) % n) +
                    " fold back along each other (expected a simple polygon of non-zero area)";
         }
-        for (std::size_t j = i + 2; j < n; ++j) {
-            if (i == 0 && j == n - 1) continue;  // adjacent through vertex 0
-            if (segments_meet(a, b, polygon[j], polygon[(j + 1) % n])) {
-                return "edges " + std::to_string(i) + " and " + std::to_string(j) +
-                       " cross or touch (expected a simple polygon, either orientation)";
-            }
-        }
     }
+    const auto cross_or_touch = [](std::size_t i, std::size_t j) {
+        return "edges " + std::to_string(i) + " and " + std::to_string(j) +
+               " cross or touch (expected a simple polygon, either orientation)";
+    };
+    // Two vertices at one point (not consecutive: checked above): the edges leaving them touch.
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+        return lex_less(polygon[i], polygon[j]) || (polygon[i] == polygon[j] && i < j);
+    });
+    for (std::size_t k = 0; k + 1 < n; ++k) {
+        if (polygon[order[k]] == polygon[order[k + 1]]) return cross_or_touch(order[k], order[k + 1]);
+    }
+    if (const auto pair = meeting_edges(polygon)) return cross_or_touch(pair->first, pair->second);
     return {};
 }
 

@@ -96,6 +96,7 @@ nlohmann::json to_json(const DirectionPlan& plan) {
     if (plan.feasible()) {
         out["best"] = output_value(plan.best);
         out["margin"] = output_value(plan.margin);
+        out["knife_edge"] = plan.knife_edge;
         if (plan.uniqueness_known) {
             out["unique"] = intervals_json(plan.unique);
             out["shared"] = intervals_json(plan.shared);
@@ -128,6 +129,12 @@ nlohmann::json to_json(const PushCase& c) {
         out["unique"] = c.unique;
         out["shared"] = c.shared;
         out["best_unique"] = c.best_unique;
+        nlohmann::json unique_touch = nlohmann::json::array();
+        for (const auto& [p, q] : c.unique_touch) unique_touch.push_back({vec(p), vec(q)});
+        out["unique_touch"] = unique_touch;
+        out["unique_directions"] = c.unique_directions ? nlohmann::json{output_value(c.unique_directions->from),
+                                                                         output_value(c.unique_directions->to)}
+                                                       : nlohmann::json();
     }
     if (c.best_margins) out["best_margins"] = to_json(*c.best_margins);
     if (c.magnitudes_known && c.best) out["best_magnitudes"] = c.best_magnitudes ? to_json(*c.best_magnitudes) : nlohmann::json();

@@ -25,7 +25,7 @@ ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre, const PlanCon
     // full-dimensional.
     if (!plan.directions.feasible()) {
         plan.verdict = CentreVerdict::Fails;
-    } else if (meets_interior(plan.directions.solutions, target)) {
+    } else if (!plan.directions.knife_edge) {
         plan.verdict = CentreVerdict::Works;
     } else {
         plan.verdict = CentreVerdict::Boundary;
@@ -34,5 +34,9 @@ ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre, const PlanCon
 }
 
 Labels compliance_labels(const ModeForces& goal) { return Labels(goal.applied); }
+
+Labels compliance_labels(const ModeForces& goal, const PlanContext& context) {
+    return context.fixed ? Labels(reachable_directions(goal.applied, *context.fixed)) : Labels(goal.applied);
+}
 
 }  // namespace momentlab

@@ -147,6 +147,11 @@ DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal,
     if (!context.modes.empty() && !context.fixed && context.metric) {
         plan.best_margins = margins_of(context.modes, wrench_at(point, Vec2(std::cos(plan.best), std::sin(plan.best))), *context.metric);
     }
+    // A knife edge: no solution inside E_goal (with a fixed wrench: no g + lambda u inside it, which
+    // needs a full-dimensional E_goal and a direction inside E_goal + cone(-g)).
+    plan.knife_edge = !meets_interior(plan.solutions, target) || (context.fixed && goal.applied.dimension() < 3);
+    if (plan.knife_edge) plan.margin = 0.0;
+    if (plan.best >= M_PI) plan.best -= 2.0 * M_PI;  // [-pi, pi), as the intervals
     if (context.fixed) {
         const Exact3 u = wrench_through(exact(point), exact(Vec2(std::cos(plan.best), std::sin(plan.best))));
         plan.best_magnitudes = magnitudes(goal.applied, *context.fixed, u);

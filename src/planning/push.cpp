@@ -152,7 +152,7 @@ namespace {
 std::vector<PushPiece> solve_pieces(const PushFeature& f, const Exact2& cw, const Exact2& ccw, const Exact2& bisector,
                                     ContactMode slip, double mu,
                                     const std::vector<std::pair<double, double>>& parts, const Cone& goal,
-                                    const std::vector<Polygon>* obstacles) {
+                                    const std::vector<Polygon>* obstacles, bool interior_possible) {
     std::vector<PushPiece> pieces;
     for (const auto& [lo, hi] : parts) {
         // The feature's own ends where the part reaches them (a + 1.0 (b - a) can round off b).
@@ -166,7 +166,7 @@ std::vector<PushPiece> solve_pieces(const PushFeature& f, const Exact2& cw, cons
             // Robust: the solutions meet the interior of E_goal, and a concrete push, the rounded
             // representative, lies there exactly (where the finger is free). A sliver that only
             // rounding opened (inputs that are not dyadic) has no such push: it is a boundary case.
-            if (meets_interior(piece.solutions, goal)) {
+            if (interior_possible && meets_interior(piece.solutions, goal)) {
                 piece.representative = representative(f, piece.solutions);
                 piece.robust = goal.in_relative_interior(piece.representative->wrench()) &&
                                !(obstacles && in_obstacle(*obstacles, piece.representative->point));
@@ -177,13 +177,19 @@ std::vector<PushPiece> solve_pieces(const PushFeature& f, const Exact2& cw, cons
     return pieces;
 }
 
-// Touch segments, direction range and a representative push from the chosen pieces.
-void describe(PushCase& c, const std::vector<const PushPiece*>& chosen) {
-    const PushFeature& f = c.feature;
+// Where the lines of action of the cones' extreme rays meet the feature (segments: one per cone
+// on an edge, the vertex once) and the range of their directions.
+struct Extents {
+    std::vector<std::pair<Vec2, Vec2>> touch;
+    std::optional<DirectionRange> directions;
+};
+
+Extents extents(const PushFeature& f, const std::vector<const Cone*>& cones) {
+    Extents out;
     double lo_angle = INFINITY, hi_angle = -INFINITY;
-    for (const PushPiece* piece : chosen) {
+    for (const Cone* cone : cones) {
         double s0 = INFINITY, s1 = -INFINITY;
-        for (const Vec3& w : piece->solutions.generator_values()) {
+        for (const Vec3& w : cone->generator_values()) {
             if (f.kind == PushFeature::Kind::Edge) {
                 const double s = std::clamp(touch_parameter(f, w), 0.0, 1.0);
                 s0 = std::min(s0, s);
@@ -194,10 +200,10 @@ void describe(PushCase& c, const std::vector<const PushPiece*>& chosen) {
             hi_angle = std::max(hi_angle, angle);
         }
         if (f.kind == PushFeature::Kind::Vertex) {
-            if (c.touch.empty()) c.touch.emplace_back(f.from, f.from);
+            if (out.touch.empty()) out.touch.emplace_back(f.from, f.from);
         } else if (s0 <= s1) {
             const Vec2 d = f.to - f.from;
-            c.touch.emplace_back(f.from + s0 * d, f.from + s1 * d);
+            out.touch.emplace_back(f.from + s0 * d, f.from + s1 * d);
         }
     }
     if (lo_angle <= hi_angle) {
@@ -205,24 +211,34 @@ void describe(PushCase& c, const std::vector<const PushPiece*>& chosen) {
         const double width = hi_angle - lo_angle;
         from = std::remainder(from, 2.0 * M_PI);
         if (from >= M_PI) from -= 2.0 * M_PI;
-        c.directions = DirectionRange{from, from + width};
+        out.directions = DirectionRange{from, from + width};
     }
-    if (!chosen.empty()) c.best = chosen.front()->representative ? *chosen.front()->representative
-                                                                 : representative(f, chosen.front()->solutions);
+    return out;
 }
 
-// One case: solved on the whole feature (its verdict: feasible, boundary or no), then, when
-// obstacles cover part of it and the case is feasible, again on the free parts only.
+// Touch segments, direction range and a representative push from the chosen pieces.
+void describe(PushCase& c, const std::vector<const PushPiece*>& chosen) {
+    std::vector<const Cone*> cones;
+    for (const PushPiece* piece : chosen) cones.push_back(&piece->solutions);
+    Extents e = extents(c.feature, cones);
+    c.touch = std::move(e.touch);
+    c.directions = e.directions;
+    if (!chosen.empty()) c.best = chosen.front()->representative ? *chosen.front()->representative
+                                                                 : representative(c.feature, chosen.front()->solutions);
+}
+
 // Which of the shown pieces push into the goal alone, and a unique best push when one, rounded,
 // still lies in E_goal's interior, in no other mode's set and where the finger is free.
 void tell_uniqueness(PushCase& c, const std::vector<const PushPiece*>& shown, const ModeForces& goal,
                      std::span<const ModeForces> modes, const std::vector<Polygon>* obstacles) {
     c.uniqueness_known = true;
+    std::vector<Cone> parts;
     for (const PushPiece* piece : shown) {
-        const Uniqueness u = uniqueness(piece->solutions, modes, goal);
+        Uniqueness u = uniqueness(piece->solutions, modes, goal);
         c.shared = c.shared || u.shared;
         if (!u.unique) continue;
         c.unique = true;
+        for (Cone& part : u.parts) parts.push_back(std::move(part));
         if (c.best_unique) continue;
         const Vec3 w = u.representative->value();
         Push push;
@@ -239,6 +255,24 @@ void tell_uniqueness(PushCase& c, const std::vector<const PushPiece*>& shown, co
             c.best_unique = true;
         }
     }
+    std::vector<const Cone*> cones;
+    for (const Cone& part : parts) cones.push_back(&part);
+    Extents e = extents(c.feature, cones);
+    // The parts of a 3-D case overlap along the edge: their segments merged, in the edge's order.
+    const Vec2 d = c.feature.to - c.feature.from;
+    const auto along = [&](const Vec2& p) { return (p - c.feature.from).dot(d); };
+    for (auto& [p, q] : e.touch) {
+        if (along(q) < along(p)) std::swap(p, q);
+    }
+    std::sort(e.touch.begin(), e.touch.end(), [&](const auto& x, const auto& y) { return along(x.first) < along(y.first); });
+    for (const auto& segment : e.touch) {
+        if (!c.unique_touch.empty() && along(segment.first) <= along(c.unique_touch.back().second)) {
+            if (along(segment.second) > along(c.unique_touch.back().second)) c.unique_touch.back().second = segment.second;
+        } else {
+            c.unique_touch.push_back(segment);
+        }
+    }
+    c.unique_directions = e.directions;
 }
 
 PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, ContactMode slip, double mu,
@@ -252,7 +286,10 @@ PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, c
         return c;
     }
     const std::vector<std::pair<double, double>> whole = {{0.0, f.kind == PushFeature::Kind::Edge ? 1.0 : 0.0}};
-    c.pieces = solve_pieces(f, cw, ccw, bisector, slip, mu, whole, goal, nullptr);
+    // With a fixed wrench the cases are solved on E_goal + cone(-g), full-dimensional even when
+    // E_goal is not; then no push puts g + lambda u inside E_goal: knife edges only.
+    const bool interior_possible = !context.fixed || goal_mode.applied.dimension() == 3;
+    c.pieces = solve_pieces(f, cw, ccw, bisector, slip, mu, whole, goal, nullptr, interior_possible);
     const auto has_solutions = [](const PushPiece& p) { return !p.solutions.is_zero(); };
     const auto robust = [](const PushPiece& p) { return p.robust; };
     const bool robust_anywhere = std::any_of(c.pieces.begin(), c.pieces.end(), robust);
@@ -262,7 +299,7 @@ PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, c
     if (free) {
         c.blocked = free->parts.empty() ? "all" : free->all_free ? "none" : "part";
         if (robust_anywhere && !free->all_free) {
-            auto reachable = solve_pieces(f, cw, ccw, bisector, slip, mu, free->parts, goal, &obstacles);
+            auto reachable = solve_pieces(f, cw, ccw, bisector, slip, mu, free->parts, goal, &obstacles, interior_possible);
             if (std::any_of(reachable.begin(), reachable.end(), robust)) {
                 c.pieces = std::move(reachable);
             } else {

@@ -5,10 +5,7 @@
 
 namespace momentlab {
 
-DirectionPlan plan_tilt(const Scene& scene, const ModeForces& goal) {
-    if (!scene.body) throw std::invalid_argument("plan_tilt: the scene has no body");
-    return plan_directions_through(scene.body->com, goal.applied);
-}
+DirectionPlan plan_tilt(const Scene& scene, const ModeForces& goal) { return plan_tilt(scene, goal, PlanContext{}); }
 
 DirectionPlan plan_tilt(const Scene& scene, const ModeForces& goal, const PlanContext& context) {
     if (!scene.body) throw std::invalid_argument("plan_tilt: the scene has no body");

@@ -183,6 +183,7 @@ Uniqueness uniqueness_3d(const Cone& s, std::span<const ModeForces> modes, const
         Exact3 total{};
         for (const ExactVector& g : pieces.front().generators()) total = total + g.exact();
         u.representative = ExactVector::from_exact(total);
+        u.parts = std::move(pieces);
     }
     return u;
 }
@@ -200,9 +201,10 @@ Uniqueness uniqueness(const Cone& s, std::span<const ModeForces> modes, const Mo
                 if (!is_goal(m, goal) && m.applied.has(g)) alone = false;
             }
             u.shared = u.shared || !alone;
-            if (alone && !u.unique) {
+            if (alone) {
+                if (!u.unique) u.representative = g;
                 u.unique = true;
-                u.representative = g;
+                u.parts.push_back(Cone::from_generators(std::span<const ExactVector>(&g, 1)));
             }
         }
         return u;
@@ -213,9 +215,19 @@ Uniqueness uniqueness(const Cone& s, std::span<const ModeForces> modes, const Mo
     for (const WrenchArc& a : split.unique) {
         // A part of the plane's own dimension: more than one direction.
         if (!a.whole && det_sign(nu, a.from, a.to) == Sign::Zero && dot_sign(a.from, a.to) == Sign::Positive) continue;
+        const ExactVector middle = arc_middle(nu, a);
+        if (!u.unique) u.representative = middle;
         u.unique = true;
-        u.representative = arc_middle(nu, a);
-        break;
+        // As convex cones: the arc itself when narrower than a half-turn, else its two halves
+        // (the whole plane: the plane).
+        if (a.whole) {
+            u.parts.push_back(s);
+        } else if (det_sign(nu, a.from, a.to) == Sign::Positive) {
+            u.parts.push_back(Cone::from_generators(std::vector<ExactVector>{a.from, a.to}));
+        } else {
+            u.parts.push_back(Cone::from_generators(std::vector<ExactVector>{a.from, middle}));
+            u.parts.push_back(Cone::from_generators(std::vector<ExactVector>{middle, a.to}));
+        }
     }
     return u;
 }

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "momentlab/geometry/polygon.hpp"
@@ -76,6 +78,40 @@ TEST(Polygon, ProblemAgreesWithBruteForceOnSmallGrids) {
     std::cout << "[Polygon] " << simple_count << " simple, " << problem_count << " not\n";
     EXPECT_GE(simple_count, 1000);
     EXPECT_GE(problem_count, 1000);
+}
+
+// Larger polygons for the sweep line: star-shaped outlines about a centre on a small grid (radii
+// from the grid, so vertices often land on other edges, repeat, or line up), either orientation;
+// a named pair of edges must really meet.
+TEST(Polygon, StarPolygonsAgreeWithTheOracle) {
+    std::mt19937 rng(2026);
+    int simple_count = 0, problem_count = 0;
+    for (int t = 0; t < 3000; ++t) {
+        const int n = 8 + static_cast<int>(rng() % 60);
+        std::vector<std::pair<double, P>> around;
+        for (int i = 0; i < n; ++i) {
+            const double angle = 2 * M_PI * (i + 0.3 * (rng() % 4) / 4.0) / n;
+            const long r = 2 + static_cast<long>(rng() % (t % 3 == 0 ? 3 : 8));
+            around.push_back({angle, {std::lround(r * std::cos(angle) * 2), std::lround(r * std::sin(angle) * 2)}});
+        }
+        std::vector<P> v;
+        for (const auto& [a, q] : around) v.push_back(q);
+        if (t % 2) std::reverse(v.begin(), v.end());
+        if (t % 7 == 0) std::swap(v[rng() % n], v[rng() % n]);  // now and then a crossing
+        std::vector<Vec2> poly;
+        for (const P& q : v) poly.emplace_back(static_cast<double>(q[0]) * 0.25, static_cast<double>(q[1]) * 0.25 - 3.0);
+        const bool expected = simple(v);
+        const std::string problem = polygon_problem(poly);
+        ASSERT_EQ(problem.empty(), expected) << "polygon " << t << ": " << problem;
+        (expected ? simple_count : problem_count)++;
+        std::size_t i = 0, j = 0;
+        if (std::sscanf(problem.c_str(), "edges %zu and %zu cross", &i, &j) == 2) {
+            ASSERT_TRUE(meet(v[i], v[(i + 1) % n], v[j], v[(j + 1) % n])) << "polygon " << t << ": " << problem;
+        }
+    }
+    std::cout << "[Polygon] stars: " << simple_count << " simple, " << problem_count << " not\n";
+    EXPECT_GE(simple_count, 300);
+    EXPECT_GE(problem_count, 300);
 }
 
 TEST(Polygon, NamesTheProblem) {

@@ -7,7 +7,9 @@
 #include <random>
 
 #include "momentlab/planning/fixed_wrench.hpp"
+#include "momentlab/planning/comply.hpp"
 #include "momentlab/planning/push.hpp"
+#include "momentlab/planning/tilt.hpp"
 
 namespace momentlab {
 namespace {
@@ -173,6 +175,61 @@ TEST(FixedWrench, PushPlanUnderGravityReportsMagnitudes) {
         }
         EXPECT_TRUE(found);
     }
+}
+
+// A frictionless block: E_ff (held by two normal forces) is a plane, so no g + lambda u lies in
+// its interior: with a fixed wrench every plan for ff is a knife edge, never feasible (E_ff +
+// cone(-g) is full-dimensional all the same: the verdicts must not be read off it alone).
+TEST(FixedWrench, LowerDimensionalGoalsAreKnifeEdges) {
+    Scene scene = testing::example_scene("block-on-table.json");
+    for (Contact& c : scene.contacts) c = Contact::make(c.point, c.normal, 0.0, 0.0);
+    const auto a = analyze(scene);
+    const ModeForces* ff = nullptr;
+    for (const ModeForces& m : a) {
+        if (m.mode.letters == "ff") ff = &m;
+    }
+    ASSERT_NE(ff, nullptr);
+    ASSERT_EQ(ff->applied.dimension(), 2);
+    PlanContext context;
+    context.fixed = exact(Vec3(1.0, 0.0, 0.0));
+    const DirectionPlan tilt = plan_tilt(scene, *ff, context);
+    ASSERT_TRUE(tilt.feasible());
+    EXPECT_TRUE(tilt.knife_edge);
+    EXPECT_EQ(tilt.margin, 0.0);
+    for (const PushCase& c : plan_push(scene, *ff, PushOptions{0.5, true}, context)) {
+        EXPECT_NE(c.verdict, PushVerdict::Feasible) << c.feature.name() << " " << letter(c.slip);
+    }
+    const ComplyPlan comply = plan_comply(*ff, Vec2(0.5, 3.0), context);
+    EXPECT_NE(comply.verdict, CentreVerdict::Works);
+}
+
+// plan_comply with gravity: its label and verdict are those of E_goal + cone(-g), whose labels
+// compliance_labels gives: a centre works exactly when it is unlabelled there (block on the
+// table, rr, every quarter unit over [-2, 3] x [-2, 3]).
+TEST(FixedWrench, ComplianceLabelsFollowTheFixedWrench) {
+    const Scene scene = testing::example_scene("block-on-table.json");
+    const auto a = analyze(scene);
+    const ModeForces* rr = nullptr;
+    for (const ModeForces& m : a) {
+        if (m.mode.letters == "rr") rr = &m;
+    }
+    ASSERT_NE(rr, nullptr);
+    PlanContext context;
+    context.fixed = gravity_wrench(*scene.body, Vec2(0.0, -10.0));
+    const Labels labels = compliance_labels(*rr, context);
+    int works = 0, fails = 0;
+    for (int i = -8; i <= 12; ++i) {
+        for (int j = -8; j <= 12; ++j) {
+            const Vec2 c(i / 4.0, j / 4.0);
+            const ComplyPlan plan = plan_comply(*rr, c, context);
+            EXPECT_EQ(plan.label, labels.at(c)) << c.transpose();
+            if (plan.label == Label::None) EXPECT_EQ(plan.verdict, CentreVerdict::Works) << c.transpose();
+            if (plan.verdict == CentreVerdict::Works) ++works;
+            if (plan.verdict == CentreVerdict::Fails) ++fails;
+        }
+    }
+    EXPECT_GT(works, 10);
+    EXPECT_GT(fails, 10);
 }
 
 }  // namespace

@@ -18,7 +18,7 @@ namespace momentlab {
 /// accepted. Problems found: fewer than three vertices, a non-finite coordinate, two
 /// consecutive vertices equal, two edges meeting other than at the vertex they share
 /// (crossing, touching, or an edge folding back along the previous one, which includes a
-/// polygon of zero area). Exact; O(n^2) in the number of vertices.
+/// polygon of zero area). Exact; O(n log n) in the number of vertices (a sweep line).
 [[nodiscard]] std::string polygon_problem(std::span<const Vec2> polygon);
 
 /// True when the simple polygon's vertices run counter-clockwise (exact: the turn at its

@@ -52,5 +52,8 @@ struct ComplyPlan {
 /// The labels of E_goal: the compliance centres that work are the points outside both regions
 /// (docs/design.md, Synthesis); the regions are drawn and written as for any force set.
 [[nodiscard]] Labels compliance_labels(const ModeForces& goal);
+/// The same told the context: with a fixed wrench, the labels of E_goal + cone(-g), the directions
+/// that give the goal at some magnitude (plan_comply's verdicts follow them).
+[[nodiscard]] Labels compliance_labels(const ModeForces& goal, const PlanContext& context);
 
 }  // namespace momentlab

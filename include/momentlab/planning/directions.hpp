@@ -61,6 +61,9 @@ struct DirectionPlan {
     /// Told the modes (and no fixed wrench): the closures of the directions where the goal is the
     /// only mode and of those where another mode's set holds them too; `intervals` is their union.
     bool uniqueness_known = false;
+    /// Every solution lies on the boundary of E_goal (with a fixed wrench: every g + lambda u that
+    /// gives the goal does), so no direction has a margin: `margin` is 0.
+    bool knife_edge = false;
     std::vector<AngleInterval> unique;
     std::vector<AngleInterval> shared;
     bool best_unique = false;  ///< `best` lies in an arc of `unique`

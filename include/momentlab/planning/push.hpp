@@ -106,6 +106,9 @@ struct PushCase {
     bool unique = false;
     bool shared = false;
     bool best_unique = false;
+    /// The extents of the unique part, as `touch` and `directions` are of all the solutions.
+    std::vector<std::pair<Vec2, Vec2>> unique_touch;
+    std::optional<DirectionRange> unique_directions;
     /// With a fixed wrench: the magnitudes of `best` (a unit force times lambda) that give the goal.
     std::optional<MagnitudeRange> best_magnitudes;
     bool magnitudes_known = false;  ///< planned with a fixed wrench

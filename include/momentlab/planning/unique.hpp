@@ -47,6 +47,9 @@ struct Uniqueness {
     bool shared = false;
     /// An exact wrench in the relative interior of a unique part (when there is one).
     std::optional<ExactVector> representative;
+    /// The unique parts, closed, as convex cones of s's dimension (each narrower than a half-turn
+    /// in a plane): where the goal is the only mode, up to their boundaries.
+    std::vector<Cone> parts;
 };
 
 /// Uniqueness of the solutions s against every other mode of `modes`. Exact. In three dimensions
