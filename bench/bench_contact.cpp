@@ -4,6 +4,7 @@
 // (two friction directions per contact; docs/benchmarks.md). `make bench` prints the ratios.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -11,6 +12,8 @@
 #include <vector>
 
 #include "coulomb_lcp.hpp"
+#include "momentlab/geometry/polygon.hpp"
+#include "momentlab/mechanics/find_contacts.hpp"
 #include "momentlab/mechanics/query_index.hpp"
 
 namespace {
@@ -120,6 +123,65 @@ void BM_lemke(benchmark::State& state) {
 }
 BENCHMARK(BM_lemke)->DenseRange(2, 8, 2);
 
+// A wavy closed outline of n vertices (radius 1 + sin(7 t) / 10) and a floor of n vertices whose
+// top edge runs along the outline's lowest point: the simplicity check of both and the contact
+// search between them, as a scene with a detailed body on a detailed terrain asks.
+Polygon wavy(std::int64_t n) {
+    Polygon p;
+    for (std::int64_t i = 0; i < n; ++i) {
+        const double t = 2.0 * M_PI * static_cast<double>(i) / static_cast<double>(n), r = 1.0 + 0.1 * std::sin(7.0 * t);
+        p.emplace_back(r * std::cos(t), r * std::sin(t));
+    }
+    return p;
+}
+
+Polygon terrain(std::int64_t n, double top) {
+    Polygon p;
+    for (std::int64_t i = 0; i < n; ++i) p.emplace_back(-2.0 + 4.0 * static_cast<double>(i) / static_cast<double>(n), top);
+    p.emplace_back(2.0, top - 2.0);
+    p.emplace_back(-2.0, top - 2.0);
+    return p;
+}
+
+void BM_polygon_simple(benchmark::State& state) {
+    const Polygon p = wavy(state.range(0));
+    for (auto _ : state) benchmark::DoNotOptimize(polygon_problem(p));
+    state.SetComplexityN(state.range(0));
+}
+BENCHMARK(BM_polygon_simple)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMillisecond)->Complexity();
+
+void BM_find_contacts(benchmark::State& state) {
+    const Polygon body = wavy(state.range(0));
+    double low = 0.0;
+    for (const Vec2& v : body) low = std::min(low, v.y());
+    const std::vector<Polygon> obstacles = {terrain(state.range(0), low)};
+    std::size_t found = 0;
+    for (auto _ : state) found = find_contacts(body, obstacles).size();
+    state.counters["contacts"] = static_cast<double>(found);
+    state.SetComplexityN(state.range(0));
+}
+BENCHMARK(BM_find_contacts)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMillisecond)->Complexity();
+
+// The alternative: every vertex against every edge (what find_contacts did before its grid).
+void BM_find_contacts_all_pairs(benchmark::State& state) {
+    const Polygon body = wavy(state.range(0));
+    double low = 0.0;
+    for (const Vec2& v : body) low = std::min(low, v.y());
+    const Polygon floor = terrain(state.range(0), low);
+    std::size_t found = 0;
+    for (auto _ : state) {
+        found = 0;
+        for (const Vec2& v : body) {
+            for (std::size_t k = 0; k < floor.size(); ++k) found += within_distance_of_segment(v, floor[k], floor[(k + 1) % floor.size()], 1e-9);
+        }
+        for (const Vec2& v : floor) {
+            for (std::size_t k = 0; k < body.size(); ++k) found += within_distance_of_segment(v, body[k], body[(k + 1) % body.size()], 1e-9);
+        }
+        benchmark::DoNotOptimize(found);
+    }
+}
+BENCHMARK(BM_find_contacts_all_pairs)->RangeMultiplier(10)->Range(1000, 10000)->Unit(benchmark::kMillisecond);
+
 class RatioReporter : public benchmark::ConsoleReporter {
 public:
     std::map<std::string, double> seconds;  // name -> seconds per iteration
@@ -137,6 +199,20 @@ public:
             const auto l = seconds.find("BM_lemke/" + std::to_string(n));
             if (q == seconds.end() || l == seconds.end()) continue;
             std::printf("%10d %16.0f %16.0f %10.1f\n", n, 1.0 / q->second, 1.0 / l->second, l->second / q->second);
+        }
+        std::printf("\nPolygons of n vertices: simplicity, contact search (grid), and every pair (the alternative)\n");
+        std::printf("%10s %14s %14s %14s %10s\n", "n", "simple (ms)", "contacts (ms)", "all pairs (ms)", "ratio");
+        for (int n = 1000; n <= 1000000; n *= 10) {
+            const auto s1 = seconds.find("BM_polygon_simple/" + std::to_string(n));
+            const auto c = seconds.find("BM_find_contacts/" + std::to_string(n));
+            const auto b = seconds.find("BM_find_contacts_all_pairs/" + std::to_string(n));
+            if (s1 == seconds.end() || c == seconds.end()) continue;
+            std::printf("%10d %14.2f %14.2f", n, 1e3 * s1->second, 1e3 * c->second);
+            if (b != seconds.end()) {
+                std::printf(" %14.2f %10.1f\n", 1e3 * b->second, b->second / c->second);
+            } else {
+                std::printf(" %14s %10s\n", "-", "-");
+            }
         }
     }
 };

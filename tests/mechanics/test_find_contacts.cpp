@@ -2,10 +2,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <random>
+
 #include <fstream>
 #include <sstream>
 
 #include "momentlab/io/scene_json.hpp"
+#include "momentlab/geometry/polygon.hpp"
 #include "momentlab/mechanics/find_contacts.hpp"
 
 namespace momentlab {
@@ -84,6 +88,89 @@ TEST(FindContacts, SceneWithoutContactsFindsThem) {
     ASSERT_EQ(s.contacts.size(), 2u);
     EXPECT_DOUBLE_EQ(s.contacts[0].mu, 0.5);
     EXPECT_THROW((void)read_scene_text(R"({"body": {"mass": 1, "com": [0, 0], "inertia": 1}})"), InputError);
+}
+
+// find_contacts indexes the touched polygon's edges in a grid; against the plain double loop over
+// every vertex and edge (the rules of find_contacts.hpp written out here) on random outlines
+// that touch often: star-shaped polygons on a coarse grid, the obstacle a copy moved so that
+// vertices land on edges, both orientations, distances 0 and 1e-9.
+std::vector<Contact> brute_force(const Polygon& body_in, const std::vector<Polygon>& obstacles, double distance) {
+    const auto ccw = [](Polygon p) {
+        if (!is_counter_clockwise(p)) std::reverse(p.begin(), p.end());
+        return p;
+    };
+    const auto outward = [](const Vec2& a, const Vec2& b) -> Vec2 { return Vec2((b - a).y(), -(b - a).x()) / (b - a).norm(); };
+    std::vector<Contact> found;
+    const Polygon body = ccw(body_in);
+    for (const Polygon& raw : obstacles) {
+        const Polygon o = ccw(raw);
+        for (int pass = 0; pass < 2; ++pass) {
+            const Polygon& touching = pass == 0 ? body : o;
+            const Polygon& touched = pass == 0 ? o : body;
+            const std::size_t n = touching.size(), m = touched.size();
+            for (std::size_t i = 0; i < n; ++i) {
+                for (std::size_t k = 0; k < m; ++k) {
+                    const Vec2 &v = touching[i], &a = touched[k], &b = touched[(k + 1) % m];
+                    if (!within_distance_of_segment(v, a, b, distance)) continue;
+                    if (pass == 1 && ((v - a).norm() <= distance || (v - b).norm() <= distance)) continue;
+                    const Vec2 out_n = outward(a, b);
+                    if ((touching[(i + n - 1) % n] - a).dot(out_n) < -distance || (touching[(i + 1) % n] - a).dot(out_n) < -distance) {
+                        continue;
+                    }
+                    found.push_back(Contact::make(v, pass == 0 ? out_n : Vec2(-out_n), 0.0, 0.0));
+                }
+            }
+        }
+    }
+    std::vector<Contact> out;
+    for (const Contact& c : found) {
+        if (std::none_of(out.begin(), out.end(), [&](const Contact& d) {
+                return (c.point - d.point).norm() <= distance && (c.normal - d.normal).norm() <= distance;
+            })) {
+            out.push_back(c);
+        }
+    }
+    return out;
+}
+
+TEST(FindContacts, TheGridFindsWhatTheDoubleLoopFinds) {
+    std::mt19937 rng(5);
+    int touching = 0;
+    for (int t = 0; t < 400; ++t) {
+        const int n = 5 + static_cast<int>(rng() % 40);
+        Polygon body;
+        for (int i = 0; i < n; ++i) {
+            const double angle = 2 * M_PI * i / n;
+            const double r = 1.0 + static_cast<double>(rng() % 3);
+            body.emplace_back(std::round(r * std::cos(angle) * 4) / 4, std::round(r * std::sin(angle) * 4) / 4);
+        }
+        if (!polygon_problem(body).empty()) continue;
+        Polygon obstacle;  // a box below, its top at the body's lowest y, or a shifted copy of the body
+        double low = 1e9, left = 1e9, right = -1e9;
+        for (const Vec2& v : body) {
+            low = std::min(low, v.y());
+            left = std::min(left, v.x());
+            right = std::max(right, v.x());
+        }
+        if (t % 2 == 0) {
+            obstacle = {{left - 1, low - 2}, {right + 1, low - 2}, {right + 1, low}, {left - 1, low}};
+        } else {
+            for (const Vec2& v : body) obstacle.emplace_back(v.x() + (right - left), v.y());
+        }
+        if (t % 3 == 0) std::reverse(obstacle.begin(), obstacle.end());
+        if (!polygon_problem(obstacle).empty()) continue;
+        for (double distance : {0.0, 1e-9}) {
+            const std::vector<Contact> want = brute_force(body, {obstacle}, distance);
+            const std::vector<Contact> got = find_contacts(body, {obstacle}, ContactFinding{distance, 0.0, 0.0});
+            ASSERT_EQ(got.size(), want.size()) << "polygon " << t;
+            for (std::size_t k = 0; k < got.size(); ++k) {
+                EXPECT_EQ(got[k].point, want[k].point) << "polygon " << t;
+                EXPECT_EQ(got[k].normal, want[k].normal) << "polygon " << t;
+            }
+            touching += got.empty() ? 0 : 1;
+        }
+    }
+    EXPECT_GT(touching, 200);
 }
 
 TEST(SceneJson, WrittenScenesReadBackUnchanged) {

@@ -32,6 +32,9 @@ struct ContactFinding {
 /// on" is within `options.distance`, decided exactly (within_distance_of_segment). Throws
 /// std::invalid_argument for a polygon that is not simple (polygon_problem: fewer than 3
 /// vertices, non-finite or repeated vertices, crossing or folded edges) or a negative distance.
+/// Each touched polygon's edges are indexed in a grid (docs/benchmarks.md, Polygons): O((n + m)
+/// log(n + m)) with the simplicity checks for outlines of n and m vertices whose edges do not
+/// crowd into a few cells.
 [[nodiscard]] std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygon>& obstacles,
                                                  const ContactFinding& options = {});
 
