@@ -143,6 +143,14 @@ Polygon terrain(std::int64_t n, double top) {
     return p;
 }
 
+// The wavy body of n vertices and the terrain of n vertices along its lowest point.
+std::pair<Polygon, Polygon> body_on_terrain(std::int64_t n) {
+    Polygon body = wavy(n);
+    double low = 0.0;
+    for (const Vec2& v : body) low = std::min(low, v.y());
+    return {std::move(body), terrain(n, low)};
+}
+
 void BM_polygon_simple(benchmark::State& state) {
     const Polygon p = wavy(state.range(0));
     for (auto _ : state) benchmark::DoNotOptimize(polygon_problem(p));
@@ -151,10 +159,8 @@ void BM_polygon_simple(benchmark::State& state) {
 BENCHMARK(BM_polygon_simple)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMillisecond)->Complexity();
 
 void BM_find_contacts(benchmark::State& state) {
-    const Polygon body = wavy(state.range(0));
-    double low = 0.0;
-    for (const Vec2& v : body) low = std::min(low, v.y());
-    const std::vector<Polygon> obstacles = {terrain(state.range(0), low)};
+    const auto [body, floor] = body_on_terrain(state.range(0));
+    const std::vector<Polygon> obstacles = {floor};
     std::size_t found = 0;
     for (auto _ : state) found = find_contacts(body, obstacles).size();
     state.counters["contacts"] = static_cast<double>(found);
@@ -164,10 +170,7 @@ BENCHMARK(BM_find_contacts)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(ben
 
 // The alternative: every vertex against every edge (what find_contacts did before its grid).
 void BM_find_contacts_all_pairs(benchmark::State& state) {
-    const Polygon body = wavy(state.range(0));
-    double low = 0.0;
-    for (const Vec2& v : body) low = std::min(low, v.y());
-    const Polygon floor = terrain(state.range(0), low);
+    const auto [body, floor] = body_on_terrain(state.range(0));
     std::size_t found = 0;
     for (auto _ : state) {
         found = 0;
