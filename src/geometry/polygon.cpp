@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -253,6 +254,67 @@ double distance_to_boundary(std::span<const Vec2> polygon, const Vec2& p) {
         best = std::min(best, distance_to_segment(polygon[i], polygon[(i + 1) % polygon.size()], p));
     }
     return best;
+}
+
+EdgeGrid::EdgeGrid(std::span<const Vec2> p, double distance) {
+    const std::size_t m = p.size();
+    if (m == 0 || !(distance >= 0.0) || !std::isfinite(distance) ||
+        std::any_of(p.begin(), p.end(), [](const Vec2& v) { return !v.allFinite(); })) {
+        throw std::invalid_argument("EdgeGrid: expected finite vertices and a finite distance >= 0");
+    }
+    lo_ = hi_ = p[0];
+    double length = 0.0;
+    for (std::size_t k = 0; k < m; ++k) {
+        lo_ = lo_.cwiseMin(p[k]);
+        hi_ = hi_.cwiseMax(p[k]);
+        length += (p[(k + 1) % m] - p[k]).norm();
+    }
+    const Vec2 extent = hi_ - lo_;
+    margin_ = distance + 1e-9 * (lo_.cwiseAbs().maxCoeff() + hi_.cwiseAbs().maxCoeff() + extent.maxCoeff());
+    cell_ = std::max({length / static_cast<double>(m), 2.0 * margin_, extent.maxCoeff() / static_cast<double>(4 * m)});
+    if (!(cell_ > 0.0) || !std::isfinite(cell_)) cell_ = 1.0;  // a point, or lengths beyond the doubles
+    // At most about 4 m cells: coarser for outlines whose edges are short beside their box.
+    while ((extent.x() / cell_ + 1.0) * (extent.y() / cell_ + 1.0) > 4.0 * static_cast<double>(m) + 16.0) cell_ *= 1.5;
+    nx_ = static_cast<std::size_t>(extent.x() / cell_) + 1;
+    ny_ = static_cast<std::size_t>(extent.y() / cell_) + 1;
+    std::vector<std::pair<std::size_t, std::size_t>> entries;  // (cell, edge)
+    for (std::size_t k = 0; k < m; ++k) {
+        const Vec2 &a = p[k], &b = p[(k + 1) % m];
+        const std::size_t pieces = static_cast<std::size_t>((b - a).norm() / cell_) + 1;
+        const std::size_t first = entries.size();
+        for (std::size_t i = 0; i < pieces; ++i) {
+            const Vec2 u = a + (b - a) * (static_cast<double>(i) / pieces);
+            const Vec2 v = i + 1 == pieces ? b : Vec2(a + (b - a) * (static_cast<double>(i + 1) / pieces));
+            const Vec2 box_lo = u.cwiseMin(v).array() - margin_, box_hi = u.cwiseMax(v).array() + margin_;
+            const auto [x0, y0] = index(box_lo);
+            const auto [x1, y1] = index(box_hi);
+            for (std::size_t x = x0; x <= x1; ++x) {
+                for (std::size_t y = y0; y <= y1; ++y) entries.emplace_back(x * ny_ + y, k);
+            }
+        }
+        std::sort(entries.begin() + static_cast<std::ptrdiff_t>(first), entries.end());
+        entries.erase(std::unique(entries.begin() + static_cast<std::ptrdiff_t>(first), entries.end()), entries.end());
+    }
+    std::stable_sort(entries.begin(), entries.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    start_.assign(nx_ * ny_ + 1, 0);
+    for (const auto& e : entries) ++start_[e.first + 1];
+    for (std::size_t c = 0; c < nx_ * ny_; ++c) start_[c + 1] += start_[c];
+    edges_.reserve(entries.size());
+    for (const auto& e : entries) edges_.push_back(e.second);  // per cell, increasing edge number
+}
+
+std::span<const std::size_t> EdgeGrid::near(const Vec2& q) const {
+    if ((q.array() < lo_.array() - margin_).any() || (q.array() > hi_.array() + margin_).any()) return {};
+    const auto [x, y] = index(q);
+    const std::size_t c = x * ny_ + y;
+    return {edges_.data() + start_[c], start_[c + 1] - start_[c]};
+}
+
+std::pair<std::size_t, std::size_t> EdgeGrid::index(const Vec2& q) const {
+    const auto clamp = [](double t, std::size_t n) {
+        return t <= 0.0 ? std::size_t{0} : std::min(static_cast<std::size_t>(t), n - 1);
+    };
+    return {clamp((q.x() - lo_.x()) / cell_, nx_), clamp((q.y() - lo_.y()) / cell_, ny_)};
 }
 
 }  // namespace momentlab

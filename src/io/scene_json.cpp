@@ -1,6 +1,8 @@
 #include "momentlab/io/scene_json.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <optional>
 
 #include "json_read.hpp"
 #include "momentlab/geometry/polygon.hpp"
@@ -96,13 +98,21 @@ Scene read_scene(const json& doc, InputWarnings* w) {
         if (contacts.empty()) {
             throw InputError("$.contacts", "expected at least one contact (omit the field to find them from the polygons)");
         }
+        // A contact must be on the body's outline when the outline is given: its edges indexed
+        // once for all the contacts.
+        const Polygon* outline = scene.body && !scene.body->polygon.empty() ? &scene.body->polygon : nullptr;
+        const std::optional<EdgeGrid> edges = outline ? std::optional<EdgeGrid>(std::in_place, *outline, options.distance)
+                                                      : std::nullopt;
         for (std::size_t i = 0; i < contacts.size(); ++i) {
             const std::string p = at("$.contacts", i);
             scene.contacts.push_back(read_contact(contacts[i], p, w));
-            // A contact must be on the body's outline when the outline is given.
-            if (scene.body && !scene.body->polygon.empty()) {
+            if (outline) {
                 const Vec2& point = scene.contacts.back().point;
-                if (!within_distance_of_boundary(scene.body->polygon, point, options.distance)) {
+                const auto near = edges->near(point);
+                const bool on_outline = std::any_of(near.begin(), near.end(), [&](std::size_t k) {
+                    return within_distance_of_segment(point, (*outline)[k], (*outline)[(k + 1) % outline->size()], options.distance);
+                });
+                if (!on_outline) {
                     const double d = distance_to_boundary(scene.body->polygon, point);
                     char text[200];
                     std::snprintf(text, sizeof text,

@@ -5,6 +5,9 @@
 
 #include <span>
 #include <string>
+#include <vector>
+#include <utility>
+#include <cstddef>
 
 #include "momentlab/core/sign.hpp"
 #include "momentlab/core/vec.hpp"
@@ -43,5 +46,30 @@ namespace momentlab {
 
 /// The distance from p to the boundary of the polygon (floating point: for messages only).
 [[nodiscard]] double distance_to_boundary(std::span<const Vec2> polygon, const Vec2& p);
+
+/// The edges of a polygon that may lie within `distance` of a point: a uniform grid over the
+/// polygon's box, each edge entered in the cells near it (the boxes, grown by the distance and a
+/// rounding margin, of pieces of the edge no longer than a cell). A superset of the edges within
+/// the distance: the exact test (within_distance_of_segment) decides. About 4 m cells for m
+/// edges, about as long as the mean edge: a polygon of total length L costs O(m + L / h) to index
+/// and a query O(1 + the edges entered in its cell), for outlines whose edges do not crowd into
+/// a few cells (docs/benchmarks.md, Polygons).
+class EdgeGrid {
+public:
+    /// Throws std::invalid_argument for no vertices, a non-finite vertex or a distance that is
+    /// negative or not finite.
+    EdgeGrid(std::span<const Vec2> polygon, double distance);
+    /// The edges (edge k runs from vertex k to k + 1) entered in the cell of q, increasing; none
+    /// when q lies beyond the polygon's box grown by the distance.
+    [[nodiscard]] std::span<const std::size_t> near(const Vec2& q) const;
+
+private:
+    [[nodiscard]] std::pair<std::size_t, std::size_t> index(const Vec2& q) const;
+    Vec2 lo_ = Vec2::Zero(), hi_ = Vec2::Zero();
+    double margin_ = 0.0, cell_ = 1.0;
+    std::size_t nx_ = 1, ny_ = 1;
+    std::vector<std::size_t> start_;
+    std::vector<std::size_t> edges_;
+};
 
 }  // namespace momentlab
