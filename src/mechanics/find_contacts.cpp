@@ -3,7 +3,11 @@
 #include "momentlab/geometry/polygon.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <functional>
 #include <map>
+#include <optional>
+#include <unordered_map>
 #include <span>
 #include <utility>
 #include <cmath>
@@ -25,6 +29,12 @@ Vec2 outward(const Vec2& a, const Vec2& b) {
     const Vec2 d = b - a;
     return Vec2(d.y(), -d.x()) / d.norm();
 }
+
+struct CellHash {
+    std::size_t operator()(const std::pair<std::int64_t, std::int64_t>& c) const {
+        return std::hash<std::int64_t>()(c.first) * 0x9E3779B97F4A7C15ull ^ std::hash<std::int64_t>()(c.second);
+    }
+};
 
 // Vertices of `touching` lying on edges of `touched`; `into_touching` gives the normal's sense.
 void vertex_on_edge(const Polygon& touching, const Polygon& touched, bool body_is_touching,
@@ -71,21 +81,53 @@ std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygo
         vertex_on_edge(b, o, true, options, found);
         vertex_on_edge(o, b, false, options, found);
     }
-    // One contact for points and normals both within the distance, the first kept: the kept
-    // ones by x, so that only those within the distance in x are compared.
+    // One contact for points and normals both within the distance (the first kept), as the plain
+    // comparison of every pair would merge them: the kept ones hashed by cells of side 2 d, so a
+    // contact is compared only with those in the 3 x 3 cells around it (points within d are in
+    // neighbouring cells even after rounding). Exact coordinates key the cells when d is 0 or
+    // below the coordinates' resolution. O(k) expected for k contacts found.
     std::vector<Contact> out;
-    std::multimap<double, std::size_t> kept;
+    std::unordered_map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>, CellHash> cells;
+    std::map<std::pair<double, double>, std::vector<std::size_t>> exact_points;
+    const double side = 2.0 * options.distance;
+    const auto cell_of = [&](const Vec2& p) -> std::optional<std::pair<std::int64_t, std::int64_t>> {
+        if (!(side > 0.0)) return std::nullopt;
+        const double x = std::floor(p.x() / side), y = std::floor(p.y() / side);
+        if (!(std::abs(x) < 0x1p62) || !(std::abs(y) < 0x1p62)) return std::nullopt;
+        return std::pair(static_cast<std::int64_t>(x), static_cast<std::int64_t>(y));
+    };
+    const auto same = [&](const Contact& c, std::size_t k) {
+        const Contact& d = out[k];
+        return (c.point - d.point).norm() <= options.distance && (c.normal - d.normal).norm() <= options.distance;
+    };
     for (const Contact& c : found) {
+        const auto cell = cell_of(c.point);
         bool repeated = false;
-        for (auto it = kept.lower_bound(c.point.x() - options.distance);
-             it != kept.end() && it->first <= c.point.x() + options.distance && !repeated; ++it) {
-            const Contact& d = out[it->second];
-            repeated = (c.point - d.point).norm() <= options.distance && (c.normal - d.normal).norm() <= options.distance;
+        if (cell) {
+            for (std::int64_t dx = -1; dx <= 1 && !repeated; ++dx) {
+                for (std::int64_t dy = -1; dy <= 1 && !repeated; ++dy) {
+                    const auto it = cells.find({cell->first + dx, cell->second + dy});
+                    if (it == cells.end()) continue;
+                    repeated = std::any_of(it->second.begin(), it->second.end(), [&](std::size_t k) { return same(c, k); });
+                }
+            }
         }
-        if (!repeated) {
-            kept.emplace(c.point.x(), out.size());
-            out.push_back(c);
+        // Points that equal ones kept (always merged when their normals are near) when the cells
+        // cannot tell them apart.
+        const auto key = std::pair(c.point.x(), c.point.y());
+        if (!repeated && !cell) {
+            const auto it = exact_points.find(key);
+            if (it != exact_points.end()) {
+                repeated = std::any_of(it->second.begin(), it->second.end(), [&](std::size_t k) { return same(c, k); });
+            }
         }
+        if (repeated) continue;
+        if (cell) {
+            cells[*cell].push_back(out.size());
+        } else {
+            exact_points[key].push_back(out.size());
+        }
+        out.push_back(c);
     }
     return out;
 }

@@ -173,6 +173,27 @@ TEST(FindContacts, TheGridFindsWhatTheDoubleLoopFinds) {
     EXPECT_GT(touching, 200);
 }
 
+// Many contacts on one vertical line (a comb against a wall): the merge of duplicates must not
+// compare each with every other (it did when keyed by x alone); and two contacts a distance
+// apart plus 2^-60 stay two.
+TEST(FindContacts, ContactsAlongAWallAreMergedOnlyWithTheirNeighbours) {
+    Polygon comb;  // teeth pointing to -x, their tips on x = 0
+    const int teeth = 2000;
+    comb.emplace_back(1.0, 0.0);
+    for (int k = 0; k < teeth; ++k) {
+        comb.emplace_back(0.0, 2.0 * k + 0.5);
+        comb.emplace_back(0.5, 2.0 * k + 1.0);
+    }
+    comb.emplace_back(1.0, 2.0 * teeth);
+    const Polygon wall = {{-1, -1}, {0, -1}, {0, 2.0 * teeth + 1}, {-1, 2.0 * teeth + 1}};
+    const std::vector<Contact> found = find_contacts(comb, {wall});
+    EXPECT_EQ(found.size(), static_cast<std::size_t>(teeth));
+    const double e = 0x1p-60;
+    const Polygon body = {{e, 0}, {1, 0}, {1, 10}, {e, 10}};
+    const Polygon floor = {{-5, -5}, {5, -5}, {5, 0}, {-5, 0}};
+    EXPECT_EQ(find_contacts(body, {floor}, ContactFinding{0.5, 0.0, 0.0}).size(), 2u);
+}
+
 TEST(SceneJson, WrittenScenesReadBackUnchanged) {
     std::ifstream in(std::string(MOMENTLAB_EXAMPLES) + "/figure-4-peg-in-hole.json");
     std::ostringstream text;
