@@ -128,7 +128,7 @@ public:
 
     [[nodiscard]] std::string plan_tilt(const std::string& goal) const {
         return guarded([&] {
-            json out = to_json(momentlab::plan_tilt(scene_, find(goal)));
+            json out = to_json(momentlab::plan_tilt(scene_, find(goal), context()));
             out["goal"] = goal;
             return out;
         });
@@ -141,7 +141,7 @@ public:
             }
             if (!scene_.body || scene_.body->polygon.size() < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
             json out = {{"goal", goal}, {"mu", mu}, {"cases", json::array()}};
-            for (const PushCase& c : momentlab::plan_push(scene_, find(goal), PushOptions{mu, ignore_interference})) {
+            for (const PushCase& c : momentlab::plan_push(scene_, find(goal), PushOptions{mu, ignore_interference}, context())) {
                 out["cases"].push_back(to_json(c));
             }
             return out;
@@ -157,7 +157,7 @@ public:
             const Labels labels = compliance_labels(g);
             return json{{"goal", goal},
                         {"labels", {{"plus", drawn(labels.plus(), view)}, {"minus", drawn(labels.minus(), view)}}},
-                        {"centre", to_json(momentlab::plan_comply(g, Vec2(x, y)))}};
+                        {"centre", to_json(momentlab::plan_comply(g, Vec2(x, y), context()))}};
         });
     }
 
@@ -165,6 +165,13 @@ public:
 
 private:
     const ModeForces& find(const std::string& letters) const { return find_mode(analysis_, letters, "mode"); }
+    // As the CLI plans: told every mode (unique and shared) and the margins' metric.
+    [[nodiscard]] PlanContext context() const {
+        PlanContext c;
+        c.modes = analysis_;
+        c.metric = default_metric(scene_);
+        return c;
+    }
 
     Scene scene_;
     std::vector<ModeForces> analysis_;
