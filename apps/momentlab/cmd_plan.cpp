@@ -31,6 +31,13 @@ struct PlanOptions {
     std::vector<double> fixed;
 };
 
+// Segments of a feature as text: "(0, 0.5) - (0, 0.25), (1, 0)" (a point once).
+std::string segments_text(const std::vector<std::pair<Vec2, Vec2>>& segments) {
+    std::string out;
+    for (const auto& [p, q] : segments) out += (out.empty() ? "" : ", ") + (p == q ? fmt(p) : fmt(p) + " - " + fmt(q));
+    return out;
+}
+
 // Arcs as text: "[0, 1.5708], 3.14159 only".
 std::string arcs_text(const std::vector<AngleInterval>& arcs) {
     std::string out;
@@ -117,7 +124,7 @@ int run_tilt(const PlanOptions& o) {
     if (o.json) {
         nlohmann::json out = to_json(plan);
         out["goal"] = o.goal;
-        if (fixed) out["fixed"] = {output_value(to_double(*fixed).x()), output_value(to_double(*fixed).y()), output_value(to_double(*fixed).z())};
+        if (fixed) out["fixed"] = vector_json(to_double(*fixed));
         std::cout << out.dump() << "\n";
     } else if (!plan.feasible()) {
         std::cout << "no tilt produces mode " << o.goal << " (W \u2229 E is {0})\n";
@@ -146,9 +153,10 @@ int run_comply(const PlanOptions& o) {
     const Scene& scene = p.scene;
     const ModeForces& goal = find_mode(p.analysis, o.goal, "--goal");
     const std::optional<Exact3> fixed = fixed_wrench(scene, o.gravity, o.fixed);
-    const Labels region = compliance_labels(goal, plan_context(scene, p.analysis, fixed));
+    const PlanContext context = plan_context(scene, p.analysis, fixed);
+    const Labels region = compliance_labels(goal, context);
     std::optional<ComplyPlan> plan;
-    if (!centre.empty()) plan = plan_comply(goal, centre.front(), plan_context(scene, p.analysis, fixed));
+    if (!centre.empty()) plan = plan_comply(goal, centre.front(), context);
     if (o.json) {
         nlohmann::json out = {{"goal", o.goal}, {"labels", to_json(region)}};
         if (plan) {
@@ -188,9 +196,7 @@ std::string case_line(const PushCase& c) {
     s << "  " << std::left << std::setw(10) << c.feature.name() << std::setw(6) << letter(c.slip) << std::setw(10)
       << to_string(c.verdict);
     if (c.uniqueness_known) s << std::setw(8) << (c.unique && c.shared ? "both" : c.unique ? "alone" : c.shared ? "shared" : "");
-    std::string where;
-    for (const auto& [p, q] : c.touch) where += (where.empty() ? "" : ", ") + (p == q ? fmt(p) : fmt(p) + " - " + fmt(q));
-    s << std::setw(34) << where;
+    s << std::setw(34) << segments_text(c.touch);
     if (c.directions) s << degrees(c.directions->from) << " .. " << degrees(c.directions->to);
     if (c.blocked == "part" || c.blocked == "all") s << "   [" << c.blocked << " of it in obstacles]";
     std::string line = s.str();
@@ -229,7 +235,7 @@ int run_push(const PlanOptions& o) {
     const char* interference = o.ignore_interference ? "ignored" : "considered";
     if (o.json) {
         nlohmann::json out = {{"goal", o.goal}, {"mu", o.mu}, {"interference", interference}, {"cases", nlohmann::json::array()}};
-        if (fixed) out["fixed"] = {output_value(to_double(*fixed).x()), output_value(to_double(*fixed).y()), output_value(to_double(*fixed).z())};
+        if (fixed) out["fixed"] = vector_json(to_double(*fixed));
         for (const PushCase& c : cases) out["cases"].push_back(to_json(c));
         std::cout << out.dump() << "\n";
     } else {
@@ -249,9 +255,7 @@ int run_push(const PlanOptions& o) {
             std::cout << "  " << c.feature.name() << " slip " << letter(c.slip) << ": best push " << fmt(c.best->direction)
                       << " at " << fmt(c.best->point) << (c.best_unique ? " (the goal alone)" : "");
             if (c.unique && c.unique_directions) {
-                std::string where;
-                for (const auto& [p, q] : c.unique_touch) where += (where.empty() ? "" : ", ") + (p == q ? fmt(p) : fmt(p) + " - " + fmt(q));
-                std::cout << "; the goal alone touching " << where << ", directions " << degrees(c.unique_directions->from)
+                std::cout << "; the goal alone touching " << segments_text(c.unique_touch) << ", directions " << degrees(c.unique_directions->from)
                           << " .. " << degrees(c.unique_directions->to);
             }
             if (c.best_margins) std::cout << "; as a unit force, " << margins_text(*c.best_margins);

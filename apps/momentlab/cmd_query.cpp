@@ -30,10 +30,9 @@ int run_push_line(const QueryOptions& o, const Problem& p) {
     const Exact3 g = fixed ? *fixed : Exact3{};
     const std::vector<MagnitudeBand> bands = magnitude_bands(p.analysis, g, wrench_through(exact(at[0]), exact(at[1])));
     if (o.json) {
-        const Vec3 gv = to_double(g);
-        nlohmann::json out = {{"point", {output_value(at[0].x()), output_value(at[0].y())}},
-                              {"direction", {output_value(at[1].x()), output_value(at[1].y())}},
-                              {"fixed", {output_value(gv.x()), output_value(gv.y()), output_value(gv.z())}},
+        nlohmann::json out = {{"point", vector_json(at[0])},
+                              {"direction", vector_json(at[1])},
+                              {"fixed", vector_json(to_double(g))},
                               {"bands", to_json(bands, p.analysis)}};
         std::cout << out.dump() << "\n";
         return 0;
@@ -56,7 +55,7 @@ nlohmann::json margins_json(const Problem& p, const QueryResult& r, const Vec3& 
     for (double d : m.inside) inside.push_back(margin_json(d));
     return {{"inside", inside},
             {"to_other", m.to_other ? margin_json(*m.to_other) : nlohmann::json("unbounded")},
-            {"metric", {{"reference", {output_value(metric.reference.x()), output_value(metric.reference.y())}},
+            {"metric", {{"reference", vector_json(metric.reference)},
                         {"length", output_value(metric.length)}}}};
 }
 

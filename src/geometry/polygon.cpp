@@ -108,8 +108,9 @@ bool below(const SweepEdge& a, const SweepEdge& b) {
 // Two edges that meet other than at the vertex they share, found by a sweep from left to right
 // (Shamos and Hoey, "Geometric intersection problems", FOCS 1976): an edge is compared with its
 // neighbours along the sweep line when it enters and when it leaves, so the first meeting is
-// seen before the order could go wrong. Needs distinct vertices. O(n log n), exact.
-std::optional<std::pair<std::size_t, std::size_t>> meeting_edges(std::span<const Vec2> p) {
+// seen before the order could go wrong. Needs distinct vertices, and their numbers in sweep order
+// (lex_less). O(n log n), exact.
+std::optional<std::pair<std::size_t, std::size_t>> meeting_edges(std::span<const Vec2> p, const std::vector<std::size_t>& order) {
     const std::size_t n = p.size();
     std::vector<SweepEdge> edges(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -126,9 +127,6 @@ std::optional<std::pair<std::size_t, std::size_t>> meeting_edges(std::span<const
         const SweepEdge &a = edges[i], &b = edges[j];
         if (segments_meet(a.l, a.r, b.l, b.r)) found = std::pair(std::min(i, j), std::max(i, j));
     };
-    std::vector<std::size_t> order(n);
-    for (std::size_t i = 0; i < n; ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return lex_less(p[i], p[j]); });
     for (std::size_t v : order) {
         const std::size_t in = (v + n - 1) % n, out = v;  // the edges ending and starting at vertex v
         for (std::size_t e : {in, out}) {  // first the edges that end here (v is their right end)
@@ -185,7 +183,7 @@ std::string polygon_problem(std::span<const Vec2> polygon) {
     for (std::size_t k = 0; k + 1 < n; ++k) {
         if (polygon[order[k]] == polygon[order[k + 1]]) return cross_or_touch(order[k], order[k + 1]);
     }
-    if (const auto pair = meeting_edges(polygon)) return cross_or_touch(pair->first, pair->second);
+    if (const auto pair = meeting_edges(polygon, order)) return cross_or_touch(pair->first, pair->second);
     return {};
 }
 

@@ -7,23 +7,24 @@
 namespace momentlab {
 namespace {
 
-nlohmann::json vec(const Vec3& v) { return {output_value(v.x()), output_value(v.y()), output_value(v.z())}; }
-nlohmann::json vec(const Vec2& v) { return {output_value(v.x()), output_value(v.y())}; }
 
 template <class T>
 nlohmann::json list(const std::vector<T>& vs) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& v : vs) {
         if constexpr (std::is_same_v<T, ExactVector>) {
-            out.push_back(vec(v.value()));
+            out.push_back(vector_json(v.value()));
         } else {
-            out.push_back(vec(v));
+            out.push_back(vector_json(v));
         }
     }
     return out;
 }
 
 }  // namespace
+
+nlohmann::json vector_json(const Vec3& v) { return {output_value(v.x()), output_value(v.y()), output_value(v.z())}; }
+nlohmann::json vector_json(const Vec2& v) { return {output_value(v.x()), output_value(v.y())}; }
 
 nlohmann::json to_json(const Cone& cone) {
     nlohmann::json incidence = nlohmann::json::array();
@@ -110,10 +111,10 @@ nlohmann::json to_json(const DirectionPlan& plan) {
 
 nlohmann::json to_json(const PushCase& c) {
     nlohmann::json touch = nlohmann::json::array();
-    for (const auto& [p, q] : c.touch) touch.push_back({vec(p), vec(q)});
+    for (const auto& [p, q] : c.touch) touch.push_back({vector_json(p), vector_json(q)});
     nlohmann::json out = {{"feature", c.feature.name()},
-                          {"from", vec(c.feature.from)},
-                          {"to", vec(c.feature.to)},
+                          {"from", vector_json(c.feature.from)},
+                          {"to", vector_json(c.feature.to)},
                           {"slip", std::string(1, letter(c.slip))},
                           {"verdict", to_string(c.verdict)},
                           {"feasible", c.feasible()},
@@ -122,7 +123,7 @@ nlohmann::json to_json(const PushCase& c) {
     out["directions"] = c.directions ? nlohmann::json{output_value(c.directions->from), output_value(c.directions->to)}
                                      : nlohmann::json();
     if (c.best) {
-        out["best"] = {{"point", vec(c.best->point)},
+        out["best"] = {{"point", vector_json(c.best->point)},
                        {"direction", output_value(std::atan2(c.best->direction.y(), c.best->direction.x()))}};
     }
     if (c.uniqueness_known) {
@@ -130,7 +131,7 @@ nlohmann::json to_json(const PushCase& c) {
         out["shared"] = c.shared;
         out["best_unique"] = c.best_unique;
         nlohmann::json unique_touch = nlohmann::json::array();
-        for (const auto& [p, q] : c.unique_touch) unique_touch.push_back({vec(p), vec(q)});
+        for (const auto& [p, q] : c.unique_touch) unique_touch.push_back({vector_json(p), vector_json(q)});
         out["unique_touch"] = unique_touch;
         out["unique_directions"] = c.unique_directions ? nlohmann::json{output_value(c.unique_directions->from),
                                                                          output_value(c.unique_directions->to)}
@@ -143,7 +144,7 @@ nlohmann::json to_json(const PushCase& c) {
 
 nlohmann::json to_json(const ComplyPlan& plan) {
     nlohmann::json out = to_json(plan.directions);
-    out["point"] = vec(plan.centre);
+    out["point"] = vector_json(plan.centre);
     out["label"] = to_string(plan.label);
     out["verdict"] = to_string(plan.verdict);
     return out;
@@ -156,7 +157,7 @@ nlohmann::json closure_test_json(const ClosureTest& t) {
     if (t.holds) {
         out["quality"] = output_value(t.quality);
     } else {
-        out["unresisted_wrench"] = vec(t.unresisted->value());
+        out["unresisted_wrench"] = vector_json(t.unresisted->value());
     }
     return out;
 }
@@ -168,7 +169,7 @@ nlohmann::json to_json(const Closure& c) {
             {"force_closure", c.force.holds},
             {"form", closure_test_json(c.form)},
             {"force", closure_test_json(c.force)},
-            {"reference", vec(c.reference)},
+            {"reference", vector_json(c.reference)},
             {"length", output_value(c.length)},
             {"metric", kClosureQualityMetric}};
 }

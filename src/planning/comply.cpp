@@ -15,11 +15,11 @@ const char* to_string(CentreVerdict v) {
 ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre) { return plan_comply(goal, centre, PlanContext{}); }
 
 ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre, const PlanContext& context) {
-    const Cone target = context.fixed ? reachable_directions(goal.applied, *context.fixed) : goal.applied;
+    const Cone target = planned_set(goal, context);
     ComplyPlan plan;
     plan.centre = centre;
     plan.label = moment_label(target, centre);  // without building the regions
-    plan.directions = plan_directions_through(centre, goal, context);
+    plan.directions = plan_directions_through(centre, goal, context, target);
     // W_c ∩ E_goal is exact: {0} exactly when c is strictly inside a labelled region, and it meets
     // the interior of E_goal (the test plan_push makes) exactly when c is unlabelled and E_goal is
     // full-dimensional.
@@ -36,7 +36,7 @@ ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre, const PlanCon
 Labels compliance_labels(const ModeForces& goal) { return Labels(goal.applied); }
 
 Labels compliance_labels(const ModeForces& goal, const PlanContext& context) {
-    return context.fixed ? Labels(reachable_directions(goal.applied, *context.fixed)) : Labels(goal.applied);
+    return Labels(planned_set(goal, context));
 }
 
 }  // namespace momentlab

@@ -126,8 +126,16 @@ std::optional<std::pair<double, double>> add_arcs(std::vector<AngleInterval>& ou
 
 }  // namespace
 
+Cone planned_set(const ModeForces& goal, const PlanContext& context) {
+    return context.fixed ? reachable_directions(goal.applied, *context.fixed) : goal.applied;
+}
+
 DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal, const PlanContext& context) {
-    const Cone target = context.fixed ? reachable_directions(goal.applied, *context.fixed) : goal.applied;
+    return plan_directions_through(point, goal, context, planned_set(goal, context));
+}
+
+DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal, const PlanContext& context,
+                                      const Cone& target) {
     DirectionPlan plan = plan_directions_through(point, target);
     if (!plan.feasible()) return plan;
     if (!context.modes.empty() && !context.fixed) {
@@ -143,9 +151,10 @@ DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal,
             plan.best = std::remainder(widest->first + plan.margin, 2.0 * M_PI);
             plan.best_unique = true;
         }
-    }
-    if (!context.modes.empty() && !context.fixed && context.metric) {
-        plan.best_margins = margins_of(context.modes, wrench_at(point, Vec2(std::cos(plan.best), std::sin(plan.best))), *context.metric);
+        if (context.metric) {
+            plan.best_margins =
+                margins_of(context.modes, wrench_at(point, Vec2(std::cos(plan.best), std::sin(plan.best))), *context.metric);
+        }
     }
     // A knife edge: no solution inside E_goal (with a fixed wrench: no g + lambda u inside it, which
     // needs a full-dimensional E_goal and a direction inside E_goal + cone(-g)).

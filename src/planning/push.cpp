@@ -99,17 +99,22 @@ Vec3 unit_force(const Vec3& w) { return w / force_of(w).norm(); }
 
 double relative_angle(const Vec2& reference, const Vec2& d) { return std::atan2(cross2(reference, d), reference.dot(d)); }
 
+// The push of the wrench w on the feature: its unit force, at the point where its line of action
+// meets the feature (clamped to an edge's ends; a vertex itself).
+Push push_of(const PushFeature& f, const Vec3& w) {
+    Push push;
+    push.direction = force_of(w).normalized();
+    push.point = f.kind == PushFeature::Kind::Edge ? Vec2(f.from + std::clamp(touch_parameter(f, w), 0.0, 1.0) * (f.to - f.from))
+                                                   : f.from;
+    return push;
+}
+
 // The mean of the solution cone's extreme unit forces (in its relative interior, up to
 // rounding), as a force and the point of the feature where its line of action meets it.
 Push representative(const PushFeature& f, const Cone& solutions) {
     Vec3 mean = Vec3::Zero();
     for (const Vec3& w : solutions.generator_values()) mean += unit_force(w);
-    Push push;
-    push.direction = force_of(mean).normalized();
-    push.point = f.kind == PushFeature::Kind::Edge
-                     ? Vec2(f.from + std::clamp(touch_parameter(f, mean), 0.0, 1.0) * (f.to - f.from))
-                     : f.from;
-    return push;
+    return push_of(f, mean);
 }
 
 }  // namespace
@@ -240,12 +245,7 @@ void tell_uniqueness(PushCase& c, const std::vector<const PushPiece*>& shown, co
         c.unique = true;
         for (Cone& part : u.parts) parts.push_back(std::move(part));
         if (c.best_unique) continue;
-        const Vec3 w = u.representative->value();
-        Push push;
-        push.direction = force_of(w).normalized();
-        push.point = c.feature.kind == PushFeature::Kind::Edge
-                         ? Vec2(c.feature.from + std::clamp(touch_parameter(c.feature, w), 0.0, 1.0) * (c.feature.to - c.feature.from))
-                         : c.feature.from;
+        const Push push = push_of(c.feature, u.representative->value());
         const Vec3 e = push.wrench();
         const bool alone = std::none_of(modes.begin(), modes.end(), [&](const ModeForces& m) {
             return m.mode.letters != goal.mode.letters && m.applied.has(e);
@@ -336,7 +336,7 @@ std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, cons
     const Polygon& poly = scene.body->polygon;
     const std::size_t n = poly.size();
     const bool ccw = is_counter_clockwise(poly);
-    const Cone target = context.fixed ? reachable_directions(goal.applied, *context.fixed) : goal.applied;
+    const Cone target = planned_set(goal, context);
     // The inward normal of edge i, exact (not unit: every condition is homogeneous in it), and
     // its unit rounding for the feature's description.
     std::vector<Exact2> normals(n);

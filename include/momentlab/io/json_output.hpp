@@ -13,6 +13,10 @@
 
 namespace momentlab {
 
+/// [x, y, z] and [x, y]: a vector, rounded (UnrepresentableError beyond the doubles, as below).
+[[nodiscard]] nlohmann::json vector_json(const Vec3& v);
+[[nodiscard]] nlohmann::json vector_json(const Vec2& v);
+
 /// {"kind", "dimension", "lineality_dimension", "rays", "lineality", "facets", "equations",
 ///  "facet_rays"}; vectors as [x, y, z] (rounded values). Every function here throws
 /// UnrepresentableError for a value beyond the range of a double (never writes null).

@@ -80,10 +80,17 @@ struct DirectionPlan {
 /// boundary directions belong to the intervals (E_i is closed).
 [[nodiscard]] DirectionPlan plan_directions_through(const Vec2& point, const Cone& goal_applied);
 
+/// The set a plan aims at: E_goal, or with a fixed wrench g the directions that reach it at some
+/// magnitude, E_goal + cone(-g) (reachable_directions).
+[[nodiscard]] Cone planned_set(const ModeForces& goal, const PlanContext& context);
+
 /// The same for the goal mode, told the context: the directions u of forces through `point` for
 /// which fixed + lambda u lies in E_goal for some lambda >= 0 (or its limit), split into unique and
 /// shared arcs when the modes are given. Exact as above.
 [[nodiscard]] DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal, const PlanContext& context);
+/// The same with planned_set(goal, context) given, for a caller that needs it too.
+[[nodiscard]] DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal, const PlanContext& context,
+                                                    const Cone& planned);
 
 /// Force directions counter-clockwise from `from` to `to` (radians from +x, from in [-pi, pi),
 /// to - from in [0, 2 pi)).
