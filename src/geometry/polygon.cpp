@@ -281,8 +281,9 @@ EdgeGrid::EdgeGrid(std::span<const Vec2> p, double distance) {
         const std::size_t pieces = static_cast<std::size_t>((b - a).norm() / cell_) + 1;
         const std::size_t first = entries.size();
         for (std::size_t i = 0; i < pieces; ++i) {
-            const Vec2 u = a + (b - a) * (static_cast<double>(i) / pieces);
-            const Vec2 v = i + 1 == pieces ? b : Vec2(a + (b - a) * (static_cast<double>(i + 1) / pieces));
+            const double parts = static_cast<double>(pieces);
+            const Vec2 u = a + (b - a) * (static_cast<double>(i) / parts);
+            const Vec2 v = i + 1 == pieces ? b : Vec2(a + (b - a) * (static_cast<double>(i + 1) / parts));
             const Vec2 box_lo = u.cwiseMin(v).array() - margin_, box_hi = u.cwiseMax(v).array() + margin_;
             const auto [x0, y0] = index(box_lo);
             const auto [x1, y1] = index(box_hi);
