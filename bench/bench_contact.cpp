@@ -123,6 +123,110 @@ void BM_lemke(benchmark::State& state) {
 }
 BENCHMARK(BM_lemke)->DenseRange(2, 8, 2);
 
+// A new scene every time (docs/benchmarks.md, "A new scene"): a pool of 512 random scenes with
+// one wrench each, taken in turn, so nothing about a scene is cached or reused. momentlab: every
+// mode with its sets (analyze), then the modes whose E holds the wrench (query, exact).
+constexpr int kPool = 512;
+
+struct Question {
+    Scene scene;
+    Vec3 wrench;
+};
+
+std::vector<Question> fresh_pool(int n) {
+    std::mt19937_64 rng(11 + static_cast<std::uint64_t>(n));
+    std::vector<Question> pool;
+    for (int i = 0; i < kPool; ++i) {
+        Scene s = random_scene(n, rng);
+        pool.push_back({std::move(s), Vec3(20 * unit(rng) - 10, 20 * unit(rng) - 10, 20 * unit(rng) - 10)});
+    }
+    return pool;
+}
+
+void BM_oneshot(benchmark::State& state) {
+    const auto pool = fresh_pool(static_cast<int>(state.range(0)));
+    std::size_t i = 0, found = 0;
+    for (auto _ : state) {
+        const Question& q = pool[i++ % kPool];
+        found += query(analyze(q.scene), q.wrench).modes.size();
+    }
+    benchmark::DoNotOptimize(found);
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_oneshot)->DenseRange(2, 8, 2)->Unit(benchmark::kMicrosecond);
+
+// The same questions as a simulator asks them: the LCP of the new scene assembled into reused
+// buffers (CoulombLcp::reset), then solved by Siconos' lexicographic Lemke.
+void BM_lemke_oneshot(benchmark::State& state) {
+    const auto pool = fresh_pool(static_cast<int>(state.range(0)));
+    validation::CoulombLcp lcp(pool.front().scene);
+    validation::LcpSolution solution;
+    std::size_t i = 0;
+    int failures = 0;
+    for (auto _ : state) {
+        const Question& q = pool[i++ % kPool];
+        lcp.reset(q.scene);
+        failures += !lcp.lemke(q.wrench, solution);
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["failures"] = failures;
+}
+BENCHMARK(BM_lemke_oneshot)->DenseRange(2, 8, 2)->Unit(benchmark::kMicrosecond);
+
+// The nearly degenerate families of docs/benchmarks.md (tools/families.py writes the same scenes
+// for the command line): a unit body, mu = 0.3, n contacts.
+Scene family(int which, std::int64_t n) {
+    Scene s;
+    s.body = Body{1.0, Vec2(0, 0), 0.5, {}};
+    const auto round9 = [](double x) { return std::round(x * 1e9) / 1e9; };
+    for (std::int64_t k = 0; k < n; ++k) {
+        const double a = M_PI * (1.0 + (static_cast<double>(k) + 0.5) / static_cast<double>(n));
+        const double c = std::cos(a), si = std::sin(a);
+        switch (which) {
+            case 0:  // bowl: normals towards the centre, rounded to 9 digits (nearly concurrent)
+                s.contacts.push_back(Contact::make(Vec2(round9(c), round9(si)), Vec2(round9(-c), round9(-si)), 0.3));
+                break;
+            case 1:  // bowl, exactly concurrent: normal -p
+                s.contacts.push_back(Contact::make(Vec2(round9(c), round9(si)), Vec2(-round9(c), -round9(si)), 0.3));
+                break;
+            case 2: {  // every normal on the x axis
+                const double x = (static_cast<double>(k) + 0.5) / static_cast<double>(n) * 4.0 - 2.0;
+                s.contacts.push_back(Contact::make(Vec2(x, 0), Vec2(k % 2 == 0 ? 1.0 : -1.0, 0), 0.3));
+                break;
+            }
+            case 3: {  // a half ring, normals tilted by 0.2 rad from the radius (a cradle)
+                const double t = 0.2;
+                s.contacts.push_back(Contact::make(Vec2(c, si), Vec2(-(c * std::cos(t) - si * std::sin(t)), -(c * std::sin(t) + si * std::cos(t))), 0.3));
+                break;
+            }
+            default:  // normal lines tangent to the half circle
+                s.contacts.push_back(Contact::make(Vec2(c, si), Vec2(-si, c), 0.3));
+        }
+    }
+    return s;
+}
+
+const char* const kFamilies[] = {"bowl", "bowl-exact", "collinear", "cradle", "tangent"};
+
+void BM_family_modes(benchmark::State& state) {
+    const Scene s = family(static_cast<int>(state.range(0)), state.range(1));
+    std::size_t modes = 0;
+    for (auto _ : state) modes = enumerate_modes(s.contacts).modes.size();
+    state.SetLabel(kFamilies[state.range(0)]);
+    state.counters["modes"] = static_cast<double>(modes);
+    state.counters["letters"] = static_cast<double>(modes) * static_cast<double>(state.range(1));
+}
+BENCHMARK(BM_family_modes)->ArgsProduct({{0, 1}, {100000}})->ArgsProduct({{2, 3, 4}, {1000, 3000}})->Unit(benchmark::kMillisecond);
+
+void BM_family_analyze(benchmark::State& state) {
+    const Scene s = family(static_cast<int>(state.range(0)), state.range(1));
+    std::size_t modes = 0;
+    for (auto _ : state) modes = analyze(s).size();
+    state.SetLabel(kFamilies[state.range(0)]);
+    state.counters["modes"] = static_cast<double>(modes);
+}
+BENCHMARK(BM_family_analyze)->ArgsProduct({{0, 1}, {100000}})->ArgsProduct({{2, 3, 4}, {1000}})->Unit(benchmark::kMillisecond);
+
 // A wavy closed outline of n vertices (radius 1 + sin(7 t) / 10) and a floor of n vertices whose
 // top edge runs along the outline's lowest point: the simplicity check of both and the contact
 // search between them, as a scene with a detailed body on a detailed terrain asks.
@@ -202,6 +306,15 @@ public:
             const auto l = seconds.find("BM_lemke/" + std::to_string(n));
             if (q == seconds.end() || l == seconds.end()) continue;
             std::printf("%10d %16.0f %16.0f %10.1f\n", n, 1.0 / q->second, 1.0 / l->second, l->second / q->second);
+        }
+        std::printf("\nA new scene: every mode and its sets plus one query (momentlab), the LCP assembled and\n"
+                    "solved by Siconos' Lemke; microseconds per question over 512 scenes\n");
+        std::printf("%10s %14s %14s %10s\n", "contacts", "momentlab", "lemke", "ratio");
+        for (int n = 2; n <= 8; n += 2) {
+            const auto o = seconds.find("BM_oneshot/" + std::to_string(n));
+            const auto l = seconds.find("BM_lemke_oneshot/" + std::to_string(n));
+            if (o == seconds.end() || l == seconds.end()) continue;
+            std::printf("%10d %14.2f %14.2f %10.2f\n", n, 1e6 * o->second, 1e6 * l->second, o->second / l->second);
         }
         std::printf("\nPolygons of n vertices: simplicity, contact search (grid), and every pair (the alternative)\n");
         std::printf("%10s %14s %14s %14s %10s\n", "n", "simple (ms)", "contacts (ms)", "all pairs (ms)", "ratio");

@@ -24,7 +24,7 @@ struct CoulombLcp::Siconos {
 
     ~Siconos() {
         if (enumeration != nullptr) {
-            lcp_enum_reset(&problem, enumeration, 1);
+            if (matrix != nullptr) lcp_enum_reset(&problem, enumeration, 1);  // initialised with the matrix
             solver_options_delete(enumeration);
         }
         if (lemke != nullptr) solver_options_delete(lemke);
@@ -34,9 +34,19 @@ struct CoulombLcp::Siconos {
 };
 
 CoulombLcp::CoulombLcp(const Scene& scene) : siconos_(std::make_unique<Siconos>()) {
+    Siconos& s = *siconos_;
+    s.lemke = solver_options_create(SICONOS_LCP_LEMKE);
+    s.pivot = solver_options_create(SICONOS_LCP_PIVOT);
+    s.pivot->iparam[SICONOS_LCP_IPARAM_PIVOTING_METHOD_TYPE] = SICONOS_LCP_PIVOT_LEMKE;
+    s.enumeration = solver_options_create(SICONOS_LCP_ENUM);
+    reset(scene);
+}
+
+void CoulombLcp::reset(const Scene& scene) {
     if (!scene.body) throw std::invalid_argument("the LCP needs the body's mass and inertia");
     if (scene.contacts.empty()) throw std::invalid_argument("the LCP needs at least one contact");
     const int n = static_cast<int>(scene.contacts.size());
+    const bool resized = 4 * n != size_;
     contacts_ = n;
     size_ = 4 * n;
     // The LCP's own matrices, in doubles, from the scene's raw numbers (nothing of momentlab's).
@@ -46,7 +56,7 @@ CoulombLcp::CoulombLcp(const Scene& scene) : siconos_(std::make_unique<Siconos>(
     Eigen::Matrix3d mass;
     mass << m, 0.0, -m * cy, 0.0, m, m * cx, -m * cy, m * cx, inertia + m * (cx * cx + cy * cy);
     minv_ = mass.inverse();
-    d_.resize(3, 3 * n);
+    d_.resize(3, 3 * n);  // no allocation when the size is the same
     for (int j = 0; j < n; ++j) {
         const Contact& c = scene.contacts[static_cast<std::size_t>(j)];
         const Vec2 p = c.point, nv = c.normal, t(nv.y(), -nv.x());
@@ -56,8 +66,8 @@ CoulombLcp::CoulombLcp(const Scene& scene) : siconos_(std::make_unique<Siconos>(
     }
     // w_n = N'a, w_+ = sigma + T'a, w_- = sigma - T'a, w_s = mu lambda_n - lambda_+ - lambda_-,
     // with a = M^-1 (e + D lambda).
-    m_ = Eigen::MatrixXd::Zero(size_, size_);
-    m_.topLeftCorner(3 * n, 3 * n) = d_.transpose() * minv_ * d_;
+    m_.setZero(size_, size_);
+    m_.topLeftCorner(3 * n, 3 * n).noalias() = d_.transpose() * (minv_ * d_);
     for (int j = 0; j < n; ++j) {
         m_(n + j, 3 * n + j) = 1;
         m_(2 * n + j, 3 * n + j) = 1;
@@ -65,17 +75,19 @@ CoulombLcp::CoulombLcp(const Scene& scene) : siconos_(std::make_unique<Siconos>(
         m_(3 * n + j, n + j) = -1;
         m_(3 * n + j, 2 * n + j) = -1;
     }
-    q_ = Eigen::VectorXd::Zero(size_);
+    q_.setZero(size_);
 
     Siconos& s = *siconos_;
-    s.matrix = NM_create(NM_DENSE, size_, size_);
+    if (resized) {
+        if (s.matrix != nullptr) {
+            lcp_enum_reset(&s.problem, s.enumeration, 1);
+            NM_free(s.matrix);
+        }
+        s.matrix = NM_create(NM_DENSE, size_, size_);
+    }
     std::copy(m_.data(), m_.data() + m_.size(), s.matrix->matrix0);  // both column-major
     s.problem = LinearComplementarityProblem{size_, s.matrix, q_.data()};
-    s.lemke = solver_options_create(SICONOS_LCP_LEMKE);
-    s.pivot = solver_options_create(SICONOS_LCP_PIVOT);
-    s.pivot->iparam[SICONOS_LCP_IPARAM_PIVOTING_METHOD_TYPE] = SICONOS_LCP_PIVOT_LEMKE;
-    s.enumeration = solver_options_create(SICONOS_LCP_ENUM);
-    lcp_enum_init(&s.problem, s.enumeration, 1);
+    if (resized) lcp_enum_init(&s.problem, s.enumeration, 1);
 }
 
 CoulombLcp::~CoulombLcp() = default;

@@ -42,6 +42,11 @@ public:
     CoulombLcp(const CoulombLcp&) = delete;
     CoulombLcp& operator=(const CoulombLcp&) = delete;
 
+    /// Assembles the LCP of another scene, reusing the buffers and solver options when the
+    /// number of contacts is the same (as a simulator would, step after step). Throws as the
+    /// constructor does.
+    void reset(const Scene& scene);
+
     /// 4n.
     [[nodiscard]] int size() const { return size_; }
 

@@ -297,11 +297,18 @@ std::string printable(const std::string& text) {
 }
 
 std::string describe_mode(const Scene& scene, const std::string& letters) {
-    std::string out;
+    std::string out;  // appended in place: Theta(contacts) per mode, Theta(modes x contacts) in all
     for (std::size_t j = 0; j < letters.size(); ++j) {
         const std::string& name = scene.contacts[j].name;
-        const char* what = describe(contact_mode(letters[j]));
-        out += (j ? ", " : "") + (name.empty() ? "contact " + std::to_string(j + 1) : printable(name)) + " " + what;
+        if (j) out += ", ";
+        if (name.empty()) {
+            out += "contact ";
+            out += std::to_string(j + 1);
+        } else {
+            out += printable(name);
+        }
+        out += ' ';
+        out += describe(contact_mode(letters[j]));
     }
     return out;
 }

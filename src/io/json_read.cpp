@@ -159,51 +159,83 @@ std::vector<bool> underflowing_numbers(std::string_view text) {
     return flags;
 }
 
+// The document builder of the JSON library, with the checks of `parse` on each event. (The
+// library's callback parser rescans a parent array for discarded elements after every object:
+// quadratic time on a list of 10^5 contacts.)
+class CheckedBuilder {
+public:
+    explicit CheckedBuilder(json& result, const std::vector<bool>& underflow) : dom_(result), underflow_(underflow) {}
+
+    bool null() { return element() && dom_.null(); }
+    bool boolean(bool v) { return element() && dom_.boolean(v); }
+    bool number_integer(json::number_integer_t v) { return number() && dom_.number_integer(v); }
+    bool number_unsigned(json::number_unsigned_t v) { return number() && dom_.number_unsigned(v); }
+    bool number_float(json::number_float_t v, const json::string_t& s) { return number() && dom_.number_float(v, s); }
+    bool string(json::string_t& v) { return element() && dom_.string(v); }
+    bool binary(json::binary_t& v) { return element() && dom_.binary(v); }
+    bool start_object(std::size_t n) { return open(false) && dom_.start_object(n); }
+    bool start_array(std::size_t n) { return open(true) && dom_.start_array(n); }
+    bool end_object() { return close() && dom_.end_object(); }
+    bool end_array() { return close() && dom_.end_array(); }
+    bool key(json::string_t& k) {
+        Frame& f = stack_.back();
+        f.key = k;
+        if (std::find(f.keys.begin(), f.keys.end(), f.key) != f.keys.end()) {
+            throw InputError(path_of(stack_), "duplicate key (each key may appear once in an object)");
+        }
+        f.keys.push_back(f.key);
+        return dom_.key(k);
+    }
+    template <class Exception>
+    bool parse_error(std::size_t position, const std::string& token, const Exception& e) {
+        return dom_.parse_error(position, token, e);
+    }
+
+private:
+    bool element() {
+        if (!stack_.empty() && stack_.back().is_array) ++stack_.back().count;
+        return true;
+    }
+    bool number() {
+        element();
+        if (!underflow_.empty() && underflow_[numbers_++]) {
+            throw InputError(path_of(stack_), "a number too small for a double: it would be taken as 0 "
+                                              "(expected 0 or a magnitude 1e-60 .. 1e60)");
+        }
+        return true;
+    }
+    bool open(bool is_array) {
+        element();
+        stack_.push_back(Frame{is_array, 0, {}, {}});
+        return true;
+    }
+    bool close() {
+        if (!stack_.empty()) stack_.pop_back();
+        return true;
+    }
+
+    nlohmann::detail::json_sax_dom_parser<json> dom_;
+    const std::vector<bool>& underflow_;
+    std::vector<Frame> stack_;
+    std::size_t numbers_ = 0;
+};
+
 }  // namespace
 
 json parse(const std::string& text) {
     // Duplicate keys are an error: JSON parsers differ on which one wins, so a file with two
     // "mu" fields means different scenes to different programs.
-    std::vector<Frame> stack;
     const std::vector<bool> underflow = underflowing_numbers(text);
-    std::size_t numbers = 0;
-    const json::parser_callback_t callback = [&stack, &underflow, &numbers](int, json::parse_event_t event, json& parsed) {
-        switch (event) {
-            case json::parse_event_t::object_start:
-            case json::parse_event_t::array_start:
-                if (!stack.empty() && stack.back().is_array) ++stack.back().count;
-                stack.push_back(Frame{event == json::parse_event_t::array_start, 0, {}, {}});
-                break;
-            case json::parse_event_t::object_end:
-            case json::parse_event_t::array_end:
-                if (!stack.empty()) stack.pop_back();
-                break;
-            case json::parse_event_t::key: {
-                Frame& f = stack.back();
-                f.key = parsed.get_ref<const std::string&>();
-                if (std::find(f.keys.begin(), f.keys.end(), f.key) != f.keys.end()) {
-                    throw InputError(path_of(stack), "duplicate key (each key may appear once in an object)");
-                }
-                f.keys.push_back(f.key);
-                break;
-            }
-            case json::parse_event_t::value:
-                if (!stack.empty() && stack.back().is_array) ++stack.back().count;
-                if (parsed.is_number() && !underflow.empty() && underflow[numbers++]) {
-                    throw InputError(path_of(stack), "a number too small for a double: it would be taken as 0 "
-                                                     "(expected 0 or a magnitude 1e-60 .. 1e60)");
-                }
-                break;
-        }
-        return true;
-    };
+    json result;
+    CheckedBuilder builder(result, underflow);
     try {
-        return json::parse(text, callback);
+        json::sax_parse(text, &builder);
     } catch (const json::parse_error& e) {
         throw InputError("$", std::string("malformed JSON: ") + e.what());
     } catch (const json::out_of_range& e) {  // e.g. 1e999: too large for a double
         throw InputError("$", std::string("a number is out of range (expected 0 or 1e-60 .. 1e60): ") + e.what());
     }
+    return result;
 }
 
 }  // namespace momentlab::json_read

@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <map>
+#include <unordered_map>
 #include <ostream>
 #include <stdexcept>
 
@@ -35,8 +35,7 @@ public:
     explicit Enumerator(const std::vector<Contact>& contacts) {
         for (const Contact& c : contacts) {
             normals_.push_back(c.normal_wrench());
-            n_.push_back(normals_.back().exact());
-            t_.push_back(c.tangent_wrench().exact());
+            tangents_.push_back(c.tangent_wrench());
         }
     }
 
@@ -46,19 +45,23 @@ public:
         const Cone& a = out.feasible_twists;
         std::vector<Q3> lineality;
         for (const ExactVector& l : a.lineality()) lineality.push_back(l.exact());
-        add(std::string(n_.size(), letter(ContactMode::Fixed)), {});  // xi = 0: every contact fixed
+        add(std::string(normals_.size(), letter(ContactMode::Fixed)), {});  // xi = 0: every contact fixed
         const std::vector<Face> faces = a.faces();
         for (std::size_t f = 0; f < faces.size(); ++f) {
             if (progress) progress("faces of the cone of motions", f, faces.size());
             const Face& face = faces[f];
+            if (face.dimension == 0) continue;
             std::vector<Q3> rays;
             for (int i : face.rays) rays.push_back(a.rays()[static_cast<std::size_t>(i)].exact());
-            if (face.dimension == 0) continue;
-            std::vector<bool> closed(n_.size());
-            for (std::size_t j = 0; j < n_.size(); ++j) {
+            // Closed on the face: N_j . g = 0 for every generator g of it (filtered predicates:
+            // this and the letters are the Theta(faces x n) and Theta(modes x n) parts).
+            std::vector<bool> closed(normals_.size());
+            for (std::size_t j = 0; j < normals_.size(); ++j) {
                 bool all = true;
-                for (const Q3& g : rays) all = all && sign(dot(n_[j], g)) == 0;
-                for (const Q3& g : lineality) all = all && sign(dot(n_[j], g)) == 0;
+                for (int i : face.rays) {
+                    all = all && dot_sign(normals_[j], a.rays()[static_cast<std::size_t>(i)]) == Sign::Zero;
+                }
+                for (const ExactVector& l : a.lineality()) all = all && dot_sign(normals_[j], l) == Sign::Zero;
                 closed[j] = all;
             }
             for (const Cell& cell : cells(face.dimension, rays, lineality, closed)) {
@@ -75,12 +78,14 @@ public:
     }
 
 private:
-    std::string letters(const Q3& xi, const std::vector<bool>& closed) const {
-        std::string s(n_.size(), letter(ContactMode::Separating));
-        for (std::size_t j = 0; j < n_.size(); ++j) {
+    std::string letters(const Q3& representative, const std::vector<bool>& closed) const {
+        const ExactVector xi = ExactVector::from_exact(representative);
+        std::string s(normals_.size(), letter(ContactMode::Separating));
+        for (std::size_t j = 0; j < normals_.size(); ++j) {
             if (!closed[j]) continue;
-            const int v = sign(dot(t_[j], xi));
-            s[j] = letter(v > 0 ? ContactMode::SlidingRight : (v < 0 ? ContactMode::SlidingLeft : ContactMode::Fixed));
+            const Sign v = dot_sign(tangents_[j], xi);
+            s[j] = letter(v == Sign::Positive ? ContactMode::SlidingRight
+                                              : (v == Sign::Negative ? ContactMode::SlidingLeft : ContactMode::Fixed));
         }
         return s;
     }
@@ -141,9 +146,9 @@ private:
             return true;
         };
         std::vector<Q3> critical;
-        for (std::size_t j = 0; j < n_.size(); ++j) {
+        for (std::size_t j = 0; j < tangents_.size(); ++j) {
             if (!closed[j]) continue;
-            const Q3 u = cross(e, t_[j]);
+            const Q3 u = cross(e, tangents_[j].exact());
             if (is_zero(u)) continue;  // T_j vanishes on the whole face
             for (const Q3& x : {u, -u}) {
                 if (inside(x)) critical.push_back(x);
@@ -192,9 +197,8 @@ private:
         return out;
     }
 
-    std::vector<ExactVector> normals_;
-    std::vector<Q3> n_, t_;
-    std::map<std::string, std::size_t> order_;
+    std::vector<ExactVector> normals_, tangents_;
+    std::unordered_map<std::string, std::size_t> order_;
     std::vector<std::vector<Q3>> closures_;
 };
 

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# The table of nearly degenerate and big scenes (docs/benchmarks.md, "Nearly degenerate
+# scenes"): each row through the real command with /usr/bin/time (wall time, peak memory), the
+# modes and letters of the output, and the bound docs/benchmarks.md states for it. A run that
+# takes longer than TIMEOUT seconds (default 120) is stopped and shown as "> TIMEOUT s".
+# Usage: tools/degenerate_table.sh [momentlab binary] [work directory]
+set -uo pipefail
+bin=${1:-build/release/momentlab}
+dir=${2:-build/degenerate}
+timeout_s=${TIMEOUT:-120}
+here=$(cd "$(dirname "$0")" && pwd)
+mkdir -p "$dir"
+need() {  # family size: writes the scene once
+    [[ -f "$dir/$1_$2.json" ]] || /usr/bin/python3 "$here/families.py" "$dir" "$1" "$2"
+}
+# A body outline of n vertices (a wavy circle) on a floor outline of n vertices touching its
+# lowest vertex: the simplicity checks and the contact search from the scene file.
+polygon_scene() {
+    [[ -f "$dir/polygon_$1.json" ]] || /usr/bin/python3 - "$dir" "$1" <<'PY'
+import json, math, sys
+d, n = sys.argv[1], int(sys.argv[2])
+body = [[(1 + 0.1 * math.sin(7 * 2 * math.pi * i / n)) * math.cos(2 * math.pi * i / n),
+         (1 + 0.1 * math.sin(7 * 2 * math.pi * i / n)) * math.sin(2 * math.pi * i / n)] for i in range(n)]
+low = min(v[1] for v in body)
+floor = [[-2 + 4 * i / n, low] for i in range(n)] + [[2, low - 2], [-2, low - 2]]
+json.dump({"body": {"mass": 1, "com": [0, 0], "inertia": 0.5, "polygon": body},
+           "obstacles": [{"polygon": floor}], "contact_distance": 1e-9}, open(f"{d}/polygon_{n}.json", "w"))
+PY
+}
+printf "%-44s %10s %12s %10s %14s\n" "input" "time (s)" "peak (MB)" "modes" "letters"
+row() {  # label, then the command; prints time, peak memory and the size of the output
+    local label=$1; shift
+    local out="$dir/out.txt" err="$dir/err.txt"
+    /usr/bin/time -f "%e %M" -o "$dir/time.txt" timeout "$timeout_s" "$@" > "$out" 2> "$err"
+    local rc=$?
+    local secs kb
+    read -r secs kb < <(tail -1 "$dir/time.txt")
+    if (( rc == 124 )); then
+        printf "%-44s %10s %12s %10s %14s\n" "$label" "> $timeout_s" "-" "-" "-"
+        return
+    fi
+    if (( rc != 0 )); then
+        echo "FAIL: $label exited with $rc: $(head -c 300 "$err")"
+        exit 1
+    fi
+    local modes letters
+    modes=$(grep -m1 -o '^[0-9]* contact modes' "$out" | grep -o '^[0-9]*')
+    modes=${modes:-$(grep -c '"mode":' "$out")}
+    letters=$(( modes * contacts ))
+    printf "%-44s %10.2f %12.1f %10s %14s\n" "$label" "$secs" "$(echo "$kb / 1024" | bc -l)" "$modes" "$letters"
+}
+for f in bowl bowl-exact; do
+    need $f 100000
+    contacts=100000 row "$f, 10^5 contacts, analyze --json" "$bin" analyze "$dir/${f}_100000.json" --json
+done
+for f in collinear cradle tangent; do
+    for n in 1000 3000 10000; do
+        need $f $n
+        contacts=$n row "$f, $n contacts, modes" "$bin" modes "$dir/${f}_$n.json"
+    done
+done
+for n in 3000 10000; do
+    need collinear $n
+    contacts=$n row "collinear, $n contacts, one query" "$bin" query "$dir/collinear_$n.json" --wrench 0.1 1 0.2
+done
+for n in 10000 30000 1000000; do
+    polygon_scene $n
+    contacts=0 row "body outline of $n vertices, modes" "$bin" modes "$dir/polygon_$n.json"
+done

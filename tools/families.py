@@ -1,0 +1,57 @@
+#!/usr/bin/python3
+"""Writes the nearly degenerate scene families of docs/benchmarks.md ("Nearly degenerate scenes")
+as scene files: python3 tools/families.py DIR FAMILY N [FAMILY N ...].
+
+Families (a unit body at the origin, mu = 0.3):
+  bowl        contacts on the lower half of the unit circle, normals towards the centre, every
+              coordinate rounded to 9 digits: the normal lines nearly meet in the centre
+  bowl-exact  the same points, normals exactly -p: the normal lines all meet in the centre
+  collinear   contacts on the x axis with normals +x and -x in turn: every normal on one line
+  cradle      contacts on a half ring, normals tilted by 0.2 rad from the radius
+  tangent     normal lines tangent to the lower half of the unit circle (contacts at the
+              tangent points)
+"""
+import json
+import math
+import sys
+
+
+def contact(p, n):
+    return {"point": [p[0], p[1]], "normal": [n[0], n[1]], "mu": 0.3}
+
+
+def family(name, n):
+    cs = []
+    for k in range(n):
+        a = math.pi * (1.0 + (k + 0.5) / n)
+        c, s = math.cos(a), math.sin(a)
+        if name == "bowl":
+            cs.append(contact((round(c, 9), round(s, 9)), (round(-c, 9), round(-s, 9))))
+        elif name == "bowl-exact":
+            p = (round(c, 9), round(s, 9))
+            cs.append(contact(p, (-p[0], -p[1])))
+        elif name == "collinear":
+            x = (k + 0.5) / n * 4.0 - 2.0
+            cs.append(contact((x, 0.0), (1.0 if k % 2 == 0 else -1.0, 0.0)))
+        elif name == "cradle":
+            t = 0.2
+            cs.append(contact((c, s), (-(c * math.cos(t) - s * math.sin(t)), -(c * math.sin(t) + s * math.cos(t)))))
+        elif name == "tangent":
+            cs.append(contact((c, s), (-s, c)))
+        else:
+            raise SystemExit(f"families.py: unknown family {name}")
+    return {"body": {"mass": 1.0, "com": [0.0, 0.0], "inertia": 0.5}, "contacts": cs}
+
+
+def main():
+    args = sys.argv[1:]
+    if len(args) < 3 or len(args) % 2 == 0:
+        raise SystemExit(__doc__)
+    out = args[0]
+    for name, size in zip(args[1::2], args[2::2]):
+        with open(f"{out}/{name}_{size}.json", "w") as f:
+            json.dump(family(name, int(size)), f)
+
+
+if __name__ == "__main__":
+    main()
