@@ -126,9 +126,11 @@ fuzz: fuzz-build
 	        -artifact_prefix=$(FUZZ_BUILD)/ $(FUZZ_BUILD)/corpus/$$t fuzz/corpus/$$t || exit 1; \
 	done
 
-# 10^5 and 10^6 contacts / generators through the command line, with time and peak memory.
+# 10^5 and 10^6 contacts / generators through the command line, with time and peak memory,
+# then the nearly degenerate families up to 4 x 10^8 letters of output (docs/benchmarks.md).
 large-inputs: build
 	bash tools/large_inputs.sh $(BUILD)/momentlab build/large
+	bash tools/degenerate_table.sh $(BUILD)/momentlab build/degenerate
 
 # Agreement with engines nobody here wrote (Siconos, Box2D, cddlib; docs/validation.md). `make
 # test` runs the validators at the sizes of `validate`; both targets rewrite their table in

@@ -2,12 +2,12 @@
 # The table of nearly degenerate and big scenes (docs/benchmarks.md, "Nearly degenerate
 # scenes"): each row through the real command with /usr/bin/time (wall time, peak memory), the
 # modes and letters of the output, and the bound docs/benchmarks.md states for it. A run that
-# takes longer than TIMEOUT seconds (default 120) is stopped and shown as "> TIMEOUT s".
+# takes longer than TIMEOUT seconds (default 60) is stopped and shown as "> TIMEOUT s".
 # Usage: tools/degenerate_table.sh [momentlab binary] [work directory]
 set -uo pipefail
 bin=${1:-build/release/momentlab}
 dir=${2:-build/degenerate}
-timeout_s=${TIMEOUT:-120}
+timeout_s=${TIMEOUT:-60}
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$dir"
 need() {  # family size: writes the scene once
@@ -44,26 +44,29 @@ row() {  # label, then the command; prints time, peak memory and the size of the
         exit 1
     fi
     local modes letters
-    modes=$(grep -m1 -o '^[0-9]* contact modes' "$out" | grep -o '^[0-9]*')
-    modes=${modes:-$(grep -c '"mode":' "$out")}
-    letters=$(( modes * contacts ))
+    case $count in
+        analyze) modes=$(grep -c '"mode":' "$out") ;;
+        modes) modes=$(( $(tr -cd ',' < "$out" | wc -c) + 1 )) ;;  # {"modes": ["...", ...]}
+        *) modes=- ;;
+    esac
+    [[ $modes == - ]] && letters=- || letters=$(( modes * contacts ))
     printf "%-44s %10.2f %12.1f %10s %14s\n" "$label" "$secs" "$(echo "$kb / 1024" | bc -l)" "$modes" "$letters"
 }
 for f in bowl bowl-exact; do
     need $f 100000
-    contacts=100000 row "$f, 10^5 contacts, analyze --json" "$bin" analyze "$dir/${f}_100000.json" --json
+    contacts=100000 count=analyze row "$f, 10^5 contacts, analyze --json" "$bin" analyze "$dir/${f}_100000.json" --json
 done
 for f in collinear cradle tangent; do
     for n in 1000 3000 10000; do
         need $f $n
-        contacts=$n row "$f, $n contacts, modes" "$bin" modes "$dir/${f}_$n.json"
+        contacts=$n count=modes row "$f, $n contacts, modes --json" "$bin" modes "$dir/${f}_$n.json" --json
     done
 done
 for n in 3000 10000; do
     need collinear $n
-    contacts=$n row "collinear, $n contacts, one query" "$bin" query "$dir/collinear_$n.json" --wrench 0.1 1 0.2
+    contacts=$n count=none row "collinear, $n contacts, one query" "$bin" query "$dir/collinear_$n.json" --wrench 0.1 1 0.2
 done
 for n in 10000 30000 1000000; do
     polygon_scene $n
-    contacts=0 row "body outline of $n vertices, modes" "$bin" modes "$dir/polygon_$n.json"
+    contacts=0 count=none row "body outline of $n vertices, modes" "$bin" modes "$dir/polygon_$n.json" --json
 done

@@ -69,10 +69,13 @@ public:
             }
         }
         out.modes.resize(order_.size());
-        for (const auto& [letters, index] : order_) {
+        while (!order_.empty()) {  // each key moved out, not copied: the letters are Theta(M n)
+            auto node = order_.extract(order_.begin());
+            const std::size_t index = node.mapped();
             std::vector<ExactVector> gens;
             for (const Q3& g : closures_[index]) gens.push_back(ExactVector::from_exact(g));
-            out.modes[index] = Mode{letters, Cone::from_generators(gens)};
+            closures_[index] = {};
+            out.modes[index] = Mode{std::move(node.key()), Cone::from_generators(gens)};
         }
         return out;
     }

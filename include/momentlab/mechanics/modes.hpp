@@ -61,7 +61,9 @@ struct ModeSet {
 [[nodiscard]] Labels rotation_centres(const Mode& mode);
 
 /// Enumerates the contact modes exactly: every decision is the exact sign of a polynomial in
-/// the stored N_j = (n_j, p_j x n_j) and T_j = (t_j, p_j x t_j). O(n log n) for n contacts.
+/// the stored N_j = (n_j, p_j x n_j) and T_j = (t_j, p_j x t_j). O(n log n + M n) time and
+/// O(n + M n) memory for n contacts and M modes (the letters alone are M n; docs/benchmarks.md,
+/// "Nearly degenerate scenes").
 /// Throws std::invalid_argument for a contact with a non-finite point, a zero or non-finite
 /// normal, or a negative or non-finite mu / mu_kinetic (as Contact::make would).
 [[nodiscard]] ModeSet enumerate_modes(const std::vector<Contact>& contacts, const Progress& progress = nullptr);
