@@ -155,6 +155,20 @@ void BM_oneshot(benchmark::State& state) {
 }
 BENCHMARK(BM_oneshot)->DenseRange(2, 8, 2)->Unit(benchmark::kMicrosecond);
 
+// The same questions by the direct path (query_scene): the modes, then only the sets that no
+// certificate of an earlier mode decides.
+void BM_oneshot_direct(benchmark::State& state) {
+    const auto pool = fresh_pool(static_cast<int>(state.range(0)));
+    std::size_t i = 0, found = 0;
+    for (auto _ : state) {
+        const Question& q = pool[i++ % kPool];
+        found += query_scene(q.scene, q.wrench).result.modes.size();
+    }
+    benchmark::DoNotOptimize(found);
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_oneshot_direct)->DenseRange(2, 8, 2)->Unit(benchmark::kMicrosecond);
+
 // The same questions as a simulator asks them: the LCP of the new scene assembled into reused
 // buffers (CoulombLcp::reset), then solved by Siconos' lexicographic Lemke.
 void BM_lemke_oneshot(benchmark::State& state) {
@@ -226,6 +240,27 @@ void BM_family_analyze(benchmark::State& state) {
     state.counters["modes"] = static_cast<double>(modes);
 }
 BENCHMARK(BM_family_analyze)->ArgsProduct({{0, 1}, {100000}})->ArgsProduct({{2, 3, 4}, {1000}})->Unit(benchmark::kMillisecond);
+
+// One wrench (0.1, 1, 0.2) asked of a family scene by the direct path, against query(analyze())
+// in the same run; `built` counts the modes whose E the certificates could not decide.
+void BM_family_query(benchmark::State& state) {
+    const Scene s = family(static_cast<int>(state.range(0)), state.range(1));
+    const Vec3 e(0.1, 1.0, 0.2);
+    SceneAnswer a;
+    for (auto _ : state) a = query_scene(s, e);
+    state.SetLabel(kFamilies[state.range(0)]);
+    state.counters["modes"] = static_cast<double>(a.modes.modes.size());
+    state.counters["built"] = static_cast<double>(a.built);
+}
+BENCHMARK(BM_family_query)->ArgsProduct({{0, 1}, {100000}})->ArgsProduct({{2, 3, 4}, {1000}})->Unit(benchmark::kMillisecond);
+
+void BM_family_query_analyzed(benchmark::State& state) {
+    const Scene s = family(static_cast<int>(state.range(0)), state.range(1));
+    const Vec3 e(0.1, 1.0, 0.2);
+    for (auto _ : state) benchmark::DoNotOptimize(query(analyze(s), e));
+    state.SetLabel(kFamilies[state.range(0)]);
+}
+BENCHMARK(BM_family_query_analyzed)->ArgsProduct({{0, 1}, {100000}})->ArgsProduct({{2, 3, 4}, {1000}})->Unit(benchmark::kMillisecond);
 
 // A wavy closed outline of n vertices (radius 1 + sin(7 t) / 10) and a floor of n vertices whose
 // top edge runs along the outline's lowest point: the simplicity check of both and the contact
@@ -307,14 +342,17 @@ public:
             if (q == seconds.end() || l == seconds.end()) continue;
             std::printf("%10d %16.0f %16.0f %10.1f\n", n, 1.0 / q->second, 1.0 / l->second, l->second / q->second);
         }
-        std::printf("\nA new scene: every mode and its sets plus one query (momentlab), the LCP assembled and\n"
-                    "solved by Siconos' Lemke; microseconds per question over 512 scenes\n");
-        std::printf("%10s %14s %14s %10s\n", "contacts", "momentlab", "lemke", "ratio");
+        std::printf("\nA new scene: every mode and its sets plus one query (analyze), the direct path\n"
+                    "(query_scene), the LCP assembled and solved by Siconos' Lemke; microseconds per\n"
+                    "question over 512 scenes, and each momentlab time over Lemke's\n");
+        std::printf("%10s %12s %12s %12s %10s %10s\n", "contacts", "analyze", "direct", "lemke", "ratio", "direct");
         for (int n = 2; n <= 8; n += 2) {
             const auto o = seconds.find("BM_oneshot/" + std::to_string(n));
+            const auto d = seconds.find("BM_oneshot_direct/" + std::to_string(n));
             const auto l = seconds.find("BM_lemke_oneshot/" + std::to_string(n));
-            if (o == seconds.end() || l == seconds.end()) continue;
-            std::printf("%10d %14.2f %14.2f %10.2f\n", n, 1e6 * o->second, 1e6 * l->second, o->second / l->second);
+            if (o == seconds.end() || d == seconds.end() || l == seconds.end()) continue;
+            std::printf("%10d %12.2f %12.2f %12.2f %10.2f %10.2f\n", n, 1e6 * o->second, 1e6 * d->second, 1e6 * l->second,
+                        o->second / l->second, d->second / l->second);
         }
         std::printf("\nPolygons of n vertices: simplicity, contact search (grid), and every pair (the alternative)\n");
         std::printf("%10s %14s %14s %14s %10s\n", "n", "simple (ms)", "contacts (ms)", "all pairs (ms)", "ratio");

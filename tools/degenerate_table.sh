@@ -62,6 +62,9 @@ for f in collinear cradle tangent; do
         contacts=$n count=modes row "$f, $n contacts, modes --json" "$bin" modes "$dir/${f}_$n.json" --json
     done
 done
+for f in bowl bowl-exact; do
+    contacts=100000 count=none row "$f, 10^5 contacts, one query" "$bin" query "$dir/${f}_100000.json" --wrench 0.1 1 0.2
+done
 for n in 3000 10000; do
     need collinear $n
     contacts=$n count=none row "collinear, $n contacts, one query" "$bin" query "$dir/collinear_$n.json" --wrench 0.1 1 0.2

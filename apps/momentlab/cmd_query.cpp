@@ -96,6 +96,28 @@ void answer_file(const Problem& p, const std::string& path, bool margin) {
     }
 }
 
+// One wrench, no margins: the direct path (query_scene), which builds a mode's sets only when
+// no plane found before rules it out. The same output as through the whole analysis.
+int answer_one(const QueryOptions& o) {
+    const Scene scene = read_scene_file(o.file);
+    const Vec3 e = checked_wrench(o.wrench[0], o.wrench[1], o.wrench[2], "--wrench");
+    TerminalProgress progress;
+    const SceneAnswer a = query_input(scene, e, "query", AnalysisOptions{o.quasi_static, progress.callback()});
+    progress.finish();
+    if (o.json) {
+        nlohmann::json modes = nlohmann::json::array();
+        for (std::size_t i : a.result.modes) modes.push_back(a.modes.modes[i].letters);
+        std::cout << nlohmann::json{{"modes", modes}, {"verdict", to_string(a.result.verdict)}}.dump() << "\n";
+        return 0;
+    }
+    std::cout << "verdict: " << to_string(a.result.verdict) << "\n";
+    for (std::size_t i : a.result.modes) {
+        const std::string& letters = a.modes.modes[i].letters;
+        std::cout << "  " << letters << "  " << describe_mode(scene, letters) << "\n";
+    }
+    return 0;
+}
+
 int run(const QueryOptions& o) {
     if (!o.push.empty()) {
         if (o.margin) throw InputError("--margin", "give --margin with one wrench, not with --push");
@@ -105,6 +127,7 @@ int run(const QueryOptions& o) {
     if (o.wrenches.empty() && o.wrench.size() != 3) {
         throw InputError("--wrench", "expected three numbers FX FY TAU (or --wrenches FILE)");
     }
+    if (o.wrenches.empty() && !o.margin) return answer_one(o);
     const Problem p = load_problem(o.file, "query", o.quasi_static);
     if (!o.wrenches.empty()) {
         answer_file(p, o.wrenches, o.margin);

@@ -283,7 +283,29 @@ ExactVector ExactVector::negated() const {
 }
 
 ExactVector ExactVector::signed_permuted(const Mat3& p) const {
-    if (kind_ == Kind::Computed) return from_exact(momentlab::exact(p) * exact());
+    if (kind_ == Kind::Computed) {
+        // Coordinates moved and negated: no arithmetic, and the approximation moves with them.
+        Exact3 moved;
+        const Exact3& from = computed_->exact;
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) {
+                if (p(i, j) == 0.0) continue;
+                assert(p(i, j) == 1.0 || p(i, j) == -1.0);
+                const bool negative = (p(i, j) < 0) != (sign_ < 0);
+                moved[static_cast<std::size_t>(i)] = negative ? -from[static_cast<std::size_t>(j)] : from[static_cast<std::size_t>(j)];
+            }
+        }
+        ExactVector e;
+        e.kind_ = Kind::Computed;
+        e.value_ = p * value_;
+        e.u_ = p * (sign_ > 0 ? u_ : Vec3(-u_));
+        e.v_ = v_;
+        auto block = std::make_shared<Computed>();
+        block->approximation = {e.u_, v_.x()};
+        block->exact = std::move(moved);
+        e.computed_ = std::move(block);
+        return e;
+    }
     ExactVector e = *this;
     e.value_ = p * value_;
     if (kind_ == Kind::Cross) {

@@ -185,11 +185,24 @@ json to_json(const Scene& scene) {
     return doc;
 }
 
-std::vector<ModeForces> analyze_input(const Scene& scene, const std::string& command, const AnalysisOptions& options) {
+namespace {
+
+void require_body(const Scene& scene, const std::string& command, const AnalysisOptions& options) {
     if (!scene.body && !options.quasi_static) {
         throw InputError("$", "missing field \"body\" (" + command + " needs its mass, com and inertia)");
     }
+}
+
+}  // namespace
+
+std::vector<ModeForces> analyze_input(const Scene& scene, const std::string& command, const AnalysisOptions& options) {
+    require_body(scene, command, options);
     return analyze(scene, options);
+}
+
+SceneAnswer query_input(const Scene& scene, const Vec3& e, const std::string& command, const AnalysisOptions& options) {
+    require_body(scene, command, options);
+    return query_scene(scene, e, options);
 }
 
 const ModeForces& find_mode(const std::vector<ModeForces>& analysis, const std::string& letters,

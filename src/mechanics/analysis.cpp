@@ -4,61 +4,243 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "momentlab/geometry/force_sets.hpp"
 
 namespace momentlab {
 
-std::vector<ModeForces> analyze(const Scene& scene, const AnalysisOptions& options) {
-    std::optional<ExactMatrix> m;
-    if (!options.quasi_static) {
-        if (!scene.body) throw std::invalid_argument("analyze: the scene needs a body (mass, com, inertia)");
-        const Body& b = *scene.body;
-        const bool inertia_ok = b.radius_of_gyration ? *b.radius_of_gyration > 0.0 && std::isfinite(*b.radius_of_gyration)
-                                                     : b.inertia > 0.0 && std::isfinite(b.inertia);
-        if (!b.com.allFinite() || !(b.mass > 0.0) || !std::isfinite(b.mass) || !inertia_ok) {
-            throw std::invalid_argument(
-                "analyze: the body needs a finite com, 0 < mass < inf and 0 < inertia < inf (or radius of gyration)");
+namespace {
+
+// The inertia at the origin, or none when quasi-static (checks the body as analyze documents).
+std::optional<ExactMatrix> inertia_of(const Scene& scene, const AnalysisOptions& options, const char* who) {
+    if (options.quasi_static) return std::nullopt;
+    if (!scene.body) throw std::invalid_argument(std::string(who) + ": the scene needs a body (mass, com, inertia)");
+    const Body& b = *scene.body;
+    const bool inertia_ok = b.radius_of_gyration ? *b.radius_of_gyration > 0.0 && std::isfinite(*b.radius_of_gyration)
+                                                 : b.inertia > 0.0 && std::isfinite(b.inertia);
+    if (!b.com.allFinite() || !(b.mass > 0.0) || !std::isfinite(b.mass) || !inertia_ok) {
+        throw std::invalid_argument(std::string(who) +
+                                    ": the body needs a finite com, 0 < mass < inf and 0 < inertia < inf (or radius of gyration)");
+    }
+    return inertia_at_origin(*scene.body);
+}
+
+// Each contact's friction edges, built once for all the modes (exact constructions; copies
+// share them): the static cone's two edges, and the kinetic ones n + mu_k t, n - mu_k t.
+struct FrictionEdges {
+    std::vector<std::array<ExactVector, 2>> statics, kinetics;
+
+    explicit FrictionEdges(const std::vector<Contact>& contacts) {
+        for (const Contact& c : contacts) {
+            statics.push_back(friction_cone_edges(c.point, c.normal, c.mu));
+            kinetics.push_back(c.mu_kinetic == c.mu ? statics.back() : friction_cone_edges(c.point, c.normal, c.mu_kinetic));
         }
-        m = inertia_at_origin(*scene.body);
     }
+
+    // Calls f(edge) for each generator of the contact cone T of a mode: both static edges of an
+    // f contact, n - mu_k t of an r contact (friction opposes sliding along +t), n + mu_k t of an l.
+    template <class F>
+    void for_each(const Mode& mode, F f) const {
+        for (std::size_t j = 0; j < statics.size(); ++j) {
+            switch (mode.letters[j]) {
+                case 'f': f(statics[j][0]), f(statics[j][1]); break;
+                case 'r': f(kinetics[j][1]); break;
+                case 'l': f(kinetics[j][0]); break;
+                default: break;
+            }
+        }
+    }
+};
+
+}  // namespace
+
+std::vector<ModeForces> analyze(const Scene& scene, const AnalysisOptions& options) {
+    const std::optional<ExactMatrix> m = inertia_of(scene, options, "analyze");
     const ModeSet modes = enumerate_modes(scene.contacts, options.progress);
-    // Each contact's friction edges, built once for all the modes (exact constructions; copies
-    // share them): the static cone's two edges, and the kinetic ones n + mu_k t, n - mu_k t.
-    std::vector<std::array<ExactVector, 2>> static_edges, kinetic_edges;
-    for (const Contact& c : scene.contacts) {
-        static_edges.push_back(friction_cone_edges(c.point, c.normal, c.mu));
-        kinetic_edges.push_back(c.mu_kinetic == c.mu ? static_edges.back()
-                                                     : friction_cone_edges(c.point, c.normal, c.mu_kinetic));
-    }
+    const FrictionEdges edges(scene.contacts);
     std::vector<ModeForces> out;
     out.reserve(modes.modes.size());
     for (const Mode& mode : modes.modes) {
         if (options.progress) options.progress("force sets of the modes", out.size(), modes.modes.size());
         std::vector<ExactVector> contact_generators;
-        for (std::size_t j = 0; j < scene.contacts.size(); ++j) {
-            switch (mode.at(j)) {
-                case ContactMode::Fixed:  // anywhere in the friction cone (static mu)
-                    contact_generators.insert(contact_generators.end(), static_edges[j].begin(), static_edges[j].end());
-                    break;
-                case ContactMode::SlidingRight:  // friction opposes sliding along +t: n - mu_k t
-                    contact_generators.push_back(kinetic_edges[j][1]);
-                    break;
-                case ContactMode::SlidingLeft:  // n + mu_k t
-                    contact_generators.push_back(kinetic_edges[j][0]);
-                    break;
-                case ContactMode::Separating:
-                    break;
-            }
-        }
+        edges.for_each(mode, [&](const ExactVector& g) { contact_generators.push_back(g); });
         ModeForces f{mode, m ? mode.twists.linear_image(*m) : Cone(), Cone::from_generators(contact_generators), Cone()};
         // Quasi-static: no inertia, F = {0}, so E = -T (the applied wrench balances the contacts').
         f.applied = m ? sum(f.total, f.contact.negated()) : f.contact.negated();
         out.push_back(std::move(f));
     }
+    return out;
+}
+
+namespace {
+
+// A generator of some mode's E, named so that another mode can tell whether it has it too:
+// contact j's friction edge `slot` (0, 1 static; 2, 3 kinetic, as FrictionEdges), negated, or
+// the image M r of a twist r (contact < 0).
+struct Piece {
+    int contact = -1;
+    int slot = 0;
+    ExactVector twist;
+};
+
+// The slot of contact j's edge in a mode with letter `letter` ('r' or 'l'); the kinetic edges
+// are the static ones when mu_k = mu.
+int sliding_slot(const Contact& c, char letter) {
+    const int side = letter == 'r' ? 1 : 0;
+    return c.mu_kinetic == c.mu ? side : side + 2;
+}
+
+bool has_piece(const Scene& scene, const Mode& mode, const Piece& p) {
+    if (p.contact < 0) return mode.twists.has(p.twist);
+    const auto j = static_cast<std::size_t>(p.contact);
+    const char letter = mode.letters[j];
+    if (letter == 'f') return p.slot < 2;
+    return (letter == 'r' || letter == 'l') && p.slot == sliding_slot(scene.contacts[j], letter);
+}
+
+// Three generators of the full-dimensional pointed cone c whose cone holds w (a fan from ray 0;
+// w in c), as indices into c.rays().
+std::array<std::size_t, 3> fan_triangle(const Cone& c, const ExactVector& w) {
+    const auto& r = c.rays();
+    for (std::size_t i = 1; i + 1 < r.size(); ++i) {
+        if (det_sign(r[0], r[i], w) != Sign::Negative && det_sign(r[0], r[i + 1], w) != Sign::Positive) return {0, i, i + 1};
+    }
+    return {0, 1, r.size() - 1};
+}
+
+}  // namespace
+
+SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions& options) {
+    if (!e.allFinite()) throw std::invalid_argument("query_scene: the wrench must be finite");
+    const std::optional<ExactMatrix> m = inertia_of(scene, options, "query_scene");
+    SceneAnswer out{enumerate_modes(scene.contacts, options.progress), {}};
+    const FrictionEdges edges(scene.contacts);
+    const ExactVector wrench = ExactVector::input(e);
+    // Two caches of certificates from modes decided before, the latest that worked first
+    // (neighbouring modes share most generators):
+    //  - planes h with h . e < 0 that held every generator of an earlier E on their side; one
+    //    that holds every generator of this E too proves e is not in it (Farkas). Each keeps
+    //    the contact that last broke it, tried first.
+    //  - three generators of an earlier E whose cone holds e; when this E has all three, e is
+    //    in it.
+    struct Plane {
+        ExactVector h;
+        std::size_t hint = 0;
+    };
+    std::vector<Plane> planes;
+    std::vector<std::array<Piece, 3>> triangles;
+    constexpr std::size_t kCache = 8;
+    const std::size_t count = out.modes.modes.size();
+    const std::size_t n = scene.contacts.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        if (options.progress) options.progress("modes tested", i, count);
+        const Mode& mode = out.modes.modes[i];
+        if (e.isZero()) {  // in every closed cone
+            out.result.modes.push_back(i);
+            continue;
+        }
+        const auto inside = std::find_if(triangles.begin(), triangles.end(), [&](const std::array<Piece, 3>& t) {
+            return has_piece(scene, mode, t[0]) && has_piece(scene, mode, t[1]) && has_piece(scene, mode, t[2]);
+        });
+        if (inside != triangles.end()) {
+            std::rotate(triangles.begin(), inside, inside + 1);
+            out.result.modes.push_back(i);
+            continue;
+        }
+        // E = M A + (-T): the images of the twists' generators, then minus the contact edges.
+        std::vector<ExactVector> generators;
+        std::vector<Piece> pieces;
+        if (m) {
+            const auto image = [&](const ExactVector& r) {
+                generators.push_back(r.transformed(*m));
+                pieces.push_back(Piece{-1, 0, r});
+            };
+            for (const ExactVector& r : mode.twists.rays()) image(r);
+            for (const ExactVector& l : mode.twists.lineality()) image(l), image(l.negated());
+        }
+        const std::size_t images = generators.size();
+        // Does h hold contact j's generators in this mode on its side (h . -edge >= 0)?
+        const auto holds_contact = [&](const ExactVector& h, std::size_t j) {
+            switch (mode.letters[j]) {
+                case 'f':
+                    return dot_sign(h, edges.statics[j][0]) != Sign::Positive && dot_sign(h, edges.statics[j][1]) != Sign::Positive;
+                case 'r': return dot_sign(h, edges.kinetics[j][1]) != Sign::Positive;
+                case 'l': return dot_sign(h, edges.kinetics[j][0]) != Sign::Positive;
+                default: return true;
+            }
+        };
+        const auto separates = [&](Plane& p) {
+            for (std::size_t g = 0; g < images; ++g) {
+                if (dot_sign(p.h, generators[g]) == Sign::Negative) return false;
+            }
+            if (p.hint < n && !holds_contact(p.h, p.hint)) return false;
+            for (std::size_t j = 0; j < n; ++j) {
+                if (!holds_contact(p.h, j)) {
+                    p.hint = j;
+                    return false;
+                }
+            }
+            return true;
+        };
+        const auto found = std::find_if(planes.begin(), planes.end(), separates);
+        if (found != planes.end()) {
+            std::rotate(planes.begin(), found, found + 1);
+            continue;
+        }
+        for (std::size_t j = 0; j < n; ++j) {
+            const char letter = mode.letters[j];
+            if (letter == 'f') {
+                for (int slot = 0; slot < 2; ++slot) {
+                    generators.push_back(edges.statics[j][static_cast<std::size_t>(slot)].negated());
+                    pieces.push_back(Piece{static_cast<int>(j), slot, {}});
+                }
+            } else if (letter == 'r' || letter == 'l') {
+                generators.push_back(edges.kinetics[j][letter == 'r' ? 1 : 0].negated());
+                pieces.push_back(Piece{static_cast<int>(j), sliding_slot(scene.contacts[j], letter), {}});
+            }
+        }
+        const Cone applied = Cone::from_generators(generators);
+        ++out.built;
+        if (applied.has(e)) {
+            out.result.modes.push_back(i);
+            if (applied.dimension() == 3 && applied.is_pointed()) {
+                // Name the three rays by generators pointing the same way (each ray is one).
+                std::array<Piece, 3> t;
+                bool named = true;
+                const auto corners = fan_triangle(applied, wrench);
+                for (std::size_t k = 0; k < 3 && named; ++k) {
+                    const ExactVector& ray = applied.rays()[corners[k]];
+                    const auto g = std::find_if(generators.begin(), generators.end(), [&](const ExactVector& v) {
+                        return parallel(v, ray) && dot_sign(v, ray) == Sign::Positive;
+                    });
+                    named = g != generators.end();
+                    if (named) t[k] = pieces[static_cast<std::size_t>(g - generators.begin())];
+                }
+                // Kept only when exactly checked: det(a, b, c) > 0 and w on the inner side of each face.
+                const auto in_triangle = [&] {
+                    const ExactVector &a = applied.rays()[corners[0]], &b = applied.rays()[corners[1]], &c = applied.rays()[corners[2]];
+                    return det_sign(a, b, c) == Sign::Positive && det_sign(wrench, b, c) != Sign::Negative &&
+                           det_sign(a, wrench, c) != Sign::Negative && det_sign(a, b, wrench) != Sign::Negative;
+                };
+                if (named && in_triangle()) {
+                    triangles.insert(triangles.begin(), t);
+                    if (triangles.size() > kCache) triangles.pop_back();
+                }
+            }
+            continue;
+        }
+        // A facet or equation of E with h . e < 0 (one exists: e is outside E).
+        const Membership why = applied.contains(e);
+        assert(!why.member);
+        planes.insert(planes.begin(), Plane{why.separator, 0});
+        if (planes.size() > kCache) planes.pop_back();
+    }
+    out.result.verdict = verdict_of(out.result.modes.size());
     return out;
 }
 

@@ -223,7 +223,9 @@ TEST(FixedWrench, ComplianceLabelsFollowTheFixedWrench) {
             const Vec2 c(i / 4.0, j / 4.0);
             const ComplyPlan plan = plan_comply(*rr, c, context);
             EXPECT_EQ(plan.label, labels.at(c)) << c.transpose();
-            if (plan.label == Label::None) EXPECT_EQ(plan.verdict, CentreVerdict::Works) << c.transpose();
+            if (plan.label == Label::None) {
+                EXPECT_EQ(plan.verdict, CentreVerdict::Works) << c.transpose();
+            }
             if (plan.verdict == CentreVerdict::Works) ++works;
             if (plan.verdict == CentreVerdict::Fails) ++fails;
         }

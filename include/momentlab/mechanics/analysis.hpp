@@ -64,4 +64,22 @@ struct QueryResult {
 /// std::invalid_argument for a non-finite wrench.
 [[nodiscard]] QueryResult query(const std::vector<ModeForces>& analysis, const Vec3& e);
 
+/// One question about a scene not analysed: its modes, and which of them e produces.
+struct SceneAnswer {
+    ModeSet modes;       ///< enumerate_modes(scene.contacts): the order analyze uses
+    QueryResult result;  ///< indices into modes.modes
+    std::size_t built = 0;  ///< how many modes' E had to be built (the rest were decided by certificates)
+};
+
+/// The same answer as query(analyze(scene, options), e), without building every mode's sets.
+/// Each mode is first tried against certificates kept from the modes decided before it (at most
+/// eight of each kind, the latest that worked first): a plane h with h . e < 0 that holds every
+/// generator of this E on its side proves e is not in E (Farkas); three generators of an earlier
+/// E whose cone holds e, when this mode has all three, prove e is in it. Only a mode that no
+/// certificate decides has its E built (which gives a new certificate). Every sign is exact.
+/// O(n log n + M n) for n contacts and M modes when certificates decide all but O(1) modes,
+/// O(M n log n) when none do (docs/benchmarks.md, "Nearly degenerate scenes"). Throws as analyze
+/// does, and std::invalid_argument for a non-finite wrench.
+[[nodiscard]] SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions& options = {});
+
 }  // namespace momentlab
