@@ -4,12 +4,15 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cassert>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
+#include "momentlab/core/parallel.hpp"
 #include "momentlab/geometry/force_sets.hpp"
 
 namespace momentlab {
@@ -63,17 +66,24 @@ std::vector<ModeForces> analyze(const Scene& scene, const AnalysisOptions& optio
     const std::optional<ExactMatrix> m = inertia_of(scene, options, "analyze");
     const ModeSet modes = enumerate_modes(scene.contacts, options.progress);
     const FrictionEdges edges(scene.contacts);
-    std::vector<ModeForces> out;
-    out.reserve(modes.modes.size());
-    for (const Mode& mode : modes.modes) {
-        if (options.progress) options.progress("force sets of the modes", out.size(), modes.modes.size());
+    // The modes are independent: on two threads when there is enough to do (about n letters of
+    // work per mode; below 2000 letters a thread costs more than it saves).
+    const std::size_t count = modes.modes.size();
+    std::vector<ModeForces> out(count);
+    std::atomic<std::size_t> done{0};
+    const std::thread::id caller = std::this_thread::get_id();
+    detail::for_each_index(count, count * scene.contacts.size() >= 2000, [&](std::size_t i) {
+        // Progress from the calling thread only (the callback need not be thread-safe).
+        if (options.progress && std::this_thread::get_id() == caller) options.progress("force sets of the modes", done, count);
+        const Mode& mode = modes.modes[i];
         std::vector<ExactVector> contact_generators;
         edges.for_each(mode, [&](const ExactVector& g) { contact_generators.push_back(g); });
         ModeForces f{mode, m ? mode.twists.linear_image(*m) : Cone(), Cone::from_generators(contact_generators), Cone()};
         // Quasi-static: no inertia, F = {0}, so E = -T (the applied wrench balances the contacts').
         f.applied = m ? sum(f.total, f.contact.negated()) : f.contact.negated();
-        out.push_back(std::move(f));
-    }
+        out[i] = std::move(f);
+        ++done;
+    });
     return out;
 }
 
@@ -132,113 +142,130 @@ SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions
         ExactVector h;
         std::size_t hint = 0;
     };
-    std::vector<Plane> planes;
-    std::vector<std::array<Piece, 3>> triangles;
     constexpr std::size_t kCache = 8;
     const std::size_t count = out.modes.modes.size();
     const std::size_t n = scene.contacts.size();
-    for (std::size_t i = 0; i < count; ++i) {
-        if (options.progress) options.progress("modes tested", i, count);
-        const Mode& mode = out.modes.modes[i];
-        if (e.isZero()) {  // in every closed cone
-            out.result.modes.push_back(i);
-            continue;
-        }
-        const auto inside = std::find_if(triangles.begin(), triangles.end(), [&](const std::array<Piece, 3>& t) {
-            return has_piece(scene, mode, t[0]) && has_piece(scene, mode, t[1]) && has_piece(scene, mode, t[2]);
-        });
-        if (inside != triangles.end()) {
-            std::rotate(triangles.begin(), inside, inside + 1);
-            out.result.modes.push_back(i);
-            continue;
-        }
-        // E = M A + (-T): the images of the twists' generators, then minus the contact edges.
-        std::vector<ExactVector> generators;
-        std::vector<Piece> pieces;
-        if (m) {
-            const auto image = [&](const ExactVector& r) {
-                generators.push_back(r.transformed(*m));
-                pieces.push_back(Piece{-1, 0, r});
-            };
-            for (const ExactVector& r : mode.twists.rays()) image(r);
-            for (const ExactVector& l : mode.twists.lineality()) image(l), image(l.negated());
-        }
-        const std::size_t images = generators.size();
-        // Does h hold contact j's generators in this mode on its side (h . -edge >= 0)?
-        const auto holds_contact = [&](const ExactVector& h, std::size_t j) {
-            switch (mode.letters[j]) {
-                case 'f':
-                    return dot_sign(h, edges.statics[j][0]) != Sign::Positive && dot_sign(h, edges.statics[j][1]) != Sign::Positive;
-                case 'r': return dot_sign(h, edges.kinetics[j][1]) != Sign::Positive;
-                case 'l': return dot_sign(h, edges.kinetics[j][0]) != Sign::Positive;
-                default: return true;
+    // The modes in two halves on two threads when there is enough to do (as analyze), each half
+    // with its own caches; the answers joined in order.
+    struct Part {
+        std::vector<std::size_t> members;
+        std::size_t built = 0;
+    };
+    const bool large = count * n >= 2000;
+    std::vector<Part> parts(large ? 2 : 1);
+    const std::thread::id caller = std::this_thread::get_id();
+    detail::for_each_index(parts.size(), large, [&](std::size_t k) {
+        Part& part = parts[k];
+        std::vector<Plane> planes;
+        std::vector<std::array<Piece, 3>> triangles;
+        const std::size_t begin = count * k / parts.size(), end = count * (k + 1) / parts.size();
+        for (std::size_t i = begin; i < end; ++i) {
+            if (options.progress && std::this_thread::get_id() == caller) options.progress("modes tested", i - begin, end - begin);
+            const Mode& mode = out.modes.modes[i];
+            if (e.isZero()) {  // in every closed cone
+                part.members.push_back(i);
+                continue;
             }
-        };
-        const auto separates = [&](Plane& p) {
-            for (std::size_t g = 0; g < images; ++g) {
-                if (dot_sign(p.h, generators[g]) == Sign::Negative) return false;
+            const auto inside = std::find_if(triangles.begin(), triangles.end(), [&](const std::array<Piece, 3>& t) {
+                return has_piece(scene, mode, t[0]) && has_piece(scene, mode, t[1]) && has_piece(scene, mode, t[2]);
+            });
+            if (inside != triangles.end()) {
+                std::rotate(triangles.begin(), inside, inside + 1);
+                part.members.push_back(i);
+                continue;
             }
-            if (p.hint < n && !holds_contact(p.h, p.hint)) return false;
-            for (std::size_t j = 0; j < n; ++j) {
-                if (!holds_contact(p.h, j)) {
-                    p.hint = j;
-                    return false;
-                }
-            }
-            return true;
-        };
-        const auto found = std::find_if(planes.begin(), planes.end(), separates);
-        if (found != planes.end()) {
-            std::rotate(planes.begin(), found, found + 1);
-            continue;
-        }
-        for (std::size_t j = 0; j < n; ++j) {
-            const char letter = mode.letters[j];
-            if (letter == 'f') {
-                for (int slot = 0; slot < 2; ++slot) {
-                    generators.push_back(edges.statics[j][static_cast<std::size_t>(slot)].negated());
-                    pieces.push_back(Piece{static_cast<int>(j), slot, {}});
-                }
-            } else if (letter == 'r' || letter == 'l') {
-                generators.push_back(edges.kinetics[j][letter == 'r' ? 1 : 0].negated());
-                pieces.push_back(Piece{static_cast<int>(j), sliding_slot(scene.contacts[j], letter), {}});
-            }
-        }
-        const Cone applied = Cone::from_generators(generators);
-        ++out.built;
-        if (applied.has(e)) {
-            out.result.modes.push_back(i);
-            if (applied.dimension() == 3 && applied.is_pointed()) {
-                // Name the three rays by generators pointing the same way (each ray is one).
-                std::array<Piece, 3> t;
-                bool named = true;
-                const auto corners = fan_triangle(applied, wrench);
-                for (std::size_t k = 0; k < 3 && named; ++k) {
-                    const ExactVector& ray = applied.rays()[corners[k]];
-                    const auto g = std::find_if(generators.begin(), generators.end(), [&](const ExactVector& v) {
-                        return parallel(v, ray) && dot_sign(v, ray) == Sign::Positive;
-                    });
-                    named = g != generators.end();
-                    if (named) t[k] = pieces[static_cast<std::size_t>(g - generators.begin())];
-                }
-                // Kept only when exactly checked: det(a, b, c) > 0 and w on the inner side of each face.
-                const auto in_triangle = [&] {
-                    const ExactVector &a = applied.rays()[corners[0]], &b = applied.rays()[corners[1]], &c = applied.rays()[corners[2]];
-                    return det_sign(a, b, c) == Sign::Positive && det_sign(wrench, b, c) != Sign::Negative &&
-                           det_sign(a, wrench, c) != Sign::Negative && det_sign(a, b, wrench) != Sign::Negative;
+            // E = M A + (-T): the images of the twists' generators, then minus the contact edges.
+            std::vector<ExactVector> generators;
+            std::vector<Piece> pieces;
+            if (m) {
+                const auto image = [&](const ExactVector& r) {
+                    generators.push_back(r.transformed(*m));
+                    pieces.push_back(Piece{-1, 0, r});
                 };
-                if (named && in_triangle()) {
-                    triangles.insert(triangles.begin(), t);
-                    if (triangles.size() > kCache) triangles.pop_back();
+                for (const ExactVector& r : mode.twists.rays()) image(r);
+                for (const ExactVector& l : mode.twists.lineality()) image(l), image(l.negated());
+            }
+            const std::size_t images = generators.size();
+            // Does h hold contact j's generators in this mode on its side (h . -edge >= 0)?
+            const auto holds_contact = [&](const ExactVector& h, std::size_t j) {
+                switch (mode.letters[j]) {
+                    case 'f':
+                        return dot_sign(h, edges.statics[j][0]) != Sign::Positive && dot_sign(h, edges.statics[j][1]) != Sign::Positive;
+                    case 'r': return dot_sign(h, edges.kinetics[j][1]) != Sign::Positive;
+                    case 'l': return dot_sign(h, edges.kinetics[j][0]) != Sign::Positive;
+                    default: return true;
+                }
+            };
+            const auto separates = [&](Plane& p) {
+                for (std::size_t g = 0; g < images; ++g) {
+                    if (dot_sign(p.h, generators[g]) == Sign::Negative) return false;
+                }
+                if (p.hint < n && !holds_contact(p.h, p.hint)) return false;
+                for (std::size_t j = 0; j < n; ++j) {
+                    if (!holds_contact(p.h, j)) {
+                        p.hint = j;
+                        return false;
+                    }
+                }
+                return true;
+            };
+            const auto found = std::find_if(planes.begin(), planes.end(), separates);
+            if (found != planes.end()) {
+                std::rotate(planes.begin(), found, found + 1);
+                continue;
+            }
+            for (std::size_t j = 0; j < n; ++j) {
+                const char letter = mode.letters[j];
+                if (letter == 'f') {
+                    for (int slot = 0; slot < 2; ++slot) {
+                        generators.push_back(edges.statics[j][static_cast<std::size_t>(slot)].negated());
+                        pieces.push_back(Piece{static_cast<int>(j), slot, {}});
+                    }
+                } else if (letter == 'r' || letter == 'l') {
+                    generators.push_back(edges.kinetics[j][letter == 'r' ? 1 : 0].negated());
+                    pieces.push_back(Piece{static_cast<int>(j), sliding_slot(scene.contacts[j], letter), {}});
                 }
             }
-            continue;
+            const Cone applied = Cone::from_generators(generators);
+            ++part.built;
+            if (applied.has(e)) {
+                part.members.push_back(i);
+                if (applied.dimension() == 3 && applied.is_pointed()) {
+                    // Name the three rays by generators pointing the same way (each ray is one).
+                    std::array<Piece, 3> t;
+                    bool named = true;
+                    const auto corners = fan_triangle(applied, wrench);
+                    for (std::size_t k = 0; k < 3 && named; ++k) {
+                        const ExactVector& ray = applied.rays()[corners[k]];
+                        const auto g = std::find_if(generators.begin(), generators.end(), [&](const ExactVector& v) {
+                            return parallel(v, ray) && dot_sign(v, ray) == Sign::Positive;
+                        });
+                        named = g != generators.end();
+                        if (named) t[k] = pieces[static_cast<std::size_t>(g - generators.begin())];
+                    }
+                    // Kept only when exactly checked: det(a, b, c) > 0 and w on the inner side of each face.
+                    const auto in_triangle = [&] {
+                        const ExactVector &a = applied.rays()[corners[0]], &b = applied.rays()[corners[1]], &c = applied.rays()[corners[2]];
+                        return det_sign(a, b, c) == Sign::Positive && det_sign(wrench, b, c) != Sign::Negative &&
+                               det_sign(a, wrench, c) != Sign::Negative && det_sign(a, b, wrench) != Sign::Negative;
+                    };
+                    if (named && in_triangle()) {
+                        triangles.insert(triangles.begin(), t);
+                        if (triangles.size() > kCache) triangles.pop_back();
+                    }
+                }
+                continue;
+            }
+            // A facet or equation of E with h . e < 0 (one exists: e is outside E).
+            const Membership why = applied.contains(e);
+            assert(!why.member);
+            planes.insert(planes.begin(), Plane{why.separator, 0});
+            if (planes.size() > kCache) planes.pop_back();
         }
-        // A facet or equation of E with h . e < 0 (one exists: e is outside E).
-        const Membership why = applied.contains(e);
-        assert(!why.member);
-        planes.insert(planes.begin(), Plane{why.separator, 0});
-        if (planes.size() > kCache) planes.pop_back();
+    });
+    for (const Part& part : parts) {
+        out.result.modes.insert(out.result.modes.end(), part.members.begin(), part.members.end());
+        out.built += part.built;
     }
     out.result.verdict = verdict_of(out.result.modes.size());
     return out;

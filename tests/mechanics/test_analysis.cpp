@@ -381,6 +381,47 @@ TEST(Analysis, DirectQueryAgreesWithExactLpOnManyContacts) {
     EXPECT_GE(members, testing::sized(400));
 }
 
+// Scenes large enough (modes x contacts >= 2000) that analyze and query_scene share their modes
+// out to two threads: the same answers as the exact LP, mode by mode. Contacts on a line whose
+// normals lie on it (+x and -x in turn), random mu: about 4n modes.
+TEST(Analysis, LargeScenesOnTwoThreadsAgreeWithExactLp) {
+    testing::Random rnd(6021);
+    int wrenches = 0, members = 0;
+    for (int s = 0; s < 2; ++s) {
+        Scene scene;
+        scene.body = Body{2.0, Vec2(0, 1), 3.0, {}};
+        const int n = 24;
+        for (int j = 0; j < n; ++j) {
+            const auto [mu, mk] = testing::random_mu(rnd);
+            scene.contacts.push_back(Contact::make(Vec2(j - n / 2, 0), Vec2(j % 2 == 0 ? 1 : -1, 0), mu, mk));
+        }
+        const auto a = analyze(scene);
+        ASSERT_GE(a.size() * scene.contacts.size(), 2000u) << "scene " << s << " is not large";
+        const testing::ExactContacts c(scene.contacts);
+        for (int w = 0; w < 2; ++w) {
+            reference::QVec e{0, 0, 0};
+            for (int j = 0; j < n; j += 5) {
+                for (const auto& g : c.raw[static_cast<std::size_t>(j)].generators("sfrl"[rnd.integer(0, 3)])) {
+                    e = reference::add(e, reference::scale(reference::Q(-rnd.integer(0, 1)), g));
+                }
+            }
+            const Vec3 ed = reference::to_vec3(e);
+            ASSERT_EQ(reference::q(ed), e);
+            std::set<std::string> expected;
+            for (const ModeForces& mf : a) {
+                if (testing::exact_lp_applied_in_mode(scene, mf.mode.letters, e)) expected.insert(mf.mode.letters);
+            }
+            EXPECT_EQ(answer(a, ed), expected) << "analyze, scene " << s << " wrench " << ed.transpose();
+            EXPECT_EQ(direct(scene, ed), expected) << "query_scene, scene " << s << " wrench " << ed.transpose();
+            ++wrenches;
+            members += static_cast<int>(expected.size());
+        }
+        std::cout << "[Analysis] large scene " << s << ": " << a.size() << " modes of " << n << " contacts\n";
+    }
+    std::cout << "[Analysis] " << wrenches << " wrenches on large scenes, " << members << " mode answers 'yes'\n";
+    EXPECT_GE(members, 4);
+}
+
 // The verdicts of random wrenches on the slanted-normal families are the same after an exact
 // transform of the scene and the wrench (modes renamed).
 TEST(Analysis, QueriesAreInvariantUnderExactTransforms) {

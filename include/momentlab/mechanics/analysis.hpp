@@ -31,14 +31,16 @@ struct AnalysisOptions {
     /// F_i = {0} and E_i = -T_i for every mode (each mode's set of motions is non-empty), and no
     /// body is needed; a wrench in no E_i cannot be held quasi-statically (docs/design.md).
     bool quasi_static = false;
-    /// Told how the enumeration and the per-mode sets go (may be empty).
+    /// Told how the enumeration and the per-mode sets go (may be empty). Called from the
+    /// calling thread only, even when the modes are shared out to two threads.
     Progress progress = nullptr;
 };
 
 /// Every mode with its force sets. Needs the body (mass, centre of mass, inertia) unless
 /// quasi-static. Throws std::invalid_argument if the scene has no body, or its com is not
 /// finite, or its mass or inertia is not finite and > 0 (and, through enumerate_modes, for bad
-/// contacts).
+/// contacts). When modes x contacts >= 2000 the modes' sets are built on two threads
+/// (core/parallel.hpp); the result is the same.
 [[nodiscard]] std::vector<ModeForces> analyze(const Scene& scene, const AnalysisOptions& options = {});
 
 /// How many modes an applied wrench produces.
@@ -78,8 +80,9 @@ struct SceneAnswer {
 /// E whose cone holds e, when this mode has all three, prove e is in it. Only a mode that no
 /// certificate decides has its E built (which gives a new certificate). Every sign is exact.
 /// O(n log n + M n) for n contacts and M modes when certificates decide all but O(1) modes,
-/// O(M n log n) when none do (docs/benchmarks.md, "Nearly degenerate scenes"). Throws as analyze
-/// does, and std::invalid_argument for a non-finite wrench.
+/// O(M n log n) when none do (docs/benchmarks.md, "Nearly degenerate scenes"). When modes x
+/// contacts >= 2000 the two halves of the modes go to two threads, each with its own caches.
+/// Throws as analyze does, and std::invalid_argument for a non-finite wrench.
 [[nodiscard]] SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions& options = {});
 
 }  // namespace momentlab
