@@ -169,6 +169,24 @@ void BM_oneshot_direct(benchmark::State& state) {
 }
 BENCHMARK(BM_oneshot_direct)->DenseRange(2, 8, 2)->Unit(benchmark::kMicrosecond);
 
+// The same questions by query_once: double arithmetic with certified error bounds, the exact
+// path only where a sign is not certified (the counter says how many of the 512 scenes took it).
+void BM_oneshot_once(benchmark::State& state) {
+    const auto pool = fresh_pool(static_cast<int>(state.range(0)));
+    std::size_t i = 0, found = 0;
+    int exact = 0;
+    for (auto _ : state) {
+        const Question& q = pool[i % kPool];
+        const OneShotAnswer a = query_once(q.scene, q.wrench);
+        found += a.letters.size();
+        if (i++ < kPool) exact += !a.filtered;
+    }
+    benchmark::DoNotOptimize(found);
+    state.SetItemsProcessed(state.iterations());
+    state.counters["exact_path"] = exact;
+}
+BENCHMARK(BM_oneshot_once)->DenseRange(2, 8, 2)->Unit(benchmark::kMicrosecond);
+
 // The same questions as a simulator asks them: the LCP of the new scene assembled into reused
 // buffers (CoulombLcp::reset), then solved by Siconos' lexicographic Lemke.
 void BM_lemke_oneshot(benchmark::State& state) {
@@ -343,16 +361,19 @@ public:
             std::printf("%10d %16.0f %16.0f %10.1f\n", n, 1.0 / q->second, 1.0 / l->second, l->second / q->second);
         }
         std::printf("\nA new scene: every mode and its sets plus one query (analyze), the direct path\n"
-                    "(query_scene), the LCP assembled and solved by Siconos' Lemke; microseconds per\n"
-                    "question over 512 scenes, and each momentlab time over Lemke's\n");
-        std::printf("%10s %12s %12s %12s %10s %10s\n", "contacts", "analyze", "direct", "lemke", "ratio", "direct");
+                    "(query_scene), one question in certified doubles (query_once), the LCP assembled\n"
+                    "and solved by Siconos' Lemke; microseconds per question over 512 scenes, and\n"
+                    "each momentlab time over Lemke's\n");
+        std::printf("%10s %10s %10s %10s %10s %9s %9s %9s\n", "contacts", "analyze", "direct", "once", "lemke", "ratio",
+                    "direct", "once");
         for (int n = 2; n <= 8; n += 2) {
             const auto o = seconds.find("BM_oneshot/" + std::to_string(n));
             const auto d = seconds.find("BM_oneshot_direct/" + std::to_string(n));
+            const auto f = seconds.find("BM_oneshot_once/" + std::to_string(n));
             const auto l = seconds.find("BM_lemke_oneshot/" + std::to_string(n));
-            if (o == seconds.end() || d == seconds.end() || l == seconds.end()) continue;
-            std::printf("%10d %12.2f %12.2f %12.2f %10.2f %10.2f\n", n, 1e6 * o->second, 1e6 * d->second, 1e6 * l->second,
-                        o->second / l->second, d->second / l->second);
+            if (o == seconds.end() || d == seconds.end() || f == seconds.end() || l == seconds.end()) continue;
+            std::printf("%10d %10.2f %10.2f %10.2f %10.2f %9.2f %9.2f %9.2f\n", n, 1e6 * o->second, 1e6 * d->second,
+                        1e6 * f->second, 1e6 * l->second, o->second / l->second, d->second / l->second, f->second / l->second);
         }
         std::printf("\nPolygons of n vertices: simplicity, contact search (grid), and every pair (the alternative)\n");
         std::printf("%10s %14s %14s %14s %10s\n", "n", "simple (ms)", "contacts (ms)", "all pairs (ms)", "ratio");

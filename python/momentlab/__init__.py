@@ -42,7 +42,7 @@ __all__ = [
     "Analysis", "Body", "Cone", "Contact", "Labels", "ModeSets", "Region", "Scene",
     "analyze", "closure", "contacts", "find_contacts", "force", "force_set_from_json", "forces_through_point",
     "friction_cone", "labels", "line_of_force", "plan_comply", "plan_push", "plan_tilt", "push_line",
-    "pure_moments",
+    "pure_moments", "query_once",
 ]
 
 __version__ = "0.1.0"
@@ -339,6 +339,18 @@ def analyze(scene: Scene, quasi_static: bool = False) -> Analysis:
     quasi_static=True neglects inertia: E_i = -T_i (the applied wrench balances the contact
     wrench), and no body is needed."""
     return Analysis(scene, quasi_static)
+
+
+def query_once(scene: Scene, w, quasi_static: bool = False) -> dict:
+    """One question about a scene not analysed: the modes whose closed E_i holds the applied
+    wrench w (shape (3,)), exactly, without building every mode's sets: {'modes': the mode strings,
+    sorted, 'verdict': 'unique' | 'ambiguous' | 'inconsistent', 'filtered': True when certified
+    double arithmetic decided every sign, False when the exact path answered}
+    (docs/robustness.md, "One question about a new scene"). The same modes as
+    analyze(scene, quasi_static).query(w)."""
+    if not isinstance(scene, Scene):
+        raise ValueError("query_once: expected a momentlab.Scene")
+    return _momentlab.query_once(scene._scene, w, quasi_static)
 
 
 def closure(scene: Scene, reference=None, length=None) -> dict:

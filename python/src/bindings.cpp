@@ -492,7 +492,7 @@ PYBIND11_MODULE(_momentlab, m) {
                 const py::handle& wrench) {
                  const Vec2 p = vector_of<2>(point, "point");
                  const Vec2 d = vector_of<2>(direction, "direction");
-                 if (d.isZero()) throw InputError("direction", "must not be zero");
+                 if (exactly_zero(d)) throw InputError("direction", "must not be zero");
                  const PlanContext context = context_of(a, gravity, wrench);
                  const Exact3 fixed = context.fixed ? *context.fixed : Exact3{};
                  return python_of(to_json(magnitude_bands(a.modes, fixed, wrench_through(exact(p), exact(d))), a.modes));
@@ -523,6 +523,15 @@ PYBIND11_MODULE(_momentlab, m) {
         }
         return python_of(to_json(closure(scene, options)));
     }, py::arg("scene"), py::arg("reference") = py::none(), py::arg("length") = py::none());
+    m.def("query_once", [](const Scene& scene, const py::handle& wrench, bool quasi_static) {
+        const OneShotAnswer a = query_once_input(scene, vector_of<3>(wrench, "wrench"), "query_once",
+                                                 AnalysisOptions{quasi_static, nullptr});
+        py::dict out;
+        out["modes"] = a.letters;
+        out["verdict"] = to_string(a.verdict);
+        out["filtered"] = a.filtered;
+        return out;
+    }, py::arg("scene"), py::arg("wrench"), py::arg("quasi_static") = false);
     m.def("pure_moments", [](int sign) { return pure_moments(sign); }, py::arg("sign"));
     m.def("force_set_from_json", [](const std::string& text) {
         InputWarnings warnings;

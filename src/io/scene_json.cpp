@@ -205,6 +205,12 @@ SceneAnswer query_input(const Scene& scene, const Vec3& e, const std::string& co
     return query_scene(scene, e, options);
 }
 
+OneShotAnswer query_once_input(const Scene& scene, const Vec3& e, const std::string& command,
+                               const AnalysisOptions& options) {
+    require_body(scene, command, options);
+    return query_once(scene, e, options);
+}
+
 const ModeForces& find_mode(const std::vector<ModeForces>& analysis, const std::string& letters,
                             const std::string& where) {
     for (const ModeForces& m : analysis) {

@@ -14,14 +14,11 @@
 
 #include "momentlab/core/parallel.hpp"
 #include "momentlab/geometry/force_sets.hpp"
+#include "checks.hpp"
 
 namespace momentlab {
 
-namespace {
-
-// The inertia at the origin, or none when quasi-static (checks the body as analyze documents).
-std::optional<ExactMatrix> inertia_of(const Scene& scene, const AnalysisOptions& options, const char* who) {
-    if (options.quasi_static) return std::nullopt;
+void detail::check_body(const Scene& scene, const char* who) {
     if (!scene.body) throw std::invalid_argument(std::string(who) + ": the scene needs a body (mass, com, inertia)");
     const Body& b = *scene.body;
     const bool inertia_ok = b.radius_of_gyration ? *b.radius_of_gyration > 0.0 && std::isfinite(*b.radius_of_gyration)
@@ -30,6 +27,14 @@ std::optional<ExactMatrix> inertia_of(const Scene& scene, const AnalysisOptions&
         throw std::invalid_argument(std::string(who) +
                                     ": the body needs a finite com, 0 < mass < inf and 0 < inertia < inf (or radius of gyration)");
     }
+}
+
+namespace {
+
+// The inertia at the origin, or none when quasi-static (checks the body as analyze documents).
+std::optional<ExactMatrix> inertia_of(const Scene& scene, const AnalysisOptions& options, const char* who) {
+    if (options.quasi_static) return std::nullopt;
+    detail::check_body(scene, who);
     return inertia_at_origin(*scene.body);
 }
 
@@ -162,7 +167,7 @@ SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions
         for (std::size_t i = begin; i < end; ++i) {
             if (options.progress && std::this_thread::get_id() == caller) options.progress("modes tested", i - begin, end - begin);
             const Mode& mode = out.modes.modes[i];
-            if (e.isZero()) {  // in every closed cone
+            if (exactly_zero(e)) {  // in every closed cone
                 part.members.push_back(i);
                 continue;
             }
@@ -235,13 +240,13 @@ SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions
                     std::array<Piece, 3> t;
                     bool named = true;
                     const auto corners = fan_triangle(applied, wrench);
-                    for (std::size_t k = 0; k < 3 && named; ++k) {
-                        const ExactVector& ray = applied.rays()[corners[k]];
+                    for (std::size_t corner = 0; corner < 3 && named; ++corner) {
+                        const ExactVector& ray = applied.rays()[corners[corner]];
                         const auto g = std::find_if(generators.begin(), generators.end(), [&](const ExactVector& v) {
                             return parallel(v, ray) && dot_sign(v, ray) == Sign::Positive;
                         });
                         named = g != generators.end();
-                        if (named) t[k] = pieces[static_cast<std::size_t>(g - generators.begin())];
+                        if (named) t[corner] = pieces[static_cast<std::size_t>(g - generators.begin())];
                     }
                     // Kept only when exactly checked: det(a, b, c) > 0 and w on the inner side of each face.
                     const auto in_triangle = [&] {

@@ -17,6 +17,8 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "checks.hpp"
+
 namespace momentlab {
 namespace {
 
@@ -207,13 +209,17 @@ private:
 
 }  // namespace
 
-ModeSet enumerate_modes(const std::vector<Contact>& contacts, const Progress& progress) {
+void detail::check_contacts(const std::vector<Contact>& contacts) {
     for (const Contact& c : contacts) {
         if (!c.point.allFinite() || !c.normal.allFinite() || (c.normal.x() == 0.0 && c.normal.y() == 0.0) ||
             !(c.mu >= 0.0) || !(c.mu_kinetic >= 0.0) || !std::isfinite(c.mu) || !std::isfinite(c.mu_kinetic)) {
             throw std::invalid_argument("enumerate_modes: every contact needs a finite point, a finite non-zero normal and finite mu, mu_kinetic >= 0 (Contact::make)");
         }
     }
+}
+
+ModeSet enumerate_modes(const std::vector<Contact>& contacts, const Progress& progress) {
+    detail::check_contacts(contacts);
     return Enumerator(contacts).run(progress);
 }
 

@@ -1,6 +1,7 @@
 // Per-mode force sets and queries: known answers, and agreement with an exact LP oracle.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -32,6 +33,13 @@ std::set<std::string> direct(const Scene& scene, const Vec3& e, bool quasi_stati
     std::set<std::string> out;
     for (std::size_t i : a.result.modes) out.insert(a.modes.modes[i].letters);
     EXPECT_EQ(a.result.verdict, verdict_of(out.size()));
+    // query_once gives the same modes, sorted, whichever path it took.
+    const OneShotAnswer once = query_once(scene, e, AnalysisOptions{quasi_static});
+    EXPECT_TRUE(std::is_sorted(once.letters.begin(), once.letters.end()));
+    EXPECT_EQ(std::set<std::string>(once.letters.begin(), once.letters.end()), out)
+        << "query_once (" << (once.filtered ? "filtered" : "exact") << ") wrench " << e.transpose();
+    EXPECT_EQ(once.letters.size(), out.size());
+    EXPECT_EQ(once.verdict, a.result.verdict);
     return out;
 }
 
@@ -379,6 +387,166 @@ TEST(Analysis, DirectQueryAgreesWithExactLpOnManyContacts) {
     EXPECT_LT(built, tested);  // the certificates decide some modes
     EXPECT_GE(wrenches, testing::sized(200));
     EXPECT_GE(members, testing::sized(400));
+}
+
+// query_once on scenes of 2 to 12 contacts: generic ones (random doubles), nearly degenerate ones
+// (every normal aimed at one point, then moved by about 1e-13, so that triples of N_j are within
+// rounding of dependent) and exactly degenerate ones (normals q - p exactly, all N_j in one
+// plane), dynamic and quasi-static; random wrenches and sums of contact generators (on the
+// boundaries of the sets). Every answer against the exact LP, mode by mode; e = 0 lists every
+// mode (the enumeration alone, against enumerate_modes). The certified doubles must decide the
+// generic questions and must not decide the exactly degenerate ones.
+TEST(Analysis, OneShotAgreesWithExactLp) {
+    testing::Random rnd(8086);
+    int questions = 0, failures = 0;
+    std::map<int, std::pair<int, int>> filtered;  // kind -> (filtered, questions)
+    for (int s = 0; s < testing::sized(72) && failures < 5; ++s) {
+        const int kind = s % 3;  // 0 generic, 1 nearly degenerate, 2 exactly degenerate
+        const bool quasi_static = s % 4 == 3;
+        const int n = 2 + (s / 3) % 11;
+        Scene scene;
+        scene.body = Body{rnd.uniform(0.5, 2), Vec2(rnd.uniform(-0.5, 0.5), rnd.uniform(0, 1)), rnd.uniform(0.1, 1), {}};
+        const Vec2 q(rnd.integer(-4, 4) * 0.25, rnd.integer(0, 4) * 0.25);
+        for (int j = 0; j < n; ++j) {
+            const double a = M_PI * (1.0 + rnd.unit());
+            const auto [mu, mk] = testing::random_mu(rnd);
+            if (kind == 2) {  // dyadic points and normals q - p, exactly
+                const Vec2 p(rnd.integer(-16, 16) * 0.125, rnd.integer(-16, 0) * 0.125 - 0.125);
+                scene.contacts.push_back(Contact::make(p, q - p, mu, mk));
+                continue;
+            }
+            const Vec2 p(1.2 * std::cos(a), 0.8 * std::sin(a));
+            Vec2 nrm = q - p;
+            if (kind == 0) nrm += Vec2(rnd.uniform(-0.4, 0.4), rnd.uniform(-0.4, 0.4));
+            if (kind == 1) nrm += Vec2(rnd.uniform(-1e-13, 1e-13), rnd.uniform(-1e-13, 1e-13));
+            scene.contacts.push_back(Contact::make(p, nrm, mu, mk));
+        }
+        const auto a = analyze(scene, AnalysisOptions{quasi_static});
+        // e = 0 is in every closed E: the answer is every mode.
+        std::vector<std::string> every;
+        for (const ModeForces& mf : a) every.push_back(mf.mode.letters);
+        std::sort(every.begin(), every.end());
+        EXPECT_EQ(query_once(scene, Vec3::Zero(), AnalysisOptions{quasi_static}).letters, every) << "scene " << s;
+        const testing::ExactContacts c(scene.contacts);
+        for (int w = 0; w < 10; ++w) {
+            reference::QVec e = reference::q(rnd.vec3(10.0));
+            if (w % 5 == 4) {  // a sum of generators of the contacts' sets: on boundaries
+                e = {0, 0, 0};
+                for (int j = 0; j < n; ++j) {
+                    for (const auto& g : c.raw[static_cast<std::size_t>(j)].generators("sfrl"[rnd.integer(0, 3)])) {
+                        e = reference::add(e, reference::scale(reference::Q(-rnd.integer(0, 1)), g));
+                    }
+                }
+            }
+            const Vec3 ed = reference::to_vec3(e);
+            if (reference::q(ed) != e) continue;  // not an exact double
+            std::vector<std::string> expected;
+            for (const ModeForces& mf : a) {
+                const bool in = quasi_static ? testing::exact_lp_quasi_static_in_mode(scene, mf.mode.letters, e)
+                                             : testing::exact_lp_applied_in_mode(scene, mf.mode.letters, e);
+                if (in) expected.push_back(mf.mode.letters);
+            }
+            std::sort(expected.begin(), expected.end());
+            const OneShotAnswer once = query_once(scene, ed, AnalysisOptions{quasi_static});
+            ++questions;
+            if (w % 5 != 4 && n >= 3) {
+                ++filtered[kind].second;
+                filtered[kind].first += once.filtered;
+            }
+            if (once.letters != expected || once.verdict != verdict_of(expected.size())) {
+                ++failures;
+                ADD_FAILURE() << "scene " << s << " (kind " << kind << ", " << n << " contacts, "
+                              << (once.filtered ? "filtered" : "exact") << ") wrench " << ed.transpose();
+            }
+        }
+    }
+    std::cout << "[Analysis] query_once: " << questions << " questions, " << failures << " disagreements; decided in certified doubles:";
+    for (const auto& [kind, f] : filtered) std::cout << " kind " << kind << " " << f.first << "/" << f.second;
+    std::cout << "\n";
+    EXPECT_EQ(failures, 0);
+    EXPECT_GE(questions, testing::sized(600));
+    EXPECT_GE(filtered[0].first * 10, filtered[0].second * 9);  // generic: at least 90% without the exact path
+    EXPECT_EQ(filtered[2].first, 0);                             // exactly degenerate: never
+}
+
+// query_once on scaled copies of generic scenes: lengths by 2^k (points, com; inertia by 2^2k;
+// torques by 2^k) and forces and mass by 2^j, exact in doubles, leave every mode's letters and
+// E (up to diag(1, 1, 2^k)) as they were. The answers stay those of the unscaled scene's exact
+// analysis at every scale, the certified doubles decide at moderate scales, and where products
+// overflow or underflow the bounds send the question to the exact path.
+TEST(Analysis, OneShotAtExtremeMagnitudes) {
+    testing::Random rnd(1955);
+    int questions = 0, filtered = 0, moderate = 0;
+    for (int s = 0; s < testing::sized(24); ++s) {
+        Scene scene;
+        scene.body = Body{rnd.uniform(0.5, 2), Vec2(rnd.uniform(-0.5, 0.5), rnd.uniform(0, 1)), rnd.uniform(0.1, 1), {}};
+        const int n = 2 + s % 5;
+        for (int j = 0; j < n; ++j) {
+            const double a = M_PI * (1.0 + rnd.unit());
+            const Vec2 p(1.2 * std::cos(a), 0.8 * std::sin(a));
+            scene.contacts.push_back(Contact::make(p, -p + Vec2(rnd.uniform(-0.4, 0.4), rnd.uniform(-0.4, 0.4)), rnd.uniform(0.1, 1)));
+        }
+        const auto a = analyze(scene);
+        for (int w = 0; w < 6; ++w) {
+            const Vec3 e = rnd.vec3(10.0);
+            const auto base = answer(a, e);
+            for (int k : {-200, -60, 0, 60, 200}) {
+                for (int f : {-400, 0, 400}) {  // the inertia (2^(f+2k)) stays a normal double
+                    const double len = std::ldexp(1.0, k), force = std::ldexp(1.0, f);
+                    Scene t = scene;
+                    t.body->mass *= force;
+                    t.body->com *= len;
+                    t.body->inertia *= force * len * len;
+                    for (Contact& c : t.contacts) c.point *= len;
+                    const OneShotAnswer once = query_once(t, Vec3(force * e.x(), force * e.y(), force * len * e.z()));
+                    EXPECT_EQ(std::set<std::string>(once.letters.begin(), once.letters.end()), base)
+                        << "scene " << s << " lengths 2^" << k << " forces 2^" << f << " wrench " << e.transpose();
+                    ++questions;
+                    filtered += once.filtered;
+                    if (std::abs(k) <= 60 && f == 0) moderate += !once.filtered;
+                }
+            }
+        }
+    }
+    std::cout << "[Analysis] query_once at extreme magnitudes: " << questions << " questions, " << filtered
+              << " decided in certified doubles\n";
+    EXPECT_EQ(moderate, 0);  // lengths within 2^+-60 of the unit: never the exact path
+    EXPECT_LT(filtered, questions);  // the extremes reach the exact path
+}
+
+// Every E_i is a cone, so scaling the wrench by any positive number leaves the answer as it is;
+// a tiny wrench is not the zero wrench (which is in every mode's set). Down to the smallest
+// subnormal, through the per-mode query, the direct path, query_once and QueryIndex. (Eigen's
+// isZero() took coordinates below 1e-12 for zero: (1e-13, 0, 0) gave every mode.)
+TEST(Analysis, TinyWrenchesAreNotZero) {
+    testing::Random rnd(1013);
+    for (int s = 0; s < 6; ++s) {
+        Scene scene;
+        scene.body = Body{rnd.uniform(0.5, 2), Vec2(rnd.uniform(-0.5, 0.5), rnd.uniform(0, 1)), rnd.uniform(0.1, 1), {}};
+        for (int j = 0; j < 2 + s % 3; ++j) {
+            const double a = M_PI * (1.0 + rnd.unit());
+            const Vec2 p(std::cos(a), std::sin(a));
+            scene.contacts.push_back(Contact::make(p, -p + Vec2(rnd.uniform(-0.3, 0.3), rnd.uniform(-0.3, 0.3)), 0.4));
+        }
+        const auto a = analyze(scene);
+        const QueryIndex index(a);
+        for (int w = 0; w < 8; ++w) {
+            Vec3 e = Vec3::Zero();
+            e[w % 3] = w % 2 ? 1.0 : -1.0;  // on one axis, so the tiny copies are exact
+            if (w >= 6) e = Vec3(1.0, -0.5, 0.25);
+            const auto base = answer(a, e);
+            ASSERT_LT(base.size(), a.size()) << "scene " << s;  // not every mode: the test can fail
+            for (double scale : {1e-13, 1e-300, 0x1p-1072, 0x1p-1074, 1e300}) {
+                const Vec3 t = scale * e;
+                if (t / scale != e) continue;  // rounded (subnormal): not a scaled copy
+                EXPECT_EQ(answer(a, t), base) << "scene " << s << " scale " << scale;
+                EXPECT_EQ(direct(scene, t), base) << "scene " << s << " scale " << scale;
+                std::set<std::string> indexed;
+                for (std::size_t i : index.query(t).modes) indexed.insert(a[i].mode.letters);
+                EXPECT_EQ(indexed, base) << "scene " << s << " scale " << scale;
+            }
+        }
+    }
 }
 
 // Scenes large enough (modes x contacts >= 2000) that analyze and query_scene share their modes

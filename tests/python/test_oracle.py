@@ -105,3 +105,28 @@ def test_quasi_static_agrees_with_the_oracle_without_inertia(seed):
         assert {m for m, hit in zip(a.modes, batch[k]) if hit} == want
     for sets in a:
         assert sets.total.is_zero and sets.applied == -sets.contact
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_query_once_agrees_with_the_oracle(seed):
+    # One question about a scene not analysed (2 to 6 contacts: the certified doubles, or the
+    # exact path on degenerate scenes and boundary wrenches): the oracle's modes, sorted.
+    rng = random.Random(3000 + seed)
+    doc = oracle.random_scene(rng, 2 + seed % 5)
+    exact, scene = oracle.exact_scene(doc), scene_of(doc)
+    wrenches = [oracle.random_wrench(rng) for _ in range(6)] + oracle.boundary_wrenches(exact, rng, 6)
+    for w in wrenches:
+        want = oracle.query(exact, w)
+        got = ml.query_once(scene, w)
+        assert got["modes"] == sorted(want), (doc, w, got["filtered"])
+        assert got["verdict"] == oracle.verdict(len(want))
+        assert isinstance(got["filtered"], bool)
+
+
+def test_query_once_names_what_is_missing():
+    doc = oracle.random_scene(random.Random(7), 3)
+    del doc["body"]
+    with pytest.raises(ValueError, match="query_once"):
+        ml.query_once(scene_of(doc), [0.0, -1.0, 0.0])
+    with pytest.raises(ValueError, match="wrench"):
+        ml.query_once(scene_of(oracle.random_scene(random.Random(7), 3)), [0.0, float("nan"), 0.0])

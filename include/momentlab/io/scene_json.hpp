@@ -38,6 +38,10 @@ namespace momentlab {
 [[nodiscard]] SceneAnswer query_input(const Scene& scene, const Vec3& e, const std::string& command,
                                       const AnalysisOptions& options = {});
 
+/// query_once for a scene a user gave, with the same message as analyze_input.
+[[nodiscard]] OneShotAnswer query_once_input(const Scene& scene, const Vec3& e, const std::string& command,
+                                             const AnalysisOptions& options = {});
+
 /// The mode a user named by its letters; an unknown mode is an InputError at `where` that lists
 /// the scene's modes.
 [[nodiscard]] const ModeForces& find_mode(const std::vector<ModeForces>& analysis, const std::string& letters,

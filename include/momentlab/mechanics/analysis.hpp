@@ -85,4 +85,23 @@ struct SceneAnswer {
 /// Throws as analyze does, and std::invalid_argument for a non-finite wrench.
 [[nodiscard]] SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions& options = {});
 
+/// The answer to one question about a new scene: the letters of the modes e produces.
+struct OneShotAnswer {
+    std::vector<std::string> letters;  ///< sorted; the same modes as query_scene's
+    Verdict verdict = Verdict::Inconsistent;
+    /// True when double arithmetic with certified error bounds decided every sign; false when
+    /// the scene took the exact path (query_scene).
+    bool filtered = false;
+};
+
+/// The modes query_scene(scene, e, options) gives, by their letters, for a scene asked once. For
+/// 2 to 12 contacts the modes and their sets E are found in double arithmetic that carries a
+/// forward error bound with every number, as long as every sign it meets is certified by its bound
+/// (the scene is generic: no three contact wrenches N_j dependent, no sliding direction
+/// exactly zero on a ray of A, e on no boundary); otherwise, and for other sizes, the exact path
+/// query_scene answers. Either way the answer is exact (docs/robustness.md, "One question about a
+/// new scene"). O(n^3 + M k^3) for n contacts, M modes and at most k generators per E.
+/// Throws as query_scene does (naming query_once).
+[[nodiscard]] OneShotAnswer query_once(const Scene& scene, const Vec3& e, const AnalysisOptions& options = {});
+
 }  // namespace momentlab
