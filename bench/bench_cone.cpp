@@ -1,4 +1,4 @@
-// bench_cone: the cone of n generators, n = 10^2 .. 10^6, three families, beside cddlib
+// bench_cone: the cone of n generators, n = 4 .. 10^6, three families, beside cddlib
 // (floating point and GMP, where they finish within about a minute) and a plain 2-D
 // monotone-chain hull of the same n points (the generators seen in the chart z = 1).
 // Run `make bench`; the ratios are printed after the Google Benchmark table.
@@ -161,6 +161,7 @@ void BM_cdd(benchmark::State& state) {
 
 void sizes(benchmark::internal::Benchmark* b, std::int64_t max_n) {
     for (int f = 0; f < 3; ++f) {
+        for (std::int64_t n : {4, 10, 30}) b->Args({f, n});  // small cones: the fixed cost
         for (std::int64_t n = 100; n <= max_n; n *= 10) b->Args({f, n});
     }
     b->Unit(benchmark::kMillisecond);
@@ -214,19 +215,19 @@ public:
             const Row* cg = get("BM_cdd_gmp");
             char cf_ms[32] = "-", cf_r[32] = "-", cg_ms[32] = "-", cg_r[32] = "-", cf_n[32] = "-";
             if (cf) {
-                std::snprintf(cf_ms, sizeof cf_ms, "%.3f", cf->ms);
+                std::snprintf(cf_ms, sizeof cf_ms, "%.4g", cf->ms);
                 std::snprintf(cf_r, sizeof cf_r, "%.1f", cf->ms / hull);
                 std::snprintf(cf_n, sizeof cf_n, "%.0f", cf->facets);
             }
             if (cg) {
-                std::snprintf(cg_ms, sizeof cg_ms, "%.3f", cg->ms);
+                std::snprintf(cg_ms, sizeof cg_ms, "%.4g", cg->ms);
                 std::snprintf(cg_r, sizeof cg_r, "%.1f", cg->ms / hull);
             }
             // Known counts for the constructed families; for random generators the 2-D hull's
             // count (the same problem in the chart z = 1).
             auto expected = expected_facets(static_cast<Family>(key.first), key.second);
             if (expected < 0) expected = static_cast<std::int64_t>(rows.at("BM_hull2d").at(key).facets);
-            std::printf("%-28s %8lld %11.3f %11.3f %9.2f %11s %9s %11s %9s  %.0f / %s / %s\n",
+            std::printf("%-28s %8lld %11.4g %11.4g %9.2f %11s %9s %11s %9s  %.0f / %s / %s\n",
                         kFamilyNames[key.first], static_cast<long long>(key.second), hull, row.ms,
                         row.ms / hull, cf_ms, cf_r, cg_ms, cg_r, row.facets, cf_n,
                         std::to_string(expected).c_str());

@@ -259,8 +259,8 @@ class Analysis:
     def __init__(self, scene: Scene, quasi_static: bool = False):
         if not isinstance(scene, Scene):
             raise ValueError("analyze: expected a momentlab.Scene")
-        self._analysis = _momentlab._Analysis(scene._scene, bool(quasi_static))
-        self.quasi_static = bool(quasi_static)
+        self.quasi_static = _flag(quasi_static, "quasi_static")
+        self._analysis = _momentlab._Analysis(scene._scene, self.quasi_static)
         self.scene = scene
         self._modes = tuple(self._analysis.modes)
 
@@ -324,6 +324,16 @@ class Analysis:
         return f"<Analysis: {len(self.modes)} modes>"
 
 
+def _flag(value, what) -> bool:
+    # True or False (also numpy's, and the integers 0 and 1); a string such as "false" is refused
+    # rather than read as true.
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, (int, np.integer)) and value in (0, 1):
+        return bool(value)
+    raise ValueError(f"{what}: expected True or False, got {value!r}")
+
+
 def _wrenches(w) -> np.ndarray:
     a = _real(w, "wrench")
     if not (a.shape == (3,) or (a.ndim == 2 and a.shape[1] == 3)):
@@ -350,7 +360,7 @@ def query_once(scene: Scene, w, quasi_static: bool = False) -> dict:
     analyze(scene, quasi_static).query(w)."""
     if not isinstance(scene, Scene):
         raise ValueError("query_once: expected a momentlab.Scene")
-    return _momentlab.query_once(scene._scene, w, quasi_static)
+    return _momentlab.query_once(scene._scene, w, _flag(quasi_static, "quasi_static"))
 
 
 def closure(scene: Scene, reference=None, length=None) -> dict:

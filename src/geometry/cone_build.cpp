@@ -234,7 +234,7 @@ Parts build_planar(std::span<const G> g, const G& a, const G& b) {
     // sign of (u x v)[axis]: the same sense, so the keys increase with the exact order.
     const int ci = (ord.axis + 1) % 3, cj = (ord.axis + 2) % 3;
     for (std::size_t i = 0; i < g.size(); ++i) {
-        const int half = ord.half(g[i]);
+        const int half = &g[i] == &a ? 0 : ord.half(g[i]);  // a itself: along a, no exact zero test
         const Vec3 &x = approx(a), &y = approx(g[i]);
         const double along = x[ci] * y[ci] + x[cj] * y[cj];
         const double across = x[ci] * y[cj] - x[cj] * y[ci];
@@ -319,6 +319,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     bool antiparallel = false;
     int reference = -1;
     for (std::size_t i = 0; i < g.size(); ++i) {
+        if (i == pivot) continue;  // p itself: parallel, and the test would take the exact path
         if (parallel(p, g[i])) {
             if (dot_sign(p, g[i]) == Sign::Negative) antiparallel = true;
             continue;
@@ -342,7 +343,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     const Vec3 e1 = (approx(r) - approx(r).dot(ph) * ph).normalized();
     const Vec3 e2 = ph.cross(e1);
     for (Item<G>& it : items) {
-        it.half = ord.half(it.v);
+        it.half = it.index == reference ? 0 : ord.half(it.v);  // r itself: along r, no det(p, r, r)
         const Vec3& u = approx(it.v);
         it.key = pseudo_angle(u.dot(e1), u.dot(e2), it.half);
     }
@@ -428,6 +429,8 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     std::vector<int> hull;
     hull.reserve(stack.size());
     for (std::int64_t k : stack) hull.push_back(k < 0 ? static_cast<int>(pivot) : items[static_cast<std::size_t>(k)].index);
+    // The cycle starts at the extreme generator given first, whichever pivot found it.
+    std::rotate(hull.begin(), std::min_element(hull.begin(), hull.end()), hull.end());
     out.parts = pointed_from_cycle(g, hull);
     return out;
 }
@@ -579,7 +582,9 @@ template <class G>
 Parts build_spatial(std::span<const G> g, std::size_t ia, std::size_t ib, std::size_t ic) {
     // At most three analyses: a face retry always ends in a decided case; an interior pivot
     // gets one more guess, the generator most opposite to it.
-    std::size_t pivot = g.size() > 64 ? guess_extreme(g) : ia;
+    // The generator farthest from the mean direction: extreme unless the cone is not pointed (an
+    // arbitrary first pivot, interior to a pointed cone, costs a second analysis or the clip).
+    std::size_t pivot = g.size() > 3 ? guess_extreme(g) : ia;
     bool second_guess = false;
     for (int attempt = 0; attempt < 3; ++attempt) {
         if (attempt > 0) ++ConeBuilder::stats().retries;

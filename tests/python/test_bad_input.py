@@ -262,3 +262,15 @@ def test_found_contacts_round_trip_with_their_distance():
     again = ml.Scene.from_json(s.to_json())
     assert json.loads(again.to_json()) == json.loads(s.to_json())
     assert json.loads(s.to_json())["contact_distance"] == 0.1
+
+
+@pytest.mark.parametrize("flag", ["yes", "false", [1], 2.5, 2, None])
+def test_quasi_static_is_true_or_false(flag):
+    # A string such as "false" is refused, not read as true (found by the review of query_once).
+    scene = ml.Scene.from_file(str(BLOCK))
+    with pytest.raises(ValueError, match="quasi_static: expected True or False"):
+        ml.analyze(scene, quasi_static=flag)
+    with pytest.raises(ValueError, match="quasi_static: expected True or False"):
+        ml.query_once(scene, [0.0, -1.0, 0.0], quasi_static=flag)
+    for ok in (True, False, np.bool_(True), 0, 1):
+        assert ml.analyze(scene, quasi_static=ok).quasi_static == bool(ok)
