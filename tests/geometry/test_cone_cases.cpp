@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
 
 #include "momentlab/geometry/cone.hpp"
 
@@ -180,6 +183,56 @@ TEST(Cone, FromHalfspaces) {
     EXPECT_TRUE(c == gen({X, Y, Z}));
     EXPECT_TRUE(Cone::from_halfspaces(std::vector<Vec3>{}) == Cone::whole_space());
     EXPECT_TRUE(Cone::from_halfspaces(std::vector<Vec3>{X, -X}) == gen({Y, -Y, Z, -Z}));
+}
+
+
+// The documented order of a full-dimensional pointed cone: rays counter-clockwise; built from
+// generators, facet i holds rays i and i+1 and the cycle starts at the extreme generator given
+// first; built from half-spaces, facet i holds rays i-1 and i. The extreme generators come from
+// a brute force on the core's exact determinant signs: g_j is extreme when some plane through
+// g_j and g_k has every other generator strictly on one side (generic random doubles).
+TEST(Cone, CyclicOrderOfPointedCones) {
+    std::mt19937_64 rng(2027);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int trial = 0; trial < 300; ++trial) {
+        const int n = 3 + trial % 40;
+        std::vector<Vec3> g;
+        for (int i = 0; i < n; ++i) g.emplace_back(u(rng), u(rng), 0.1 + std::abs(u(rng)));
+        std::set<int> extreme;
+        for (int j = 0; j < n; ++j) {
+            for (int k = 0; k < n && !extreme.count(j); ++k) {
+                if (k == j) continue;
+                int plus = 0, minus = 0;
+                for (int l = 0; l < n; ++l) {
+                    if (l == j || l == k) continue;
+                    const Sign s = det_sign(g[static_cast<std::size_t>(j)], g[static_cast<std::size_t>(k)],
+                                            g[static_cast<std::size_t>(l)]);
+                    plus += s == Sign::Positive;
+                    minus += s == Sign::Negative;
+                }
+                if (plus == n - 2 || minus == n - 2) extreme.insert(j);
+            }
+        }
+        for (int side = 0; side < 2; ++side) {
+            const Cone c = side == 0 ? Cone::from_generators(g) : Cone::from_halfspaces(g);
+            const std::size_t k = c.rays().size();
+            ASSERT_EQ(c.kind(), "pointed cone") << "trial " << trial;
+            ASSERT_EQ(c.facets().size(), k);
+            if (side == 0) {
+                ASSERT_EQ(k, extreme.size()) << "trial " << trial;
+                EXPECT_EQ(c.rays()[0].value(), g[static_cast<std::size_t>(*extreme.begin())]) << "trial " << trial;
+            }
+            for (std::size_t i = 0; i < k; ++i) {
+                EXPECT_EQ(det_sign(c.rays()[i], c.rays()[(i + 1) % k], c.rays()[(i + 2) % k]), Sign::Positive)
+                    << "trial " << trial << " side " << side;
+                const std::size_t a = side == 0 ? i : (i + k - 1) % k, b = side == 0 ? (i + 1) % k : i;
+                const auto row = c.facet_rays().row(i);
+                ASSERT_EQ(row.size(), 2u);
+                EXPECT_EQ(std::set<int>(row.begin(), row.end()), (std::set<int>{static_cast<int>(a), static_cast<int>(b)}))
+                    << "trial " << trial << " side " << side << " facet " << i;
+            }
+        }
+    }
 }
 
 }  // namespace

@@ -71,7 +71,9 @@ struct Membership {
 /// V-representation: C = cone(rays) + span(lineality); H-representation:
 /// C = {x : f . x >= 0 for f in facets, e . x = 0 for e in equations}. Both are minimal.
 /// For a full-dimensional pointed cone the rays are in counter-clockwise cyclic order
-/// (det(r_i, r_i+1, r_i+2) > 0) and facet i lies between ray i and ray i+1.
+/// (det(r_i, r_i+1, r_i+2) > 0) and each facet holds two consecutive rays (`facet_rays()`):
+/// facet i lies between ray i and ray i+1 for a cone built from generators, between ray i-1 and
+/// ray i for one built from half-spaces (the dual of a cone built from generators).
 /// Every decision (which generator is extreme, membership, equality) is exact for the exact
 /// generators or half-spaces given (stored doubles or exact constructions, core/exact.hpp);
 /// only the printed values are rounded (docs/robustness.md).
