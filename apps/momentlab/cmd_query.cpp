@@ -25,7 +25,7 @@ struct QueryOptions {
 int run_push_line(const QueryOptions& o, const Problem& p) {
     if (!o.wrenches.empty()) throw InputError("--push", "give --push with one question, not --wrenches");
     const std::vector<Vec2> at = checked_points(o.push, "--push", 2);
-    if (exactly_zero(at[1])) throw InputError("--push", "the direction DX DY must not be zero");
+    if (is_zero(at[1])) throw InputError("--push", "the direction DX DY must not be zero");
     const std::optional<Exact3> fixed = fixed_wrench(p.scene, o.gravity, o.wrench);
     const Exact3 g = fixed ? *fixed : Exact3{};
     const std::vector<MagnitudeBand> bands = magnitude_bands(p.analysis, g, wrench_through(exact(at[0]), exact(at[1])));

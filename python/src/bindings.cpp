@@ -492,7 +492,7 @@ PYBIND11_MODULE(_momentlab, m) {
                 const py::handle& wrench) {
                  const Vec2 p = vector_of<2>(point, "point");
                  const Vec2 d = vector_of<2>(direction, "direction");
-                 if (exactly_zero(d)) throw InputError("direction", "must not be zero");
+                 if (is_zero(d)) throw InputError("direction", "must not be zero");
                  const PlanContext context = context_of(a, gravity, wrench);
                  const Exact3 fixed = context.fixed ? *context.fixed : Exact3{};
                  return python_of(to_json(magnitude_bands(a.modes, fixed, wrench_through(exact(p), exact(d))), a.modes));

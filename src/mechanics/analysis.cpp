@@ -167,7 +167,7 @@ SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions
         for (std::size_t i = begin; i < end; ++i) {
             if (options.progress && std::this_thread::get_id() == caller) options.progress("modes tested", i - begin, end - begin);
             const Mode& mode = out.modes.modes[i];
-            if (exactly_zero(e)) {  // in every closed cone
+            if (is_zero(e)) {  // in every closed cone
                 part.members.push_back(i);
                 continue;
             }

@@ -227,7 +227,7 @@ public:
     std::vector<std::string> holding(const Vec3& e) const {
         std::vector<std::string> out;
         const A3 w = input(e.x(), e.y(), e.z());
-        const bool zero = exactly_zero(e);
+        const bool zero = is_zero(e);
         std::vector<A3> images;
         if (dynamic_) {
             for (const A3& t : twists_) images.push_back({dot(inertia_[0], t), dot(inertia_[1], t), dot(inertia_[2], t)});

@@ -132,7 +132,7 @@ Cone edge_actions(const Vec2& a, const Vec2& b, const Exact2& normal, ContactMod
 Cone push_actions(const Vec2& a, const Vec2& b, const Vec2& normal, ContactMode slip, double mu) {
     if (slip == ContactMode::Separating) throw std::invalid_argument("push_actions: slip must be l, f or r");
     if (!(mu >= 0.0) || !std::isfinite(mu)) throw std::invalid_argument("push_actions: mu must be finite and >= 0");
-    if (!normal.allFinite() || exactly_zero(normal)) throw std::invalid_argument("push_actions: the normal must be non-zero");
+    if (!normal.allFinite() || is_zero(normal)) throw std::invalid_argument("push_actions: the normal must be non-zero");
     return edge_actions(a, b, exact(normal), slip, mu);
 }
 

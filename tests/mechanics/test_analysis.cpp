@@ -23,6 +23,18 @@ std::set<std::string> answer(const std::vector<ModeForces>& a, const Vec3& e) {
     return out;
 }
 
+// e minus a random 0/1 combination of the generators of every stride-th contact's set for a
+// random letter: with e = 0, a wrench on the boundaries between modes.
+reference::QVec minus_contact_generators(reference::QVec e, const testing::ExactContacts& c, int n, testing::Random& rnd,
+                                         int stride = 1) {
+    for (int j = 0; j < n; j += stride) {
+        for (const auto& g : c.raw[static_cast<std::size_t>(j)].generators("sfrl"[rnd.integer(0, 3)])) {
+            e = reference::add(e, reference::scale(reference::Q(-rnd.integer(0, 1)), g));
+        }
+    }
+    return e;
+}
+
 // The modes query_scene (the direct path) says e produces.
 std::set<std::string> direct(const Scene& scene, const Vec3& e, bool quasi_static = false, std::size_t* built = nullptr,
                              std::size_t* modes = nullptr) {
@@ -361,11 +373,7 @@ TEST(Analysis, DirectQueryAgreesWithExactLpOnManyContacts) {
             } else {
                 e = reference::mul(m, reference::cross(c.n[0], c.t[static_cast<std::size_t>(rnd.integer(0, n - 1))]));
                 if (rnd.integer(0, 1)) e = reference::neg(e);
-                for (int j = 0; j < n; ++j) {
-                    for (const auto& g : c.raw[static_cast<std::size_t>(j)].generators("sfrl"[rnd.integer(0, 3)])) {
-                        e = reference::add(e, reference::scale(reference::Q(-rnd.integer(0, 1)), g));
-                    }
-                }
+                e = minus_contact_generators(e, c, n, rnd);
             }
             const Vec3 ed = reference::to_vec3(e);
             if (reference::q(ed) != e) continue;  // not an exact double
@@ -431,12 +439,7 @@ TEST(Analysis, OneShotAgreesWithExactLp) {
         for (int w = 0; w < 10; ++w) {
             reference::QVec e = reference::q(rnd.vec3(10.0));
             if (w % 5 == 4) {  // a sum of generators of the contacts' sets: on boundaries
-                e = {0, 0, 0};
-                for (int j = 0; j < n; ++j) {
-                    for (const auto& g : c.raw[static_cast<std::size_t>(j)].generators("sfrl"[rnd.integer(0, 3)])) {
-                        e = reference::add(e, reference::scale(reference::Q(-rnd.integer(0, 1)), g));
-                    }
-                }
+                e = minus_contact_generators({0, 0, 0}, c, n, rnd);
             }
             const Vec3 ed = reference::to_vec3(e);
             if (reference::q(ed) != e) continue;  // not an exact double
@@ -567,12 +570,7 @@ TEST(Analysis, LargeScenesOnTwoThreadsAgreeWithExactLp) {
         ASSERT_GE(a.size() * scene.contacts.size(), 2000u) << "scene " << s << " is not large";
         const testing::ExactContacts c(scene.contacts);
         for (int w = 0; w < 2; ++w) {
-            reference::QVec e{0, 0, 0};
-            for (int j = 0; j < n; j += 5) {
-                for (const auto& g : c.raw[static_cast<std::size_t>(j)].generators("sfrl"[rnd.integer(0, 3)])) {
-                    e = reference::add(e, reference::scale(reference::Q(-rnd.integer(0, 1)), g));
-                }
-            }
+            const reference::QVec e = minus_contact_generators({0, 0, 0}, c, n, rnd, 5);
             const Vec3 ed = reference::to_vec3(e);
             ASSERT_EQ(reference::q(ed), e);
             std::set<std::string> expected;

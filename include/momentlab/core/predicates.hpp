@@ -98,10 +98,12 @@ struct DetTerms {
            minor_sign(a, b, 0, 1) == Sign::Zero;
 }
 
-/// True when every coordinate of v is exactly zero.
+/// True when every coordinate of v is exactly zero. (Eigen's isZero() is true for coordinates up
+/// to 1e-12 in magnitude: never use it for a decision.)
 [[nodiscard]] inline bool is_zero(const Vec3& v) {
     return v.x() == 0.0 && v.y() == 0.0 && v.z() == 0.0;
 }
+[[nodiscard]] inline bool is_zero(const Vec2& v) { return v.x() == 0.0 && v.y() == 0.0; }
 
 /// Counters of the calls the floating-point filter could not decide (per thread).
 struct PredicateStats {

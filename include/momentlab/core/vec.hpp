@@ -21,13 +21,6 @@ inline double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y(
 /// Rounds the torque (one cross product); exact when the products are representable.
 inline Vec3 wrench_at(const Vec2& p, const Vec2& f) { return Vec3(f.x(), f.y(), cross2(p, f)); }
 
-/// True when every coordinate is exactly zero. (Eigen's isZero() is true for coordinates up to
-/// 1e-12 in magnitude: never use it for a decision.)
-template <typename V>
-[[nodiscard]] bool exactly_zero(const V& v) {
-    return (v.array() == 0.0).all();
-}
-
 /// True when every coordinate is finite (neither NaN nor infinite).
 inline bool all_finite(const Vec3& v) { return v.allFinite(); }
 
