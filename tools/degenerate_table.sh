@@ -47,6 +47,7 @@ row() {  # label, then the command; prints time, peak memory and the size of the
     case $count in
         analyze) modes=$(grep -c '"mode":' "$out") ;;
         modes) modes=$(( $(tr -cd ',' < "$out" | wc -c) + 1 )) ;;  # {"modes": ["...", ...]}
+        query) modes=$(grep -o '"[srlf]*"' "$out" | wc -l) ;;  # the answer's modes (query --json)
         *) modes=- ;;
     esac
     [[ $modes == - ]] && letters=- || letters=$(( modes * contacts ))
@@ -62,12 +63,19 @@ for f in collinear cradle tangent; do
         contacts=$n count=modes row "$f, $n contacts, modes --json" "$bin" modes "$dir/${f}_$n.json" --json
     done
 done
+# One query: `modes` and `letters` are the answer's (the modes the wrench gives).
 for f in bowl bowl-exact; do
-    contacts=100000 count=none row "$f, 10^5 contacts, one query" "$bin" query "$dir/${f}_100000.json" --wrench 0.1 1 0.2
+    contacts=100000 count=query row "$f, 10^5 contacts, one query" "$bin" query "$dir/${f}_100000.json" --wrench 0.1 1 0.2 --json
 done
-for n in 3000 10000; do
+for f in cradle tangent; do
+    for n in 10000 100000; do
+        need $f $n
+        contacts=$n count=query row "$f, $n contacts, one query" "$bin" query "$dir/${f}_$n.json" --wrench 0.1 1 0.2 --json
+    done
+done
+for n in 1000 3000 10000; do
     need collinear $n
-    contacts=$n count=none row "collinear, $n contacts, one query" "$bin" query "$dir/collinear_$n.json" --wrench 0.1 1 0.2
+    contacts=$n count=query row "collinear, $n contacts, one query" "$bin" query "$dir/collinear_$n.json" --wrench 0.1 1 0.2 --json
 done
 for n in 10000 30000 1000000; do
     polygon_scene $n

@@ -106,13 +106,13 @@ int answer_one(const QueryOptions& o) {
     progress.finish();
     if (o.json) {
         nlohmann::json modes = nlohmann::json::array();
-        for (std::size_t i : a.result.modes) modes.push_back(a.modes.modes[i].letters);
+        for (const Mode& mode : a.modes) modes.push_back(mode.letters);
         std::cout << nlohmann::json{{"modes", modes}, {"verdict", to_string(a.result.verdict)}}.dump() << "\n";
         return 0;
     }
     std::cout << "verdict: " << to_string(a.result.verdict) << "\n";
-    for (std::size_t i : a.result.modes) {
-        const std::string& letters = a.modes.modes[i].letters;
+    for (const Mode& mode : a.modes) {
+        const std::string& letters = mode.letters;
         std::cout << "  " << letters << "  " << describe_mode(scene, letters) << "\n";
     }
     return 0;

@@ -220,16 +220,11 @@ std::vector<Face> Cone::faces() const {
         const auto row = facet_rays_.row(j);
         out.push_back(Face{d - 1, std::vector<int>(row.begin(), row.end()), {static_cast<int>(j)}});
     }
-    if (d - l == 3) {
+    if (d - l == 3) {  // the rays of a pointed cone, each with the facets through it (increasing)
+        const Incidence through = facet_rays_.transposed(rays_.size());
         for (std::size_t i = 0; i < rays_.size(); ++i) {
-            Face f{1, {static_cast<int>(i)}, {}};
-            for (std::size_t j = 0; j < facets_.size(); ++j) {
-                const auto fr = facet_rays_.row(j);
-                if (std::find(fr.begin(), fr.end(), static_cast<int>(i)) != fr.end()) {
-                    f.facets.push_back(static_cast<int>(j));
-                }
-            }
-            out.push_back(f);
+            const auto row = through.row(i);
+            out.push_back(Face{1, {static_cast<int>(i)}, std::vector<int>(row.begin(), row.end())});
         }
     }
     if (d - l >= 2) {

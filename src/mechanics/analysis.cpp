@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cassert>
 #include <cmath>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -15,6 +16,7 @@
 #include "momentlab/core/parallel.hpp"
 #include "momentlab/geometry/force_sets.hpp"
 #include "checks.hpp"
+#include "mode_walk.hpp"
 
 namespace momentlab {
 
@@ -38,16 +40,26 @@ std::optional<ExactMatrix> inertia_of(const Scene& scene, const AnalysisOptions&
     return inertia_at_origin(*scene.body);
 }
 
+// From this many contacts the friction edges are built in two halves, and query_scene decides
+// the all-f mode beside the walk, on two threads (a thread costs tens of microseconds, a
+// contact's edges a few).
+constexpr std::size_t kTwoThreadContacts = 20;
+
 // Each contact's friction edges, built once for all the modes (exact constructions; copies
 // share them): the static cone's two edges, and the kinetic ones n + mu_k t, n - mu_k t.
 struct FrictionEdges {
     std::vector<std::array<ExactVector, 2>> statics, kinetics;
 
-    explicit FrictionEdges(const std::vector<Contact>& contacts) {
-        for (const Contact& c : contacts) {
-            statics.push_back(friction_cone_edges(c.point, c.normal, c.mu));
-            kinetics.push_back(c.mu_kinetic == c.mu ? statics.back() : friction_cone_edges(c.point, c.normal, c.mu_kinetic));
-        }
+    explicit FrictionEdges(const std::vector<Contact>& contacts) : statics(contacts.size()), kinetics(contacts.size()) {
+        // Exact constructions, a few microseconds each: two halves on two threads for large scenes.
+        const std::size_t n = contacts.size();
+        detail::for_each_index(2, n >= kTwoThreadContacts, [&](std::size_t half) {
+            for (std::size_t j = n * half / 2; j < n * (half + 1) / 2; ++j) {
+                const Contact& c = contacts[j];
+                statics[j] = friction_cone_edges(c.point, c.normal, c.mu);
+                kinetics[j] = c.mu_kinetic == c.mu ? statics[j] : friction_cone_edges(c.point, c.normal, c.mu_kinetic);
+            }
+        });
     }
 
     // Calls f(edge) for each generator of the contact cone T of a mode: both static edges of an
@@ -100,7 +112,7 @@ namespace {
 struct Piece {
     int contact = -1;
     int slot = 0;
-    ExactVector twist;
+    Exact3 twist{};
 };
 
 // The slot of contact j's edge in a mode with letter `letter` ('r' or 'l'); the kinetic edges
@@ -108,14 +120,6 @@ struct Piece {
 int sliding_slot(const Contact& c, char letter) {
     const int side = letter == 'r' ? 1 : 0;
     return c.mu_kinetic == c.mu ? side : side + 2;
-}
-
-bool has_piece(const Scene& scene, const Mode& mode, const Piece& p) {
-    if (p.contact < 0) return mode.twists.has(p.twist);
-    const auto j = static_cast<std::size_t>(p.contact);
-    const char letter = mode.letters[j];
-    if (letter == 'f') return p.slot < 2;
-    return (letter == 'r' || letter == 'l') && p.slot == sliding_slot(scene.contacts[j], letter);
 }
 
 // Three generators of the full-dimensional pointed cone c whose cone holds w (a fan from ray 0;
@@ -128,150 +132,254 @@ std::array<std::size_t, 3> fan_triangle(const Cone& c, const ExactVector& w) {
     return {0, 1, r.size() - 1};
 }
 
+// Decides, cell after cell of the walk (mode_walk.hpp), whether e lies in the cell's
+// E = M cl(cell) + (-T), with certificates kept from the cells before:
+//  - the current plane h (h . e < 0) that held every generator of the previous cell's E: along
+//    a face's walk only the contacts whose letters changed, and the cell's twists, are checked;
+//  - up to eight earlier planes, checked against every generator (on faces of few contacts);
+//  - up to eight triplets of named generators whose cone holds e: a cell that has all three
+//    holds e.
+// A cell no certificate decides has its E built, which gives the next certificate.
+class Decider {
+public:
+    Decider(const Scene& scene, const std::optional<ExactMatrix>& m, const FrictionEdges& edges, const Vec3& e)
+        : scene_(scene), m_(m), edges_(edges), e_(e), wrench_(ExactVector::input(e)) {}
+
+    [[nodiscard]] std::size_t built() const { return built_; }
+
+    bool member(const detail::WalkCell& cell) {
+        cell_ = &cell;
+        images_.clear();
+        if (m_) {
+            for (const Exact3& g : *cell.closure) images_.push_back(ExactVector::from_exact(g).transformed(*m_));
+        }
+        const bool answer = decide();
+        if (answer) current_valid_ = false;  // no plane holds a cone that holds e
+        return answer;
+    }
+
+private:
+    static constexpr std::size_t kCache = 8;
+    static constexpr std::size_t kSmallFace = 32;  // closed contacts for a full check of cached planes
+
+    // f(edge) for each friction edge the contact at position t contributes (E holds -edge).
+    template <class F>
+    bool all_edges(std::size_t t, F f) const {
+        const auto j = static_cast<std::size_t>(cell_->closed[t]);
+        switch (cell_->letters[t]) {
+            case 'f': return f(edges_.statics[j][0]) && f(edges_.statics[j][1]);
+            case 'r': return f(edges_.kinetics[j][1]);
+            case 'l': return f(edges_.kinetics[j][0]);
+            default: return true;
+        }
+    }
+
+    bool holds_images(const ExactVector& h) const {
+        return std::all_of(images_.begin(), images_.end(), [&](const ExactVector& g) { return dot_sign(h, g) != Sign::Negative; });
+    }
+    bool holds_position(const ExactVector& h, std::size_t t) const {
+        return all_edges(t, [&](const ExactVector& edge) { return dot_sign(h, edge) != Sign::Positive; });
+    }
+    bool holds_all(const ExactVector& h) const {
+        if (!holds_images(h)) return false;
+        for (std::size_t t = 0; t < cell_->closed.size(); ++t) {
+            if (!holds_position(h, t)) return false;
+        }
+        return true;
+    }
+
+    char letter_of_contact(int j) const {
+        const auto it = std::lower_bound(cell_->closed.begin(), cell_->closed.end(), j);
+        if (it == cell_->closed.end() || *it != j) return 's';
+        return cell_->letters[static_cast<std::size_t>(it - cell_->closed.begin())];
+    }
+
+    bool has_piece(const Piece& p) const {
+        if (p.contact < 0) {
+            return std::any_of(cell_->closure->begin(), cell_->closure->end(), [&](const Exact3& g) {
+                return is_zero(cross(g, p.twist)) && dot(g, p.twist).sign() == Sign::Positive;
+            });
+        }
+        const char letter = letter_of_contact(p.contact);
+        if (letter == 'f') return p.slot < 2;
+        return (letter == 'r' || letter == 'l') && p.slot == sliding_slot(scene_.contacts[static_cast<std::size_t>(p.contact)], letter);
+    }
+
+    bool decide() {
+        if (is_zero(e_)) return true;  // in every closed cone
+        const auto inside = std::find_if(triangles_.begin(), triangles_.end(), [&](const std::array<Piece, 3>& t) {
+            return has_piece(t[0]) && has_piece(t[1]) && has_piece(t[2]);
+        });
+        if (inside != triangles_.end()) {
+            std::rotate(triangles_.begin(), inside, inside + 1);
+            return true;
+        }
+        // The current plane: along a face's walk, only what changed since the previous cell.
+        if (current_) {
+            bool holds = holds_images(*current_);
+            if (holds && current_valid_ && !cell_->first) {
+                for (int t : cell_->changed) holds = holds && holds_position(*current_, static_cast<std::size_t>(t));
+            } else if (holds) {
+                holds = holds_all(*current_);
+            }
+            current_valid_ = holds;
+            if (holds) return false;
+        }
+        if (cell_->closed.size() <= kSmallFace) {
+            const auto found = std::find_if(planes_.begin(), planes_.end(), [&](const ExactVector& h) { return holds_all(h); });
+            if (found != planes_.end()) {
+                current_ = *found;
+                current_valid_ = true;
+                std::rotate(planes_.begin(), found, found + 1);
+                return false;
+            }
+        }
+        return build();
+    }
+
+    // E built from its generators; a new certificate either way.
+    bool build() {
+        ++built_;
+        std::vector<ExactVector> generators;
+        std::vector<Piece> pieces;
+        for (std::size_t g = 0; g < images_.size(); ++g) {
+            generators.push_back(images_[g]);
+            pieces.push_back(Piece{-1, 0, (*cell_->closure)[g]});
+        }
+        for (std::size_t t = 0; t < cell_->closed.size(); ++t) {
+            const int j = cell_->closed[t];
+            const auto jj = static_cast<std::size_t>(j);
+            const char letter = cell_->letters[t];
+            if (letter == 'f') {
+                for (int slot = 0; slot < 2; ++slot) {
+                    generators.push_back(edges_.statics[jj][static_cast<std::size_t>(slot)].negated());
+                    pieces.push_back(Piece{j, slot, {}});
+                }
+            } else if (letter == 'r' || letter == 'l') {
+                generators.push_back(edges_.kinetics[jj][letter == 'r' ? 1 : 0].negated());
+                pieces.push_back(Piece{j, sliding_slot(scene_.contacts[jj], letter), {}});
+            }
+        }
+        const Cone applied = Cone::from_generators(generators);
+        if (applied.has(e_)) {
+            if (applied.dimension() == 3 && applied.is_pointed()) remember_triangle(applied, generators, pieces);
+            return true;
+        }
+        // A facet or equation of E with h . e < 0 (one exists: e is outside E).
+        const Membership why = applied.contains(e_);
+        assert(!why.member);
+        current_ = why.separator;
+        current_valid_ = true;
+        planes_.insert(planes_.begin(), why.separator);
+        if (planes_.size() > kCache) planes_.pop_back();
+        return false;
+    }
+
+    void remember_triangle(const Cone& applied, const std::vector<ExactVector>& generators, const std::vector<Piece>& pieces) {
+        // Name the three rays by generators pointing the same way (each ray is one).
+        std::array<Piece, 3> t;
+        const auto corners = fan_triangle(applied, wrench_);
+        for (std::size_t corner = 0; corner < 3; ++corner) {
+            const ExactVector& ray = applied.rays()[corners[corner]];
+            const auto g = std::find_if(generators.begin(), generators.end(), [&](const ExactVector& v) {
+                return parallel(v, ray) && dot_sign(v, ray) == Sign::Positive;
+            });
+            if (g == generators.end()) return;
+            t[corner] = pieces[static_cast<std::size_t>(g - generators.begin())];
+        }
+        // Kept only when exactly checked: det(a, b, c) > 0 and w on the inner side of each face.
+        const ExactVector &a = applied.rays()[corners[0]], &b = applied.rays()[corners[1]], &c = applied.rays()[corners[2]];
+        if (det_sign(a, b, c) == Sign::Positive && det_sign(wrench_, b, c) != Sign::Negative &&
+            det_sign(a, wrench_, c) != Sign::Negative && det_sign(a, b, wrench_) != Sign::Negative) {
+            triangles_.insert(triangles_.begin(), t);
+            if (triangles_.size() > kCache) triangles_.pop_back();
+        }
+    }
+
+    const Scene& scene_;
+    const std::optional<ExactMatrix>& m_;
+    const FrictionEdges& edges_;
+    Vec3 e_;
+    ExactVector wrench_;
+    const detail::WalkCell* cell_ = nullptr;
+    std::vector<ExactVector> images_;
+    std::optional<ExactVector> current_;
+    bool current_valid_ = false;  // the current plane held every generator of the previous cell
+    std::vector<ExactVector> planes_;
+    std::vector<std::array<Piece, 3>> triangles_;
+    std::size_t built_ = 0;
+};
+
+std::string dense_letters(const detail::WalkCell& cell, std::size_t n) {
+    std::string s(n, letter(ContactMode::Separating));
+    for (std::size_t t = 0; t < cell.closed.size(); ++t) s[static_cast<std::size_t>(cell.closed[t])] = cell.letters[t];
+    return s;
+}
+
 }  // namespace
 
 SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions& options) {
     if (!e.allFinite()) throw std::invalid_argument("query_scene: the wrench must be finite");
     const std::optional<ExactMatrix> m = inertia_of(scene, options, "query_scene");
-    SceneAnswer out{enumerate_modes(scene.contacts, options.progress), {}};
-    const FrictionEdges edges(scene.contacts);
-    const ExactVector wrench = ExactVector::input(e);
-    // Two caches of certificates from modes decided before, the latest that worked first
-    // (neighbouring modes share most generators):
-    //  - planes h with h . e < 0 that held every generator of an earlier E on their side; one
-    //    that holds every generator of this E too proves e is not in it (Farkas). Each keeps
-    //    the contact that last broke it, tried first.
-    //  - three generators of an earlier E whose cone holds e; when this E has all three, e is
-    //    in it.
-    struct Plane {
-        ExactVector h;
-        std::size_t hint = 0;
-    };
-    constexpr std::size_t kCache = 8;
-    const std::size_t count = out.modes.modes.size();
+    detail::check_contacts(scene.contacts);
     const std::size_t n = scene.contacts.size();
-    // The modes in two halves on two threads when there is enough to do (as analyze), each half
-    // with its own caches; the answers joined in order.
-    struct Part {
-        std::vector<std::size_t> members;
-        std::size_t built = 0;
+    const detail::ModeWalk walk(scene.contacts);
+    const FrictionEdges edges(scene.contacts);
+    Decider decider(scene, m, edges, e);
+    // The all-f mode (xi = 0 and the cells whose letters are all 'f') is decided apart, when its
+    // closure is complete; the others as the walk meets them. Its E holds -T for every contact
+    // fixed (2n generators): decided on a second thread while the walk goes on, first without
+    // the twists of merged cells (a wrench in that smaller cone is in E whatever they are).
+    std::vector<Exact3> fixed_closure;
+    struct Member {
+        std::size_t index;
+        std::string letters;
+        std::vector<Exact3> closure;
     };
-    const bool large = count * n >= 2000;
-    std::vector<Part> parts(large ? 2 : 1);
+    std::vector<Member> members;
+    SceneAnswer out;
+    std::vector<int> everyone(n);
+    std::iota(everyone.begin(), everyone.end(), 0);
+    const std::vector<char> fixed(n, letter(ContactMode::Fixed));
+    Decider fixed_decider(scene, m, edges, e);
+    const auto fixed_member = [&] {
+        detail::WalkCell cell;
+        cell.closure = &fixed_closure;
+        cell.closed = everyone;
+        cell.letters = fixed;
+        return fixed_decider.member(cell);
+    };
+    bool fixed_holds = false;
     const std::thread::id caller = std::this_thread::get_id();
-    detail::for_each_index(parts.size(), large, [&](std::size_t k) {
-        Part& part = parts[k];
-        std::vector<Plane> planes;
-        std::vector<std::array<Piece, 3>> triangles;
-        const std::size_t begin = count * k / parts.size(), end = count * (k + 1) / parts.size();
-        for (std::size_t i = begin; i < end; ++i) {
-            if (options.progress && std::this_thread::get_id() == caller) options.progress("modes tested", i - begin, end - begin);
-            const Mode& mode = out.modes.modes[i];
-            if (is_zero(e)) {  // in every closed cone
-                part.members.push_back(i);
-                continue;
-            }
-            const auto inside = std::find_if(triangles.begin(), triangles.end(), [&](const std::array<Piece, 3>& t) {
-                return has_piece(scene, mode, t[0]) && has_piece(scene, mode, t[1]) && has_piece(scene, mode, t[2]);
-            });
-            if (inside != triangles.end()) {
-                std::rotate(triangles.begin(), inside, inside + 1);
-                part.members.push_back(i);
-                continue;
-            }
-            // E = M A + (-T): the images of the twists' generators, then minus the contact edges.
-            std::vector<ExactVector> generators;
-            std::vector<Piece> pieces;
-            if (m) {
-                const auto image = [&](const ExactVector& r) {
-                    generators.push_back(r.transformed(*m));
-                    pieces.push_back(Piece{-1, 0, r});
-                };
-                for (const ExactVector& r : mode.twists.rays()) image(r);
-                for (const ExactVector& l : mode.twists.lineality()) image(l), image(l.negated());
-            }
-            const std::size_t images = generators.size();
-            // Does h hold contact j's generators in this mode on its side (h . -edge >= 0)?
-            const auto holds_contact = [&](const ExactVector& h, std::size_t j) {
-                switch (mode.letters[j]) {
-                    case 'f':
-                        return dot_sign(h, edges.statics[j][0]) != Sign::Positive && dot_sign(h, edges.statics[j][1]) != Sign::Positive;
-                    case 'r': return dot_sign(h, edges.kinetics[j][1]) != Sign::Positive;
-                    case 'l': return dot_sign(h, edges.kinetics[j][0]) != Sign::Positive;
-                    default: return true;
-                }
-            };
-            const auto separates = [&](Plane& p) {
-                for (std::size_t g = 0; g < images; ++g) {
-                    if (dot_sign(p.h, generators[g]) == Sign::Negative) return false;
-                }
-                if (p.hint < n && !holds_contact(p.h, p.hint)) return false;
-                for (std::size_t j = 0; j < n; ++j) {
-                    if (!holds_contact(p.h, j)) {
-                        p.hint = j;
-                        return false;
-                    }
-                }
-                return true;
-            };
-            const auto found = std::find_if(planes.begin(), planes.end(), separates);
-            if (found != planes.end()) {
-                std::rotate(planes.begin(), found, found + 1);
-                continue;
-            }
-            for (std::size_t j = 0; j < n; ++j) {
-                const char letter = mode.letters[j];
-                if (letter == 'f') {
-                    for (int slot = 0; slot < 2; ++slot) {
-                        generators.push_back(edges.statics[j][static_cast<std::size_t>(slot)].negated());
-                        pieces.push_back(Piece{static_cast<int>(j), slot, {}});
-                    }
-                } else if (letter == 'r' || letter == 'l') {
-                    generators.push_back(edges.kinetics[j][letter == 'r' ? 1 : 0].negated());
-                    pieces.push_back(Piece{static_cast<int>(j), sliding_slot(scene.contacts[j], letter), {}});
-                }
-            }
-            const Cone applied = Cone::from_generators(generators);
-            ++part.built;
-            if (applied.has(e)) {
-                part.members.push_back(i);
-                if (applied.dimension() == 3 && applied.is_pointed()) {
-                    // Name the three rays by generators pointing the same way (each ray is one).
-                    std::array<Piece, 3> t;
-                    bool named = true;
-                    const auto corners = fan_triangle(applied, wrench);
-                    for (std::size_t corner = 0; corner < 3 && named; ++corner) {
-                        const ExactVector& ray = applied.rays()[corners[corner]];
-                        const auto g = std::find_if(generators.begin(), generators.end(), [&](const ExactVector& v) {
-                            return parallel(v, ray) && dot_sign(v, ray) == Sign::Positive;
-                        });
-                        named = g != generators.end();
-                        if (named) t[corner] = pieces[static_cast<std::size_t>(g - generators.begin())];
-                    }
-                    // Kept only when exactly checked: det(a, b, c) > 0 and w on the inner side of each face.
-                    const auto in_triangle = [&] {
-                        const ExactVector &a = applied.rays()[corners[0]], &b = applied.rays()[corners[1]], &c = applied.rays()[corners[2]];
-                        return det_sign(a, b, c) == Sign::Positive && det_sign(wrench, b, c) != Sign::Negative &&
-                               det_sign(a, wrench, c) != Sign::Negative && det_sign(a, b, wrench) != Sign::Negative;
-                    };
-                    if (named && in_triangle()) {
-                        triangles.insert(triangles.begin(), t);
-                        if (triangles.size() > kCache) triangles.pop_back();
-                    }
-                }
-                continue;
-            }
-            // A facet or equation of E with h . e < 0 (one exists: e is outside E).
-            const Membership why = applied.contains(e);
-            assert(!why.member);
-            planes.insert(planes.begin(), Plane{why.separator, 0});
-            if (planes.size() > kCache) planes.pop_back();
+    detail::for_each_index(2, n >= kTwoThreadContacts, [&](std::size_t task) {
+        if (task == 0) {
+            const std::vector<Exact3> none;
+            detail::WalkCell cell;
+            cell.closure = &none;
+            cell.closed = everyone;
+            cell.letters = fixed;
+            fixed_holds = fixed_decider.member(cell);
+            return;
         }
+        const Progress progress = std::this_thread::get_id() == caller ? options.progress : Progress();
+        out.mode_count = walk.run(progress, [&](const detail::WalkCell& cell) {
+            if (cell.index == 0) {
+                fixed_closure.insert(fixed_closure.end(), cell.closure->begin(), cell.closure->end());
+                return;
+            }
+            if (decider.member(cell)) members.push_back({cell.index, dense_letters(cell, n), *cell.closure});
+        });
     });
-    for (const Part& part : parts) {
-        out.result.modes.insert(out.result.modes.end(), part.members.begin(), part.members.end());
-        out.built += part.built;
+    if (!fixed_holds && m && !fixed_closure.empty()) fixed_holds = fixed_member();
+    if (fixed_holds) members.push_back({0, std::string(n, letter(ContactMode::Fixed)), fixed_closure});
+    std::sort(members.begin(), members.end(), [](const Member& a, const Member& b) { return a.index < b.index; });
+    for (Member& member : members) {
+        std::vector<ExactVector> gens;
+        for (const Exact3& g : member.closure) gens.push_back(ExactVector::from_exact(g));
+        out.result.modes.push_back(member.index);
+        out.modes.push_back(Mode{std::move(member.letters), Cone::from_generators(gens)});
     }
+    out.built = decider.built() + (fixed_decider.built() > 0 ? 1 : 0);  // the all-f mode's cone counts once
     out.result.verdict = verdict_of(out.result.modes.size());
     return out;
 }

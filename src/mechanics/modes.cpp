@@ -13,99 +13,39 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
+#include <functional>
+#include <span>
 #include <unordered_map>
 #include <ostream>
 #include <stdexcept>
 
 #include "checks.hpp"
+#include "mode_walk.hpp"
 
 namespace momentlab {
 namespace {
 
 using Q3 = Exact3;
+using Visit = std::function<void(const detail::WalkCell&)>;
 
 int sign(const Dyadic& q) { return to_int(q.sign()); }
 int orient(const Q3& x, const Q3& y, const Q3& e) { return sign(det(x, y, e)); }
 
-struct Cell {
-    Q3 representative;             // a twist in the relative interior of the cell
-    std::vector<Q3> closure;       // generators of the cell's closure (rays; lines as +-)
-};
+char letter_of(Sign v) {
+    return letter(v == Sign::Positive ? ContactMode::SlidingRight
+                                      : (v == Sign::Negative ? ContactMode::SlidingLeft : ContactMode::Fixed));
+}
 
-class Enumerator {
+// The walk over one face: its cells, their mode indices and their letters.
+class FaceWalk {
 public:
-    explicit Enumerator(const std::vector<Contact>& contacts) {
-        for (const Contact& c : contacts) {
-            normals_.push_back(c.normal_wrench());
-            tangents_.push_back(c.tangent_wrench());
-        }
-    }
-
-    ModeSet run(const Progress& progress) {
-        ModeSet out;
-        out.feasible_twists = Cone::from_halfspaces(normals_);
-        const Cone& a = out.feasible_twists;
-        std::vector<Q3> lineality;
-        for (const ExactVector& l : a.lineality()) lineality.push_back(l.exact());
-        add(std::string(normals_.size(), letter(ContactMode::Fixed)), {});  // xi = 0: every contact fixed
-        const std::vector<Face> faces = a.faces();
-        for (std::size_t f = 0; f < faces.size(); ++f) {
-            if (progress) progress("faces of the cone of motions", f, faces.size());
-            const Face& face = faces[f];
-            if (face.dimension == 0) continue;
-            std::vector<Q3> rays;
-            for (int i : face.rays) rays.push_back(a.rays()[static_cast<std::size_t>(i)].exact());
-            // Closed on the face: N_j . g = 0 for every generator g of it (filtered predicates:
-            // this and the letters are the Theta(faces x n) and Theta(modes x n) parts).
-            std::vector<bool> closed(normals_.size());
-            for (std::size_t j = 0; j < normals_.size(); ++j) {
-                bool all = true;
-                for (int i : face.rays) {
-                    all = all && dot_sign(normals_[j], a.rays()[static_cast<std::size_t>(i)]) == Sign::Zero;
-                }
-                for (const ExactVector& l : a.lineality()) all = all && dot_sign(normals_[j], l) == Sign::Zero;
-                closed[j] = all;
-            }
-            for (const Cell& cell : cells(face.dimension, rays, lineality, closed)) {
-                add(letters(cell.representative, closed), cell.closure);
-            }
-        }
-        out.modes.resize(order_.size());
-        while (!order_.empty()) {  // each key moved out, not copied: the letters are Theta(M n)
-            auto node = order_.extract(order_.begin());
-            const std::size_t index = node.mapped();
-            std::vector<ExactVector> gens;
-            for (const Q3& g : closures_[index]) gens.push_back(ExactVector::from_exact(g));
-            closures_[index] = {};
-            out.modes[index] = Mode{std::move(node.key()), Cone::from_generators(gens)};
-        }
-        return out;
-    }
-
-private:
-    std::string letters(const Q3& representative, const std::vector<bool>& closed) const {
-        const ExactVector xi = ExactVector::from_exact(representative);
-        std::string s(normals_.size(), letter(ContactMode::Separating));
-        for (std::size_t j = 0; j < normals_.size(); ++j) {
-            if (!closed[j]) continue;
-            const Sign v = dot_sign(tangents_[j], xi);
-            s[j] = letter(v == Sign::Positive ? ContactMode::SlidingRight
-                                              : (v == Sign::Negative ? ContactMode::SlidingLeft : ContactMode::Fixed));
-        }
-        return s;
-    }
-
-    void add(const std::string& letters, const std::vector<Q3>& closure) {
-        auto [it, inserted] = order_.emplace(letters, closures_.size());
-        if (inserted) closures_.emplace_back();
-        auto& gens = closures_[it->second];
-        gens.insert(gens.end(), closure.begin(), closure.end());
-    }
+    FaceWalk(std::span<const int> closed, const std::vector<ExactVector>& tangents, std::size_t contacts, std::size_t& next,
+             const Visit& visit)
+        : closed_(closed), tangents_(tangents), contacts_(contacts), next_(next), visit_(visit), letters_(closed.size()) {}
 
     // The cells of the relatively open face spanned by `rays` and `lineality`.
-    std::vector<Cell> cells(int dimension, const std::vector<Q3>& rays, const std::vector<Q3>& lineality,
-                            const std::vector<bool>& closed) const {
-        std::vector<Cell> out;
+    void run(int dimension, const std::vector<Q3>& rays, const std::vector<Q3>& lineality) {
         auto with_lines = [&](std::vector<Q3> gens) {
             for (const Q3& l : lineality) {
                 gens.push_back(l);
@@ -116,15 +56,68 @@ private:
         if (dimension == 3) {
             // The interior of a full-dimensional A: no contact is closed there. The sum of the
             // rays is interior (pointed cone, wedge x line, half-space); for R^3 any vector.
-            assert(std::none_of(closed.begin(), closed.end(), [](bool c) { return c; }));
+            assert(closed_.empty());
             Q3 inside = rays.empty() ? lineality.front() : rays.front();
             for (std::size_t i = 1; i < rays.size(); ++i) inside = inside + rays[i];
-            return {{inside, with_lines(rays)}};
+            single(inside, with_lines(rays));
+            return;
         }
         if (dimension == 1) {
-            if (!rays.empty()) return {{rays.front(), {rays.front()}}};
-            return {{lineality.front(), {lineality.front()}}, {-lineality.front(), {-lineality.front()}}};
+            if (!rays.empty()) {
+                single(rays.front(), {rays.front()});
+            } else {
+                single(lineality.front(), {lineality.front()});
+                single(-lineality.front(), {-lineality.front()});
+            }
+            return;
         }
+        planar(rays, lineality, with_lines);
+    }
+
+private:
+    // Letters from the signs of T_j . xi (all of them; O(closed)). Returns whether all are 'f'.
+    bool direct(const Q3& representative) {
+        const ExactVector xi = ExactVector::from_exact(representative);
+        bool all_fixed = true;
+        for (std::size_t t = 0; t < closed_.size(); ++t) {
+            letters_[t] = letter_of(dot_sign(tangents_[static_cast<std::size_t>(closed_[t])], xi));
+            all_fixed = all_fixed && letters_[t] == 'f';
+        }
+        return all_fixed;
+    }
+
+    // A cell whose letters are all 'f' joins mode 0 (xi = 0, every contact fixed); every other
+    // cell is a mode of its own (the letters tell the face, and the cells of a face apart).
+    std::size_t index_of(bool all_fixed) { return all_fixed && closed_.size() == contacts_ ? 0 : next_++; }
+
+    void single(const Q3& representative, std::vector<Q3> closure) {
+        const std::size_t index = index_of(direct(representative));
+        emit(index, representative, std::move(closure), true);
+    }
+
+    void emit(std::size_t index, const Q3& representative, std::vector<Q3> closure, bool first,
+              std::span<const int> changed = {}) {
+        closure_ = std::move(closure);
+#ifndef NDEBUG
+        // The letters kept up to date along the walk are the signs at the cell's representative.
+        const std::vector<char> walked = letters_;
+        direct(representative);
+        assert(walked == letters_);
+#else
+        (void)representative;
+#endif
+        detail::WalkCell cell;
+        cell.index = index;
+        cell.closure = &closure_;
+        cell.closed = closed_;
+        cell.letters = letters_;
+        cell.changed = changed;
+        cell.first = first;
+        visit_(cell);
+    }
+
+    template <class WithLines>
+    void planar(const std::vector<Q3>& rays, const std::vector<Q3>& lineality, WithLines with_lines) {
         // Dimension 2: a wedge (two rays), a half-plane (a line and a ray) or a plane.
         Q3 start, finish, e;
         enum class Shape { Wedge, HalfPlane, Plane } shape;
@@ -150,13 +143,21 @@ private:
             if (shape == Shape::HalfPlane) return orient(start, x, e) > 0;
             return true;
         };
-        std::vector<Q3> critical;
-        for (std::size_t j = 0; j < tangents_.size(); ++j) {
-            if (!closed[j]) continue;
-            const Q3 u = cross(e, tangents_[j].exact());
-            if (is_zero(u)) continue;  // T_j vanishes on the whole face
+        // The directions where some T_j . xi changes sign, each with its contact's position.
+        struct Critical {
+            Q3 x;
+            int position;
+        };
+        std::vector<Critical> critical;
+        std::size_t vanishing = 0;  // contacts whose T_j vanishes on the whole face: always 'f'
+        for (std::size_t t = 0; t < closed_.size(); ++t) {
+            const Q3 u = cross(e, tangents_[static_cast<std::size_t>(closed_[t])].exact());
+            if (is_zero(u)) {
+                ++vanishing;
+                continue;
+            }
             for (const Q3& x : {u, -u}) {
-                if (inside(x)) critical.push_back(x);
+                if (inside(x)) critical.push_back({x, static_cast<int>(t)});
             }
         }
         // Angular order counter-clockwise about e, from `start` (full turn for the plane).
@@ -166,48 +167,220 @@ private:
             if (o < 0) return 3;
             return sign(dot(start, x)) > 0 ? 0 : 2;
         };
-        std::sort(critical.begin(), critical.end(), [&](const Q3& x, const Q3& y) {
-            const int hx = half(x), hy = half(y);
-            if (hx != hy) return hx < hy;
-            return orient(x, y, e) > 0;
+        std::sort(critical.begin(), critical.end(), [&](const Critical& a, const Critical& b) {
+            const int ha = half(a.x), hb = half(b.x);
+            if (ha != hb) return ha < hb;
+            return orient(a.x, b.x, e) > 0;
         });
-        critical.erase(std::unique(critical.begin(), critical.end(),
-                                   [&](const Q3& x, const Q3& y) {
-                                       return half(x) == half(y) && orient(x, y, e) == 0;
-                                   }),
-                       critical.end());
-        for (const Q3& c : critical) out.push_back({c, {c}});
-        auto sector = [&](const Q3& a, const Q3& b) -> Cell {
+        // Groups of one direction; the first of each is its ray.
+        std::vector<std::size_t> group = {};
+        std::vector<int> members;  // positions, group by group
+        std::vector<std::size_t> member_start;
+        for (std::size_t i = 0; i < critical.size(); ++i) {
+            const bool same = !group.empty() && half(critical[group.back()].x) == half(critical[i].x) &&
+                              orient(critical[group.back()].x, critical[i].x, e) == 0;
+            if (!same) {
+                group.push_back(i);
+                member_start.push_back(members.size());
+            }
+            members.push_back(critical[i].position);
+        }
+        member_start.push_back(members.size());
+        const std::size_t r_count = group.size();
+        const auto ray = [&](std::size_t r) -> const Q3& { return critical[group[r % r_count]].x; };
+        const auto group_members = [&](std::size_t r) {
+            return std::span<const int>(members.data() + member_start[r], member_start[r + 1] - member_start[r]);
+        };
+        auto sector = [&](const Q3& a, const Q3& b) -> std::pair<Q3, std::vector<Q3>> {
             if (orient(a, b, e) > 0) return {a + b, {a, b}};
             const Q3 perpendicular = cross(e, a);  // a turned by a quarter counter-clockwise
             return {perpendicular, {a, -a, perpendicular}};
         };
-        if (shape == Shape::Plane) {
-            if (critical.empty()) return {{start, with_lines({})}};
-            for (std::size_t i = 0; i < critical.size(); ++i) {
-                out.push_back(sector(critical[i], critical[(i + 1) % critical.size()]));
-            }
-            return out;
-        }
-        std::vector<Q3> sequence = {start};
-        sequence.insert(sequence.end(), critical.begin(), critical.end());
-        sequence.push_back(finish);
-        for (std::size_t i = 0; i + 1 < sequence.size(); ++i) {
-            if (shape == Shape::HalfPlane && critical.empty()) {
-                out.push_back({rays[0], {start, finish, rays[0]}});
+        if (r_count == 0) {
+            if (shape == Shape::Plane) {
+                single(start, with_lines({}));
+            } else if (shape == Shape::HalfPlane) {
+                single(rays[0], {start, finish, rays[0]});
             } else {
-                out.push_back(sector(sequence[i], sequence[i + 1]));
+                auto [rep, closure] = sector(start, finish);
+                single(rep, std::move(closure));
+            }
+            return;
+        }
+        // Mode indices in enumerate_modes' order: the rays, then the sectors. A ray is all 'f'
+        // when every contact is closed here and each T_j vanishes on the face or changes sign there.
+        const bool all_closed = closed_.size() == contacts_;
+        std::vector<std::size_t> ray_index(r_count), sector_index(shape == Shape::Plane ? r_count : r_count + 1);
+        for (std::size_t r = 0; r < r_count; ++r) {
+            ray_index[r] = all_closed && vanishing + group_members(r).size() == closed_.size() ? 0 : next_++;
+        }
+        for (std::size_t& i : sector_index) i = next_++;
+        // The sectors counter-clockwise: sector i lies after ray i - 1 (plane: after ray i).
+        std::vector<Q3> sequence;
+        if (shape != Shape::Plane) {
+            sequence.push_back(start);
+            for (std::size_t r = 0; r < r_count; ++r) sequence.push_back(ray(r));
+            sequence.push_back(finish);
+        }
+        const auto sector_at = [&](std::size_t i) {
+            return shape == Shape::Plane ? sector(ray(i), ray(i + 1)) : sector(sequence[i], sequence[i + 1]);
+        };
+        // Signs of the sector before the first ray visited: the last sector of the plane's turn,
+        // the first sector of a wedge or half-plane (visited first).
+        std::vector<Sign> signs(closed_.size());
+        {
+            auto [rep, closure] = sector_at(shape == Shape::Plane ? r_count - 1 : 0);
+            const ExactVector xi = ExactVector::from_exact(rep);
+            for (std::size_t t = 0; t < closed_.size(); ++t) {
+                signs[t] = dot_sign(tangents_[static_cast<std::size_t>(closed_[t])], xi);
+                letters_[t] = letter_of(signs[t]);
+            }
+            if (shape != Shape::Plane) emit(sector_index[0], rep, std::move(closure), true);
+        }
+        bool first = shape == Shape::Plane;
+        for (std::size_t r = 0; r < r_count; ++r) {
+            const std::span<const int> changed = group_members(r);
+            for (int t : changed) letters_[static_cast<std::size_t>(t)] = 'f';
+            emit(ray_index[r], ray(r), {ray(r)}, first, changed);
+            first = false;
+            for (int t : changed) {
+                Sign& s = signs[static_cast<std::size_t>(t)];
+                s = -s;  // the line T_j . xi = 0 crossed
+                letters_[static_cast<std::size_t>(t)] = letter_of(s);
+            }
+            const std::size_t i = shape == Shape::Plane ? r : r + 1;
+            auto [rep, closure] = sector_at(i);
+            emit(sector_index[i], rep, std::move(closure), false, changed);
+        }
+    }
+
+    std::span<const int> closed_;
+    const std::vector<ExactVector>& tangents_;
+    std::size_t contacts_;
+    std::size_t& next_;
+    const Visit& visit_;
+    std::vector<char> letters_;
+    std::vector<Q3> closure_;
+};
+
+}  // namespace
+
+namespace detail {
+
+ModeWalk::ModeWalk(const std::vector<Contact>& contacts) {
+    for (const Contact& c : contacts) {
+        normals_.push_back(c.normal_wrench());
+        tangents_.push_back(c.tangent_wrench());
+    }
+    a_ = Cone::from_halfspaces(normals_);
+}
+
+std::vector<std::vector<int>> ModeWalk::closed_sets(const std::vector<Face>& faces) const {
+    std::vector<std::vector<int>> out(faces.size());
+    const std::vector<ExactVector>& f = a_.facets();
+    const std::size_t k = f.size(), n = normals_.size();
+    if (!(a_.dimension() == 3 && a_.is_pointed() && k >= 3)) {
+        // At most four faces of dimension >= 1 (A has a line, or lies in a plane): N_j . g = 0
+        // for every generator g of the face.
+        for (std::size_t i = 0; i < faces.size(); ++i) {
+            if (faces[i].dimension == 0) continue;
+            for (std::size_t j = 0; j < n; ++j) {
+                bool all = true;
+                for (int r : faces[i].rays) all = all && dot_sign(normals_[j], a_.rays()[static_cast<std::size_t>(r)]) == Sign::Zero;
+                for (const ExactVector& l : a_.lineality()) all = all && dot_sign(normals_[j], l) == Sign::Zero;
+                if (all) out[i].push_back(static_cast<int>(j));
             }
         }
         return out;
     }
+    // A* = cone(N_j) is pointed and full-dimensional; its extreme rays are A's facet normals
+    // F_i, in cyclic order (order[t]; counter-clockwise about an interior point c). N_j is
+    // closed on facet i (and its two rays) when it points along F_i, and on the ray of A
+    // between facets i and i' when it lies on A*'s facet between F_i and F_i'; elsewhere it
+    // is inside A* and closed on no face but {0}. Each N_j is found by a binary search of its
+    // angle about c: O(log k) exact signs.
+    const Sign turn = det_sign(f[0], f[1], f[2]);
+    std::vector<std::size_t> order(k);
+    for (std::size_t t = 0; t < k; ++t) order[t] = turn == Sign::Positive ? t : (k - t) % k;
+    const ExactVector& reference = f[order[0]];
+    const ExactVector c = ExactVector::from_exact(f[order[0]].exact() + f[order[k / 3]].exact() + f[order[2 * k / 3]].exact());
+    const Exact3 c_reference = cross(c.exact(), reference.exact());
+    // 0: along the reference; 1: counter-clockwise from it by less than pi; 2: opposite; 3: the
+    // rest; -1: along c.
+    const auto half = [&](const ExactVector& v) {
+        const Sign s = det_sign(c, reference, v);
+        if (s != Sign::Zero) return s == Sign::Positive ? 1 : 3;
+        const int along = sign(dot(cross(c.exact(), v.exact()), c_reference));
+        return along > 0 ? 0 : (along < 0 ? 2 : -1);
+    };
+    std::vector<int> ray_half(k);
+    for (std::size_t t = 0; t < k; ++t) ray_half[t] = half(f[order[t]]);
+    // The ray of A on facets i and i' (each ray of A lies on exactly two facets).
+    std::unordered_map<std::uint64_t, int> ray_between;
+    const Incidence facets_of_ray = a_.facet_rays().transposed(a_.rays().size());
+    const auto key = [k](std::size_t i, std::size_t i2) { return static_cast<std::uint64_t>(std::min(i, i2)) * k + std::max(i, i2); };
+    for (std::size_t r = 0; r < a_.rays().size(); ++r) {
+        const auto row = facets_of_ray.row(r);
+        if (row.size() == 2) ray_between[key(static_cast<std::size_t>(row[0]), static_cast<std::size_t>(row[1]))] = static_cast<int>(r);
+    }
+    std::vector<std::vector<int>> on_facet(k), on_ray(a_.rays().size());
+    for (std::size_t j = 0; j < n; ++j) {
+        const ExactVector& v = normals_[j];
+        const int hv = half(v);
+        if (hv < 0) continue;  // along c: inside A*
+        const auto not_after = [&](std::size_t t) {  // the angle of ray t is at most v's
+            if (ray_half[t] != hv) return ray_half[t] < hv;
+            return hv == 0 || hv == 2 || det_sign(c, f[order[t]], v) != Sign::Negative;
+        };
+        std::size_t lo = 0, hi = k;  // not_after(lo), !not_after(hi) (hi = k: past the end)
+        while (hi - lo > 1) {
+            const std::size_t mid = lo + (hi - lo) / 2;
+            (not_after(mid) ? lo : hi) = mid;
+        }
+        const std::size_t i = order[lo], i2 = order[(lo + 1) % k];
+        if (parallel(v, f[i])) {
+            on_facet[i].push_back(static_cast<int>(j));
+        } else if (det_sign(f[i], f[i2], v) == Sign::Zero) {
+            const auto it = ray_between.find(key(i, i2));
+            assert(it != ray_between.end());
+            on_ray[static_cast<std::size_t>(it->second)].push_back(static_cast<int>(j));
+        }
+    }
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+        const Face& face = faces[i];
+        if (face.dimension == 2) {
+            out[i] = on_facet[static_cast<std::size_t>(face.facets.front())];
+        } else if (face.dimension == 1) {
+            for (int fi : face.facets) {
+                const auto& more = on_facet[static_cast<std::size_t>(fi)];
+                out[i].insert(out[i].end(), more.begin(), more.end());
+            }
+            const auto& more = on_ray[static_cast<std::size_t>(face.rays.front())];
+            out[i].insert(out[i].end(), more.begin(), more.end());
+            std::sort(out[i].begin(), out[i].end());
+        }
+    }
+    return out;
+}
 
-    std::vector<ExactVector> normals_, tangents_;
-    std::unordered_map<std::string, std::size_t> order_;
-    std::vector<std::vector<Q3>> closures_;
-};
+std::size_t ModeWalk::run(const Progress& progress, const Visit& visit) const {
+    std::vector<Q3> lineality;
+    for (const ExactVector& l : a_.lineality()) lineality.push_back(l.exact());
+    const std::vector<Face> faces = a_.faces();
+    const std::vector<std::vector<int>> closed = closed_sets(faces);
+    std::size_t next = 1;  // mode 0: xi = 0, every contact fixed
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+        if (progress) progress("faces of the cone of motions", i, faces.size());
+        const Face& face = faces[i];
+        if (face.dimension == 0) continue;
+        std::vector<Q3> rays;
+        for (int r : face.rays) rays.push_back(a_.rays()[static_cast<std::size_t>(r)].exact());
+        FaceWalk(closed[i], tangents_, normals_.size(), next, visit).run(face.dimension, rays, lineality);
+    }
+    return next;
+}
 
-}  // namespace
+}  // namespace detail
 
 void detail::check_contacts(const std::vector<Contact>& contacts) {
     for (const Contact& c : contacts) {
@@ -220,7 +393,32 @@ void detail::check_contacts(const std::vector<Contact>& contacts) {
 
 ModeSet enumerate_modes(const std::vector<Contact>& contacts, const Progress& progress) {
     detail::check_contacts(contacts);
-    return Enumerator(contacts).run(progress);
+    const detail::ModeWalk walk(contacts);
+    const std::size_t n = contacts.size();
+    std::vector<std::string> letters(1, std::string(n, letter(ContactMode::Fixed)));
+    std::vector<std::vector<Q3>> closures(1);
+    walk.run(progress, [&](const detail::WalkCell& cell) {
+        if (cell.index >= letters.size()) {
+            letters.resize(cell.index + 1);
+            closures.resize(cell.index + 1);
+        }
+        auto& gens = closures[cell.index];
+        gens.insert(gens.end(), cell.closure->begin(), cell.closure->end());
+        if (cell.index == 0) return;
+        std::string s(n, letter(ContactMode::Separating));
+        for (std::size_t t = 0; t < cell.closed.size(); ++t) s[static_cast<std::size_t>(cell.closed[t])] = cell.letters[t];
+        letters[cell.index] = std::move(s);
+    });
+    ModeSet out;
+    out.feasible_twists = walk.feasible_twists();
+    out.modes.resize(letters.size());
+    for (std::size_t i = 0; i < letters.size(); ++i) {  // the letters moved, not copied: they are Theta(M n)
+        std::vector<ExactVector> gens;
+        for (const Q3& g : closures[i]) gens.push_back(ExactVector::from_exact(g));
+        closures[i] = {};
+        out.modes[i] = Mode{std::move(letters[i]), Cone::from_generators(gens)};
+    }
+    return out;
 }
 
 ContactMode contact_mode(char c) {

@@ -415,7 +415,7 @@ OneShotAnswer query_once(const Scene& scene, const Vec3& e, const AnalysisOption
     }
     if (!out.filtered) {
         const SceneAnswer a = query_scene(scene, e, options);
-        for (std::size_t i : a.result.modes) out.letters.push_back(a.modes.modes[i].letters);
+        for (const Mode& mode : a.modes) out.letters.push_back(mode.letters);
         std::sort(out.letters.begin(), out.letters.end());
     }
     out.verdict = verdict_of(out.letters.size());

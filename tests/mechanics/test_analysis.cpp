@@ -39,11 +39,20 @@ reference::QVec minus_contact_generators(reference::QVec e, const testing::Exact
 std::set<std::string> direct(const Scene& scene, const Vec3& e, bool quasi_static = false, std::size_t* built = nullptr,
                              std::size_t* modes = nullptr) {
     const SceneAnswer a = query_scene(scene, e, AnalysisOptions{quasi_static});
-    EXPECT_LE(a.built, a.modes.modes.size());
+    EXPECT_LE(a.built, a.mode_count);
     if (built) *built += a.built;
-    if (modes) *modes += a.modes.modes.size();
+    if (modes) *modes += a.mode_count;
+    // The indices are enumerate_modes' (and analyze's): the same letters there.
+    const ModeSet all = enumerate_modes(scene.contacts);
+    EXPECT_EQ(a.mode_count, all.modes.size());
+    EXPECT_EQ(a.modes.size(), a.result.modes.size());
+    EXPECT_TRUE(std::is_sorted(a.result.modes.begin(), a.result.modes.end()));
     std::set<std::string> out;
-    for (std::size_t i : a.result.modes) out.insert(a.modes.modes[i].letters);
+    for (std::size_t k = 0; k < a.modes.size() && k < a.result.modes.size(); ++k) {
+        out.insert(a.modes[k].letters);
+        EXPECT_EQ(a.modes[k].letters, all.modes.at(a.result.modes[k]).letters) << "mode index " << a.result.modes[k];
+        EXPECT_TRUE(a.modes[k].twists == all.modes.at(a.result.modes[k]).twists) << "mode index " << a.result.modes[k];
+    }
     EXPECT_EQ(a.result.verdict, verdict_of(out.size()));
     // query_once gives the same modes, sorted, whichever path it took.
     const OneShotAnswer once = query_once(scene, e, AnalysisOptions{quasi_static});
@@ -552,8 +561,9 @@ TEST(Analysis, TinyWrenchesAreNotZero) {
     }
 }
 
-// Scenes large enough (modes x contacts >= 2000) that analyze and query_scene share their modes
-// out to two threads: the same answers as the exact LP, mode by mode. Contacts on a line whose
+// Scenes large enough (modes x contacts >= 2000; 20 contacts or more) that analyze shares its
+// modes out to two threads and query_scene decides the all-f mode beside its walk: the same
+// answers as the exact LP, mode by mode. Contacts on a line whose
 // normals lie on it (+x and -x in turn), random mu: about 4n modes.
 TEST(Analysis, LargeScenesOnTwoThreadsAgreeWithExactLp) {
     testing::Random rnd(6021);

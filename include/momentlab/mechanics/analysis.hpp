@@ -66,22 +66,26 @@ struct QueryResult {
 /// std::invalid_argument for a non-finite wrench.
 [[nodiscard]] QueryResult query(const std::vector<ModeForces>& analysis, const Vec3& e);
 
-/// One question about a scene not analysed: its modes, and which of them e produces.
+/// One question about a scene not analysed: which of its modes e produces.
 struct SceneAnswer {
-    ModeSet modes;       ///< enumerate_modes(scene.contacts): the order analyze uses
-    QueryResult result;  ///< indices into modes.modes
-    std::size_t built = 0;  ///< how many modes' E had to be built (the rest were decided by certificates)
+    std::vector<Mode> modes;     ///< the modes e produces (letters and twists), in the order of result.modes
+    QueryResult result;          ///< their indices in enumerate_modes' order (analyze's), increasing
+    std::size_t mode_count = 0;  ///< how many modes the scene has
+    std::size_t built = 0;       ///< how many modes' E had to be built (the rest were decided by certificates)
 };
 
-/// The same answer as query(analyze(scene, options), e), without building every mode's sets.
-/// Each mode is first tried against certificates kept from the modes decided before it (at most
-/// eight of each kind, the latest that worked first): a plane h with h . e < 0 that holds every
-/// generator of this E on its side proves e is not in E (Farkas); three generators of an earlier
-/// E whose cone holds e, when this mode has all three, prove e is in it. Only a mode that no
-/// certificate decides has its E built (which gives a new certificate). Every sign is exact.
-/// O(n log n + M n) for n contacts and M modes when certificates decide all but O(1) modes,
-/// O(M n log n) when none do (docs/benchmarks.md, "Nearly degenerate scenes"). When modes x
-/// contacts >= 2000 the two halves of the modes go to two threads, each with its own caches.
+/// The same answer as query(analyze(scene, options), e), without building every mode's sets or
+/// writing every mode's letters. The modes are met cell by cell along the faces of the cone of
+/// motions (a 2-D face in angular order, where neighbouring cells differ by the contacts whose
+/// sliding direction changes between them), each tried first against certificates kept from the
+/// cells before: a plane h with h . e < 0 that holds every generator of this E on its side proves
+/// e is not in E (Farkas; along a face only the generators that changed are checked against the
+/// latest plane), and three generators of an earlier E whose cone holds e, when this cell has all
+/// three, prove e is in it. Only a cell that no certificate decides has its E built (which gives a
+/// new certificate). Every sign is exact. O(n log n + M + C + B k log k) for n contacts, M modes,
+/// C letter changes along the walks (at most the number of closed contacts per face times its
+/// cells), B modes built and k closed contacts per face; memory O(n + the answer's letters)
+/// (docs/benchmarks.md, "Nearly degenerate scenes").
 /// Throws as analyze does, and std::invalid_argument for a non-finite wrench.
 [[nodiscard]] SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions& options = {});
 

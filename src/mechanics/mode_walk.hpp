@@ -1,0 +1,53 @@
+// The cells of the contact-mode arrangement, face by face, with sparse letters: what
+// enumerate_modes writes out and query_scene decides, without a string of n letters per cell.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "momentlab/core/exact.hpp"
+#include "momentlab/mechanics/modes.hpp"
+
+namespace momentlab::detail {
+
+/// One cell of the arrangement inside a face of A = {xi : N_j . xi >= 0}.
+struct WalkCell {
+    /// The mode's index in enumerate_modes' order; 0 for a cell whose letters are all 'f' (it
+    /// joins the mode of xi = 0, which is mode 0 and is not itself a cell).
+    std::size_t index = 0;
+    /// Generators of the cell's closure (rays; a line as +-).
+    const std::vector<Exact3>* closure = nullptr;
+    /// The contacts closed on the face (N_j . xi = 0 there), increasing; every other contact
+    /// separates ('s').
+    std::span<const int> closed;
+    /// letters[t] is the letter of contact closed[t]: 'f', 'r' or 'l'.
+    std::span<const char> letters;
+    /// The positions t whose letter differs from the previous cell's; only when `first` is false.
+    std::span<const int> changed;
+    /// The first cell of its face: nothing to compare with.
+    bool first = true;
+};
+
+/// Walks the faces of A in the order of A.faces() and, inside each, its cells: a 2-D face in
+/// angular order, where consecutive cells differ by the contacts whose line T_j . xi = 0 bounds
+/// them. Which contacts are closed on each face is found in O(n log n) for a full-dimensional
+/// pointed A (each N_j located among the extreme rays of A*), and by testing every contact on
+/// every face otherwise (A then has at most four faces of dimension >= 1).
+class ModeWalk {
+public:
+    explicit ModeWalk(const std::vector<Contact>& contacts);
+    /// A.
+    [[nodiscard]] const Cone& feasible_twists() const { return a_; }
+    /// Calls visit for every cell; returns the number of modes (the all-f mode included).
+    std::size_t run(const Progress& progress, const std::function<void(const WalkCell&)>& visit) const;
+
+private:
+    std::vector<std::vector<int>> closed_sets(const std::vector<Face>& faces) const;
+
+    std::vector<ExactVector> normals_, tangents_;
+    Cone a_;
+};
+
+}  // namespace momentlab::detail
