@@ -132,6 +132,12 @@ std::array<std::size_t, 3> fan_triangle(const Cone& c, const ExactVector& w) {
     return {0, 1, r.size() - 1};
 }
 
+// adj(m) w for a 3 x 3 matrix given by its rows: the columns of adj(m) are r1 x r2, r2 x r0,
+// r0 x r1, so that m adj(m) = det(m) I.
+Exact3 adjugate_times(const ExactMatrix& m, const Exact3& w) {
+    return w[0] * cross(m[1], m[2]) + w[1] * cross(m[2], m[0]) + w[2] * cross(m[0], m[1]);
+}
+
 // Decides, cell after cell of the walk (mode_walk.hpp), whether e lies in the cell's
 // E = M cl(cell) + (-T), with certificates kept from the cells before:
 //  - the current plane h (h . e < 0) that held every generator of the previous cell's E: along
@@ -142,17 +148,14 @@ std::array<std::size_t, 3> fan_triangle(const Cone& c, const ExactVector& w) {
 // A cell no certificate decides has its E built, which gives the next certificate.
 class Decider {
 public:
-    Decider(const Scene& scene, const std::optional<ExactMatrix>& m, const FrictionEdges& edges, const Vec3& e)
-        : scene_(scene), m_(m), edges_(edges), e_(e), wrench_(ExactVector::input(e)) {}
+    Decider(const Scene& scene, const Cone& a, const std::optional<ExactMatrix>& m, const FrictionEdges& edges, const Vec3& e)
+        : scene_(scene), a_(a), m_(m), edges_(edges), e_(e), wrench_(ExactVector::input(e)) {}
 
     [[nodiscard]] std::size_t built() const { return built_; }
 
     bool member(const detail::WalkCell& cell) {
         cell_ = &cell;
-        images_.clear();
-        if (m_) {
-            for (const Exact3& g : *cell.closure) images_.push_back(ExactVector::from_exact(g).transformed(*m_));
-        }
+        images_ready_ = false;
         const bool answer = decide();
         if (answer) current_valid_ = false;  // no plane holds a cone that holds e
         return answer;
@@ -174,13 +177,25 @@ private:
         }
     }
 
-    bool holds_images(const ExactVector& h) const {
-        return std::all_of(images_.begin(), images_.end(), [&](const ExactVector& g) { return dot_sign(h, g) != Sign::Negative; });
+    // The images M g of the cell's twists, made when first needed (the triangles need none).
+    const std::vector<ExactVector>& images() {
+        if (!images_ready_) {
+            images_.clear();
+            if (m_) {
+                for (const Exact3& g : *cell_->closure) images_.push_back(ExactVector::from_exact(g).transformed(*m_));
+            }
+            images_ready_ = true;
+        }
+        return images_;
+    }
+    bool holds_images(const ExactVector& h) {
+        const std::vector<ExactVector>& g = images();
+        return std::all_of(g.begin(), g.end(), [&](const ExactVector& v) { return dot_sign(h, v) != Sign::Negative; });
     }
     bool holds_position(const ExactVector& h, std::size_t t) const {
         return all_edges(t, [&](const ExactVector& edge) { return dot_sign(h, edge) != Sign::Positive; });
     }
-    bool holds_all(const ExactVector& h) const {
+    bool holds_all(const ExactVector& h) {
         if (!holds_images(h)) return false;
         for (std::size_t t = 0; t < cell_->closed.size(); ++t) {
             if (!holds_position(h, t)) return false;
@@ -195,10 +210,8 @@ private:
     }
 
     bool has_piece(const Piece& p) const {
-        if (p.contact < 0) {
-            return std::any_of(cell_->closure->begin(), cell_->closure->end(), [&](const Exact3& g) {
-                return is_zero(cross(g, p.twist)) && dot(g, p.twist).sign() == Sign::Positive;
-            });
+        if (p.contact < 0) {  // the same twist among the cell's generators (along a face they recur as they are)
+            return std::any_of(cell_->closure->begin(), cell_->closure->end(), [&](const Exact3& g) { return g == p.twist; });
         }
         const char letter = letter_of_contact(p.contact);
         if (letter == 'f') return p.slot < 2;
@@ -207,6 +220,13 @@ private:
 
     bool decide() {
         if (is_zero(e_)) return true;  // in every closed cone
+        if (cell_->closed.empty()) {
+            // The interior of a full-dimensional A, where no contact touches: E = M A, and e is in
+            // it when adj(M) e is in A (M is positive definite: adj(M) = det(M) M^-1, det > 0).
+            // Quasi-static, E = {0}.
+            current_valid_ = false;
+            return m_ && a_.has(ExactVector::from_exact(adjugate_times(*m_, exact(e_))));
+        }
         const auto inside = std::find_if(triangles_.begin(), triangles_.end(), [&](const std::array<Piece, 3>& t) {
             return has_piece(t[0]) && has_piece(t[1]) && has_piece(t[2]);
         });
@@ -242,7 +262,7 @@ private:
         ++built_;
         std::vector<ExactVector> generators;
         std::vector<Piece> pieces;
-        for (std::size_t g = 0; g < images_.size(); ++g) {
+        for (std::size_t g = 0; g < images().size(); ++g) {
             generators.push_back(images_[g]);
             pieces.push_back(Piece{-1, 0, (*cell_->closure)[g]});
         }
@@ -297,12 +317,14 @@ private:
     }
 
     const Scene& scene_;
+    const Cone& a_;
     const std::optional<ExactMatrix>& m_;
     const FrictionEdges& edges_;
     Vec3 e_;
     ExactVector wrench_;
     const detail::WalkCell* cell_ = nullptr;
     std::vector<ExactVector> images_;
+    bool images_ready_ = false;
     std::optional<ExactVector> current_;
     bool current_valid_ = false;  // the current plane held every generator of the previous cell
     std::vector<ExactVector> planes_;
@@ -325,53 +347,74 @@ SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions
     const std::size_t n = scene.contacts.size();
     const detail::ModeWalk walk(scene.contacts);
     const FrictionEdges edges(scene.contacts);
-    Decider decider(scene, m, edges, e);
     // The all-f mode (xi = 0 and the cells whose letters are all 'f') is decided apart, when its
     // closure is complete; the others as the walk meets them. Its E holds -T for every contact
-    // fixed (2n generators): decided on a second thread while the walk goes on, first without
-    // the twists of merged cells (a wrench in that smaller cone is in E whatever they are).
-    std::vector<Exact3> fixed_closure;
+    // fixed (2n generators): decided as one task, first without the twists of merged cells (a
+    // wrench in that smaller cone is in E whatever they are). The faces are walked in two
+    // halves, each with its own certificates; the three tasks share two threads.
     struct Member {
-        std::size_t index;
+        std::size_t face, index;  // index within the face (0: the all-f mode)
         std::string letters;
         std::vector<Exact3> closure;
     };
-    std::vector<Member> members;
-    SceneAnswer out;
+    struct Half {
+        std::vector<Member> members;
+        std::vector<Exact3> fixed_closure;
+        std::size_t built = 0;
+    };
+    std::array<Half, 2> halves;
+    std::vector<std::size_t> counts(walk.faces());
     std::vector<int> everyone(n);
     std::iota(everyone.begin(), everyone.end(), 0);
     const std::vector<char> fixed(n, letter(ContactMode::Fixed));
-    Decider fixed_decider(scene, m, edges, e);
-    const auto fixed_member = [&] {
+    Decider fixed_decider(scene, walk.feasible_twists(), m, edges, e);
+    const auto fixed_member = [&](const std::vector<Exact3>& closure) {
         detail::WalkCell cell;
-        cell.closure = &fixed_closure;
+        cell.closure = &closure;
         cell.closed = everyone;
         cell.letters = fixed;
         return fixed_decider.member(cell);
     };
     bool fixed_holds = false;
     const std::thread::id caller = std::this_thread::get_id();
-    detail::for_each_index(2, n >= kTwoThreadContacts, [&](std::size_t task) {
+    detail::for_each_index(3, n >= kTwoThreadContacts, [&](std::size_t task) {
         if (task == 0) {
-            const std::vector<Exact3> none;
-            detail::WalkCell cell;
-            cell.closure = &none;
-            cell.closed = everyone;
-            cell.letters = fixed;
-            fixed_holds = fixed_decider.member(cell);
+            fixed_holds = fixed_member({});
             return;
         }
+        Half& half = halves[task - 1];
+        Decider decider(scene, walk.feasible_twists(), m, edges, e);
+        const std::size_t begin = walk.faces() * (task - 1) / 2, end = walk.faces() * task / 2;
         const Progress progress = std::this_thread::get_id() == caller ? options.progress : Progress();
-        out.mode_count = walk.run(progress, [&](const detail::WalkCell& cell) {
+        walk.run_faces(begin, end, progress, counts, [&](const detail::WalkCell& cell) {
             if (cell.index == 0) {
-                fixed_closure.insert(fixed_closure.end(), cell.closure->begin(), cell.closure->end());
+                half.fixed_closure.insert(half.fixed_closure.end(), cell.closure->begin(), cell.closure->end());
                 return;
             }
-            if (decider.member(cell)) members.push_back({cell.index, dense_letters(cell, n), *cell.closure});
+            if (decider.member(cell)) half.members.push_back({cell.face, cell.index, dense_letters(cell, n), *cell.closure});
         });
+        half.built = decider.built();
     });
-    if (!fixed_holds && m && !fixed_closure.empty()) fixed_holds = fixed_member();
-    if (fixed_holds) members.push_back({0, std::string(n, letter(ContactMode::Fixed)), fixed_closure});
+    // Face i's modes come after those of the faces before it.
+    std::vector<std::size_t> first_index(counts.size());
+    std::size_t total = 1;
+    for (std::size_t i = 0; i < counts.size(); ++i) {
+        first_index[i] = total;
+        total += counts[i];
+    }
+    SceneAnswer out;
+    out.mode_count = total;
+    std::vector<Exact3> fixed_closure = halves[0].fixed_closure;
+    fixed_closure.insert(fixed_closure.end(), halves[1].fixed_closure.begin(), halves[1].fixed_closure.end());
+    if (!fixed_holds && m && !fixed_closure.empty()) fixed_holds = fixed_member(fixed_closure);
+    std::vector<Member> members;
+    if (fixed_holds) members.push_back({0, 0, std::string(n, letter(ContactMode::Fixed)), fixed_closure});
+    for (Half& half : halves) {
+        for (Member& member : half.members) {
+            member.index = first_index[member.face] + member.index - 1;
+            members.push_back(std::move(member));
+        }
+    }
     std::sort(members.begin(), members.end(), [](const Member& a, const Member& b) { return a.index < b.index; });
     for (Member& member : members) {
         std::vector<ExactVector> gens;
@@ -379,7 +422,7 @@ SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions
         out.result.modes.push_back(member.index);
         out.modes.push_back(Mode{std::move(member.letters), Cone::from_generators(gens)});
     }
-    out.built = decider.built() + (fixed_decider.built() > 0 ? 1 : 0);  // the all-f mode's cone counts once
+    out.built = halves[0].built + halves[1].built + (fixed_decider.built() > 0 ? 1 : 0);  // the all-f cone counts once
     out.result.verdict = verdict_of(out.result.modes.size());
     return out;
 }

@@ -17,6 +17,8 @@ struct WalkCell {
     /// The mode's index in enumerate_modes' order; 0 for a cell whose letters are all 'f' (it
     /// joins the mode of xi = 0, which is mode 0 and is not itself a cell).
     std::size_t index = 0;
+    /// The face (an index into the walk's faces, A.faces() order).
+    std::size_t face = 0;
     /// Generators of the cell's closure (rays; a line as +-).
     const std::vector<Exact3>* closure = nullptr;
     /// The contacts closed on the face (N_j . xi = 0 there), increasing; every other contact
@@ -42,12 +44,23 @@ public:
     [[nodiscard]] const Cone& feasible_twists() const { return a_; }
     /// Calls visit for every cell; returns the number of modes (the all-f mode included).
     std::size_t run(const Progress& progress, const std::function<void(const WalkCell&)>& visit) const;
+    /// The number of faces of A (the walk's units).
+    [[nodiscard]] std::size_t faces() const { return faces_.size(); }
+    /// Walks faces begin .. end - 1 only, with each cell's index counted within its face (from 1;
+    /// 0 still for the all-f cells); counts[i] becomes face i's number of modes. The modes of
+    /// face i are numbered after those of the faces before it, so ranges walked apart (on two
+    /// threads: run_faces is const and shares nothing it writes) are numbered afterwards.
+    void run_faces(std::size_t begin, std::size_t end, const Progress& progress, std::vector<std::size_t>& counts,
+                   const std::function<void(const WalkCell&)>& visit) const;
 
 private:
     std::vector<std::vector<int>> closed_sets(const std::vector<Face>& faces) const;
 
     std::vector<ExactVector> normals_, tangents_;
     Cone a_;
+    std::vector<Exact3> lineality_;
+    std::vector<Face> faces_;
+    std::vector<std::vector<int>> closed_;  // per face, the closed contacts (increasing)
 };
 
 }  // namespace momentlab::detail

@@ -40,9 +40,10 @@ char letter_of(Sign v) {
 // The walk over one face: its cells, their mode indices and their letters.
 class FaceWalk {
 public:
-    FaceWalk(std::span<const int> closed, const std::vector<ExactVector>& tangents, std::size_t contacts, std::size_t& next,
-             const Visit& visit)
-        : closed_(closed), tangents_(tangents), contacts_(contacts), next_(next), visit_(visit), letters_(closed.size()) {}
+    FaceWalk(std::size_t face, std::span<const int> closed, const std::vector<ExactVector>& tangents, std::size_t contacts,
+             std::size_t& next, const Visit& visit)
+        : face_(face), closed_(closed), tangents_(tangents), contacts_(contacts), next_(next), visit_(visit),
+          letters_(closed.size()) {}
 
     // The cells of the relatively open face spanned by `rays` and `lineality`.
     void run(int dimension, const std::vector<Q3>& rays, const std::vector<Q3>& lineality) {
@@ -108,6 +109,7 @@ private:
 #endif
         detail::WalkCell cell;
         cell.index = index;
+        cell.face = face_;
         cell.closure = &closure_;
         cell.closed = closed_;
         cell.letters = letters_;
@@ -254,6 +256,7 @@ private:
         }
     }
 
+    std::size_t face_;
     std::span<const int> closed_;
     const std::vector<ExactVector>& tangents_;
     std::size_t contacts_;
@@ -273,6 +276,9 @@ ModeWalk::ModeWalk(const std::vector<Contact>& contacts) {
         tangents_.push_back(c.tangent_wrench());
     }
     a_ = Cone::from_halfspaces(normals_);
+    for (const ExactVector& l : a_.lineality()) lineality_.push_back(l.exact());
+    faces_ = a_.faces();
+    closed_ = closed_sets(faces_);
 }
 
 std::vector<std::vector<int>> ModeWalk::closed_sets(const std::vector<Face>& faces) const {
@@ -363,21 +369,34 @@ std::vector<std::vector<int>> ModeWalk::closed_sets(const std::vector<Face>& fac
     return out;
 }
 
-std::size_t ModeWalk::run(const Progress& progress, const Visit& visit) const {
-    std::vector<Q3> lineality;
-    for (const ExactVector& l : a_.lineality()) lineality.push_back(l.exact());
-    const std::vector<Face> faces = a_.faces();
-    const std::vector<std::vector<int>> closed = closed_sets(faces);
-    std::size_t next = 1;  // mode 0: xi = 0, every contact fixed
-    for (std::size_t i = 0; i < faces.size(); ++i) {
-        if (progress) progress("faces of the cone of motions", i, faces.size());
-        const Face& face = faces[i];
-        if (face.dimension == 0) continue;
-        std::vector<Q3> rays;
-        for (int r : face.rays) rays.push_back(a_.rays()[static_cast<std::size_t>(r)].exact());
-        FaceWalk(closed[i], tangents_, normals_.size(), next, visit).run(face.dimension, rays, lineality);
+void ModeWalk::run_faces(std::size_t begin, std::size_t end, const Progress& progress, std::vector<std::size_t>& counts,
+                         const Visit& visit) const {
+    for (std::size_t i = begin; i < end; ++i) {
+        if (progress) progress("faces of the cone of motions", i - begin, end - begin);
+        const Face& face = faces_[i];
+        std::size_t next = 1;
+        if (face.dimension > 0) {
+            std::vector<Q3> rays;
+            for (int r : face.rays) rays.push_back(a_.rays()[static_cast<std::size_t>(r)].exact());
+            FaceWalk(i, closed_[i], tangents_, normals_.size(), next, visit).run(face.dimension, rays, lineality_);
+        }
+        counts[i] = next - 1;
     }
-    return next;
+}
+
+std::size_t ModeWalk::run(const Progress& progress, const Visit& visit) const {
+    std::vector<std::size_t> counts(faces_.size());
+    std::size_t base = 0;  // the modes of the faces before; mode 0 is xi = 0, every contact fixed
+    for (std::size_t i = 0; i < faces_.size(); ++i) {
+        run_faces(i, i + 1, nullptr, counts, [&](const WalkCell& cell) {
+            WalkCell global = cell;
+            if (global.index != 0) global.index += base;
+            visit(global);
+        });
+        if (progress) progress("faces of the cone of motions", i, faces_.size());
+        base += counts[i];
+    }
+    return base + 1;
 }
 
 }  // namespace detail
