@@ -46,7 +46,12 @@ public:
           letters_(closed.size()) {}
 
     // The cells of the relatively open face spanned by `rays` and `lineality`.
-    void run(int dimension, const std::vector<Q3>& rays, const std::vector<Q3>& lineality) {
+    // `ray` is the face's ray as A stores it, for a 1-D face with a ray (its letters need no
+    // new exact vector).
+    void run(int dimension, const std::vector<Q3>& rays, const std::vector<Q3>& lineality, const ExactVector* ray,
+             const ExactVector* start, const ExactVector* finish) {
+        start_vector_ = start;
+        finish_vector_ = finish;
         auto with_lines = [&](std::vector<Q3> gens) {
             for (const Q3& l : lineality) {
                 gens.push_back(l);
@@ -64,7 +69,10 @@ public:
             return;
         }
         if (dimension == 1) {
-            if (!rays.empty()) {
+            if (ray) {
+                const std::size_t index = index_of(direct(*ray));
+                emit(index, {rays.front()}, true);
+            } else if (!rays.empty()) {
                 single(rays.front(), {rays.front()});
             } else {
                 single(lineality.front(), {lineality.front()});
@@ -77,8 +85,8 @@ public:
 
 private:
     // Letters from the signs of T_j . xi (all of them; O(closed)). Returns whether all are 'f'.
-    bool direct(const Q3& representative) {
-        const ExactVector xi = ExactVector::from_exact(representative);
+    bool direct(const Q3& representative) { return direct(ExactVector::from_exact(representative)); }
+    bool direct(const ExactVector& xi) {
         bool all_fixed = true;
         for (std::size_t t = 0; t < closed_.size(); ++t) {
             letters_[t] = letter_of(dot_sign(tangents_[static_cast<std::size_t>(closed_[t])], xi));
@@ -93,16 +101,22 @@ private:
 
     void single(const Q3& representative, std::vector<Q3> closure) {
         const std::size_t index = index_of(direct(representative));
-        emit(index, representative, std::move(closure), true);
+        emit(index, std::move(closure), true, {}, &representative);
     }
 
-    void emit(std::size_t index, const Q3& representative, std::vector<Q3> closure, bool first,
-              std::span<const int> changed = {}) {
+    // A point inside the cell whose closure is given by sector() or a single ray.
+    static Q3 rep_of(const std::vector<Q3>& closure) {
+        if (closure.size() == 1) return closure[0];
+        return closure.size() == 2 ? closure[0] + closure[1] : closure[2];
+    }
+
+    void emit(std::size_t index, std::vector<Q3> closure, bool first, std::span<const int> changed = {},
+              const Q3* representative = nullptr) {
         closure_ = std::move(closure);
 #ifndef NDEBUG
         // The letters kept up to date along the walk are the signs at the cell's representative.
         const std::vector<char> walked = letters_;
-        direct(representative);
+        direct(representative ? *representative : rep_of(closure_));
         assert(walked == letters_);
 #else
         (void)representative;
@@ -127,9 +141,7 @@ private:
             shape = Shape::Wedge;
             start = rays[0];
             finish = rays[1];
-            e = cross(start, finish);
-            if (orient(start, finish, e) < 0) std::swap(start, finish);
-            e = cross(start, finish);
+            e = cross(start, finish);  // det(start, finish, e) = |e|^2 > 0: counter-clockwise about e
         } else if (lineality.size() == 1) {
             shape = Shape::HalfPlane;
             start = lineality[0];
@@ -140,38 +152,48 @@ private:
             start = lineality[0];
             e = cross(lineality[0], lineality[1]);
         }
-        auto inside = [&](const Q3& x) {
-            if (shape == Shape::Wedge) return orient(start, x, e) > 0 && orient(x, finish, e) > 0;
-            if (shape == Shape::HalfPlane) return orient(start, x, e) > 0;
-            return true;
-        };
-        // The directions where some T_j . xi changes sign, each with its contact's position.
+        // Where T_j . xi = 0 meets the face: u = e x T_j and -u. Since e is orthogonal to
+        // `start` (and to `finish`), det(start, u, e) = |e|^2 (T_j . start) and det(u, finish, e)
+        // = -|e|^2 (T_j . finish): whether u lies inside the face, and on which side of start,
+        // are filtered signs of T_j at the face's own generators.
+        const ExactVector& start_v = *start_vector_;
         struct Critical {
             Q3 x;
             int position;
+            int half;  // about e from `start`: 0 along it, 1 within pi counter-clockwise, 2 opposite, 3 the rest
         };
         std::vector<Critical> critical;
         std::size_t vanishing = 0;  // contacts whose T_j vanishes on the whole face: always 'f'
+        // The signs just after `start` (a wedge's or half-plane's first sector): T_j at start,
+        // or where T_j . start = 0, T_j at the other generator.
+        std::vector<Sign> signs(closed_.size(), Sign::Zero);
         for (std::size_t t = 0; t < closed_.size(); ++t) {
-            const Q3 u = cross(e, tangents_[static_cast<std::size_t>(closed_[t])].exact());
+            const ExactVector& tangent = tangents_[static_cast<std::size_t>(closed_[t])];
+            const Q3 u = cross(e, tangent.exact());
             if (is_zero(u)) {
                 ++vanishing;
                 continue;
             }
-            for (const Q3& x : {u, -u}) {
-                if (inside(x)) critical.push_back({x, static_cast<int>(t)});
+            const Sign at_start = dot_sign(tangent, start_v);
+            if (shape != Shape::Plane) signs[t] = at_start != Sign::Zero ? at_start : dot_sign(tangent, *finish_vector_);
+            const int position = static_cast<int>(t);
+            if (shape == Shape::Wedge) {
+                const Sign at_finish = at_start == Sign::Zero ? signs[t] : dot_sign(tangent, *finish_vector_);
+                if (at_start == Sign::Positive && at_finish == Sign::Negative) critical.push_back({u, position, 1});
+                if (at_start == Sign::Negative && at_finish == Sign::Positive) critical.push_back({-u, position, 1});
+            } else if (shape == Shape::HalfPlane) {
+                if (at_start == Sign::Positive) critical.push_back({u, position, 1});
+                if (at_start == Sign::Negative) critical.push_back({-u, position, 1});
+            } else {
+                int half_u = at_start == Sign::Positive ? 1 : 3;
+                if (at_start == Sign::Zero) half_u = sign(dot(start, u)) > 0 ? 0 : 2;
+                critical.push_back({u, position, half_u});
+                critical.push_back({-u, position, (half_u + 2) % 4});
             }
         }
         // Angular order counter-clockwise about e, from `start` (full turn for the plane).
-        auto half = [&](const Q3& x) {
-            const int o = orient(start, x, e);
-            if (o > 0) return 1;
-            if (o < 0) return 3;
-            return sign(dot(start, x)) > 0 ? 0 : 2;
-        };
         std::sort(critical.begin(), critical.end(), [&](const Critical& a, const Critical& b) {
-            const int ha = half(a.x), hb = half(b.x);
-            if (ha != hb) return ha < hb;
+            if (a.half != b.half) return a.half < b.half;
             return orient(a.x, b.x, e) > 0;
         });
         // Groups of one direction; the first of each is its ray.
@@ -179,7 +201,7 @@ private:
         std::vector<int> members;  // positions, group by group
         std::vector<std::size_t> member_start;
         for (std::size_t i = 0; i < critical.size(); ++i) {
-            const bool same = !group.empty() && half(critical[group.back()].x) == half(critical[i].x) &&
+            const bool same = !group.empty() && critical[group.back()].half == critical[i].half &&
                               orient(critical[group.back()].x, critical[i].x, e) == 0;
             if (!same) {
                 group.push_back(i);
@@ -193,10 +215,11 @@ private:
         const auto group_members = [&](std::size_t r) {
             return std::span<const int>(members.data() + member_start[r], member_start[r + 1] - member_start[r]);
         };
-        auto sector = [&](const Q3& a, const Q3& b) -> std::pair<Q3, std::vector<Q3>> {
-            if (orient(a, b, e) > 0) return {a + b, {a, b}};
-            const Q3 perpendicular = cross(e, a);  // a turned by a quarter counter-clockwise
-            return {perpendicular, {a, -a, perpendicular}};
+        // A sector's closure; its representative is the sum of the two, or the third (rep_of).
+        // Only a plane's sectors can reach pi (two opposite rays).
+        auto sector = [&](const Q3& a, const Q3& b) -> std::vector<Q3> {
+            if (shape != Shape::Plane || orient(a, b, e) > 0) return {a, b};
+            return {a, -a, cross(e, a)};  // a turned by a quarter counter-clockwise
         };
         if (r_count == 0) {
             if (shape == Shape::Plane) {
@@ -204,8 +227,9 @@ private:
             } else if (shape == Shape::HalfPlane) {
                 single(rays[0], {start, finish, rays[0]});
             } else {
-                auto [rep, closure] = sector(start, finish);
-                single(rep, std::move(closure));
+                std::vector<Q3> closure = sector(start, finish);
+                const Q3 representative = rep_of(closure);
+                single(representative, std::move(closure));
             }
             return;
         }
@@ -227,23 +251,19 @@ private:
         const auto sector_at = [&](std::size_t i) {
             return shape == Shape::Plane ? sector(ray(i), ray(i + 1)) : sector(sequence[i], sequence[i + 1]);
         };
-        // Signs of the sector before the first ray visited: the last sector of the plane's turn,
-        // the first sector of a wedge or half-plane (visited first).
-        std::vector<Sign> signs(closed_.size());
-        {
-            auto [rep, closure] = sector_at(shape == Shape::Plane ? r_count - 1 : 0);
-            const ExactVector xi = ExactVector::from_exact(rep);
-            for (std::size_t t = 0; t < closed_.size(); ++t) {
-                signs[t] = dot_sign(tangents_[static_cast<std::size_t>(closed_[t])], xi);
-                letters_[t] = letter_of(signs[t]);
-            }
-            if (shape != Shape::Plane) emit(sector_index[0], rep, std::move(closure), true);
+        // Signs of the sector before the first ray visited: the last sector of the plane's turn
+        // (at its representative), the first sector of a wedge or half-plane (found above).
+        if (shape == Shape::Plane) {
+            const ExactVector xi = ExactVector::from_exact(rep_of(sector_at(r_count - 1)));
+            for (std::size_t t = 0; t < closed_.size(); ++t) signs[t] = dot_sign(tangents_[static_cast<std::size_t>(closed_[t])], xi);
         }
+        for (std::size_t t = 0; t < closed_.size(); ++t) letters_[t] = letter_of(signs[t]);
+        if (shape != Shape::Plane) emit(sector_index[0], sector_at(0), true);
         bool first = shape == Shape::Plane;
         for (std::size_t r = 0; r < r_count; ++r) {
             const std::span<const int> changed = group_members(r);
             for (int t : changed) letters_[static_cast<std::size_t>(t)] = 'f';
-            emit(ray_index[r], ray(r), {ray(r)}, first, changed);
+            emit(ray_index[r], {ray(r)}, first, changed);
             first = false;
             for (int t : changed) {
                 Sign& s = signs[static_cast<std::size_t>(t)];
@@ -251,12 +271,13 @@ private:
                 letters_[static_cast<std::size_t>(t)] = letter_of(s);
             }
             const std::size_t i = shape == Shape::Plane ? r : r + 1;
-            auto [rep, closure] = sector_at(i);
-            emit(sector_index[i], rep, std::move(closure), false, changed);
+            emit(sector_index[i], sector_at(i), false, changed);
         }
     }
 
     std::size_t face_;
+    const ExactVector* start_vector_ = nullptr;   // a 2-D face: its first ray, or its line
+    const ExactVector* finish_vector_ = nullptr;  // a wedge: its second ray; a half-plane: its ray
     std::span<const int> closed_;
     const std::vector<ExactVector>& tangents_;
     std::size_t contacts_;
@@ -378,7 +399,16 @@ void ModeWalk::run_faces(std::size_t begin, std::size_t end, const Progress& pro
         if (face.dimension > 0) {
             std::vector<Q3> rays;
             for (int r : face.rays) rays.push_back(a_.rays()[static_cast<std::size_t>(r)].exact());
-            FaceWalk(i, closed_[i], tangents_, normals_.size(), next, visit).run(face.dimension, rays, lineality_);
+            // A's own vectors for the face's generators: filtered signs against them.
+            const auto a_ray = [&](std::size_t k) { return &a_.rays()[static_cast<std::size_t>(face.rays[k])]; };
+            const ExactVector* ray = face.dimension == 1 && face.rays.size() == 1 ? a_ray(0) : nullptr;
+            const ExactVector* start = nullptr;
+            const ExactVector* finish = nullptr;
+            if (face.dimension == 2) {
+                start = a_.lineality().empty() ? a_ray(0) : &a_.lineality().front();
+                finish = a_.lineality().empty() ? a_ray(1) : (a_.lineality().size() == 1 ? a_ray(0) : nullptr);
+            }
+            FaceWalk(i, closed_[i], tangents_, normals_.size(), next, visit).run(face.dimension, rays, lineality_, ray, start, finish);
         }
         counts[i] = next - 1;
     }
