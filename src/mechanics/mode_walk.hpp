@@ -39,7 +39,12 @@ struct WalkCell {
 /// every face otherwise (A then has at most four faces of dimension >= 1).
 class ModeWalk {
 public:
-    explicit ModeWalk(const std::vector<Contact>& contacts);
+    /// How the closed contacts of each face are found: by locating each N_j among A's facet
+    /// normals (possible when A is full-dimensional and pointed), by testing each contact on each
+    /// face, or (Auto) by testing when A has at most 16 faces and locating otherwise. Tests force
+    /// one way to compare them.
+    enum class Closed { Auto, Locate, Test };
+    explicit ModeWalk(const std::vector<Contact>& contacts, Closed how = Closed::Auto);
     /// A.
     [[nodiscard]] const Cone& feasible_twists() const { return a_; }
     /// Calls visit for every cell; returns the number of modes (the all-f mode included).
@@ -54,7 +59,7 @@ public:
                    const std::function<void(const WalkCell&)>& visit) const;
 
 private:
-    std::vector<std::vector<int>> closed_sets(const std::vector<Face>& faces) const;
+    std::vector<std::vector<int>> closed_sets(const std::vector<Face>& faces, Closed how) const;
 
     std::vector<ExactVector> normals_, tangents_;
     Cone a_;

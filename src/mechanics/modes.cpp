@@ -291,7 +291,7 @@ private:
 
 namespace detail {
 
-ModeWalk::ModeWalk(const std::vector<Contact>& contacts) {
+ModeWalk::ModeWalk(const std::vector<Contact>& contacts, Closed how) {
     for (const Contact& c : contacts) {
         normals_.push_back(c.normal_wrench());
         tangents_.push_back(c.tangent_wrench());
@@ -299,16 +299,21 @@ ModeWalk::ModeWalk(const std::vector<Contact>& contacts) {
     a_ = Cone::from_halfspaces(normals_);
     for (const ExactVector& l : a_.lineality()) lineality_.push_back(l.exact());
     faces_ = a_.faces();
-    closed_ = closed_sets(faces_);
+    closed_ = closed_sets(faces_, how);
 }
 
-std::vector<std::vector<int>> ModeWalk::closed_sets(const std::vector<Face>& faces) const {
+// Up to this many faces every contact is tested on every face (the bowl of 10^5 contacts has
+// 10): below about log2(n) of them the tests cost less than the binary searches.
+constexpr std::size_t kFewFaces = 16;
+
+std::vector<std::vector<int>> ModeWalk::closed_sets(const std::vector<Face>& faces, Closed how) const {
     std::vector<std::vector<int>> out(faces.size());
     const std::vector<ExactVector>& f = a_.facets();
     const std::size_t k = f.size(), n = normals_.size();
-    if (!(a_.dimension() == 3 && a_.is_pointed() && k >= 3)) {
-        // At most four faces of dimension >= 1 (A has a line, or lies in a plane): N_j . g = 0
-        // for every generator g of the face.
+    const bool can_locate = a_.dimension() == 3 && a_.is_pointed() && k >= 3;
+    if (!can_locate || how == Closed::Test || (how == Closed::Auto && faces.size() <= kFewFaces)) {
+        // Few faces (at most four when A has a line or lies in a plane): N_j . g = 0 for every
+        // generator g of the face, a filtered dot product each, is faster than locating N_j.
         for (std::size_t i = 0; i < faces.size(); ++i) {
             if (faces[i].dimension == 0) continue;
             for (std::size_t j = 0; j < n; ++j) {

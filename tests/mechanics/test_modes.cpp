@@ -3,6 +3,8 @@
 // normals, and invariance under exact transforms.
 #include <gtest/gtest.h>
 
+#include "mechanics/mode_walk.hpp"
+
 #include <map>
 #include <set>
 #include <sstream>
@@ -190,6 +192,66 @@ TEST(Modes, SlantedNormalsAgreeWithOracleAndUnderExactTransforms) {
     EXPECT_GE(scenes, 1000);
     EXPECT_GE(transformed, 900);
     for (const auto& [k, v] : transforms) EXPECT_GE(v, 100) << k;
+}
+
+// Which contacts are closed on each face, found the two ways the walk has: locating each N_j
+// among A's facet normals (taken on cones of more than 16 faces), and testing every contact on
+// every face (the definition, N_j . g = 0 for each generator g of the face). Both must hand on
+// the same cells: index, face, closed contacts, letters and closure, in the same order. The
+// scenes have many contacts on slanted, concurrent, circular and integer normals, with exact
+// duplicates and normals on the boundary of cone(N_j), so that A has many faces.
+TEST(Modes, LocatingClosedContactsAgreesWithTestingEveryFace) {
+    testing::Random rnd(20261125);
+    const testing::SceneFamily families[] = {testing::SceneFamily::Concurrent, testing::SceneFamily::OnACircle,
+                                             testing::SceneFamily::SlantedIntegers, testing::SceneFamily::GeneralDoubles};
+    int located = 0, cells = 0;
+    // Floor contacts (normal +y) and wall contacts (normal +-x) at integer points, and contacts
+    // where a floor's normal line meets a wall's, with the sum of their normals: exactly
+    // N_j + N_k, so on A*'s facet between them whenever those two are neighbouring extreme rays.
+    const auto floors_and_walls = [&] {
+        Scene scene;
+        std::vector<Contact> floors, walls;
+        for (int k = rnd.integer(2, 8); k > 0; --k) floors.push_back(Contact::make(Vec2(rnd.integer(-4, 4), rnd.integer(-2, 2)), Vec2(0, 1), 0.5));
+        for (int k = rnd.integer(1, 6); k > 0; --k) {
+            walls.push_back(Contact::make(Vec2(rnd.integer(-4, 4), rnd.integer(-2, 4)), Vec2(rnd.integer(0, 1) ? 1 : -1, 0), 0.3));
+        }
+        scene.contacts = floors;
+        scene.contacts.insert(scene.contacts.end(), walls.begin(), walls.end());
+        for (int k = rnd.integer(1, 6); k > 0; --k) {
+            const Contact& f = floors[static_cast<std::size_t>(rnd.integer(0, static_cast<int>(floors.size()) - 1))];
+            const Contact& w = walls[static_cast<std::size_t>(rnd.integer(0, static_cast<int>(walls.size()) - 1))];
+            scene.contacts.push_back(Contact::make(Vec2(f.point.x(), w.point.y()), f.normal + w.normal, 0.4));
+        }
+        return scene;
+    };
+    for (int i = 0; i < 400; ++i) {
+        Scene scene = i % 5 == 4 ? floors_and_walls() : testing::random_scene(rnd, families[i % 4], 40, i % 3 == 2);
+        if (i % 2 == 1 && !scene.contacts.empty()) {  // exact repeats: the same normal line twice
+            for (int r = 0; r < 4; ++r) scene.contacts.push_back(scene.contacts[static_cast<std::size_t>(rnd.integer(0, static_cast<int>(scene.contacts.size()) - 1))]);
+        }
+        struct Seen {
+            std::size_t index, face;
+            std::vector<int> closed;
+            std::string letters;
+            std::size_t closure;
+            bool operator==(const Seen&) const = default;
+        };
+        const auto walk = [&](detail::ModeWalk::Closed how) {
+            std::vector<Seen> out;
+            detail::ModeWalk(scene.contacts, how).run(nullptr, [&](const detail::WalkCell& c) {
+                out.push_back({c.index, c.face, {c.closed.begin(), c.closed.end()}, {c.letters.begin(), c.letters.end()}, c.closure->size()});
+            });
+            return out;
+        };
+        const auto tested = walk(detail::ModeWalk::Closed::Test);
+        const auto by_location = walk(detail::ModeWalk::Closed::Locate);
+        EXPECT_TRUE(tested == by_location) << "scene " << i << ": " << describe(scene.contacts);
+        const Cone a = detail::ModeWalk(scene.contacts).feasible_twists();
+        located += a.dimension() == 3 && a.is_pointed() && a.facets().size() >= 3;
+        cells += static_cast<int>(tested.size());
+    }
+    std::cout << "[Modes] closed contacts located on " << located << " scenes with a pointed A, " << cells << " cells\n";
+    EXPECT_GE(located, 40);
 }
 
 }  // namespace
