@@ -157,6 +157,7 @@ public:
         cell_ = &cell;
         images_ready_ = false;
         const bool answer = decide();
+        last_face_ = cell.face;
         if (answer) current_valid_ = false;  // no plane holds a cone that holds e
         return answer;
     }
@@ -237,7 +238,9 @@ private:
         // The current plane: along a face's walk, only what changed since the previous cell.
         if (current_) {
             bool holds = holds_images(*current_);
-            if (holds && current_valid_ && !cell_->first) {
+            // (A cell the caller skips, one that joins the all-f mode, changes only contacts the
+            // next cell of its face lists again; a new face starts over.)
+            if (holds && current_valid_ && !cell_->first && cell_->face == last_face_) {
                 for (int t : cell_->changed) holds = holds && holds_position(*current_, static_cast<std::size_t>(t));
             } else if (holds) {
                 holds = holds_all(*current_);
@@ -327,6 +330,7 @@ private:
     bool images_ready_ = false;
     std::optional<ExactVector> current_;
     bool current_valid_ = false;  // the current plane held every generator of the previous cell
+    std::size_t last_face_ = static_cast<std::size_t>(-1);  // that cell's face
     std::vector<ExactVector> planes_;
     std::vector<std::array<Piece, 3>> triangles_;
     std::size_t built_ = 0;
