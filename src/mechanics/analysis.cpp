@@ -49,30 +49,51 @@ constexpr std::size_t kTwoThreadContacts = 20;
 // share them): the static cone's two edges, and the kinetic ones n + mu_k t, n - mu_k t.
 struct FrictionEdges {
     std::vector<std::array<ExactVector, 2>> statics, kinetics;
+    std::vector<char> kinetic_is_static;  // mu_k = mu: the kinetic edges are the static ones
 
-    explicit FrictionEdges(const std::vector<Contact>& contacts) : statics(contacts.size()), kinetics(contacts.size()) {
+    explicit FrictionEdges(const std::vector<Contact>& contacts)
+        : statics(contacts.size()), kinetics(contacts.size()), kinetic_is_static(contacts.size()) {
         // Exact constructions, a few microseconds each: two halves on two threads for large scenes.
         const std::size_t n = contacts.size();
         detail::for_each_index(2, n >= kTwoThreadContacts, [&](std::size_t half) {
             for (std::size_t j = n * half / 2; j < n * (half + 1) / 2; ++j) {
                 const Contact& c = contacts[j];
                 statics[j] = friction_cone_edges(c.point, c.normal, c.mu);
-                kinetics[j] = c.mu_kinetic == c.mu ? statics[j] : friction_cone_edges(c.point, c.normal, c.mu_kinetic);
+                kinetic_is_static[j] = c.mu_kinetic == c.mu;
+                kinetics[j] = kinetic_is_static[j] ? statics[j] : friction_cone_edges(c.point, c.normal, c.mu_kinetic);
             }
         });
     }
 
-    // Calls f(edge) for each generator of the contact cone T of a mode: both static edges of an
-    // f contact, n - mu_k t of an r contact (friction opposes sliding along +t), n + mu_k t of an l.
+    // A name for each edge, so that modes can tell whether they share one: 0, 1 the static
+    // edges; 2, 3 the kinetic ones (0, 1 again when mu_k = mu). The slot of contact j's edge
+    // with letter 'r' or 'l':
+    [[nodiscard]] int sliding_slot(std::size_t j, char letter) const {
+        const int side = letter == 'r' ? 1 : 0;
+        return kinetic_is_static[j] ? side : side + 2;
+    }
+
+    // Calls f(edge, slot) for each generator contact j adds to the contact cone T of a mode in
+    // which its letter is `letter`: both static edges of f, n - mu_k t of r (friction opposes
+    // sliding along +t), n + mu_k t of l, none of s. Stops at the first f that returns false.
+    template <class F>
+    bool for_contact(std::size_t j, char letter, F f) const {
+        switch (letter) {
+            case 'f': return f(statics[j][0], 0) && f(statics[j][1], 1);
+            case 'r': return f(kinetics[j][1], sliding_slot(j, letter));
+            case 'l': return f(kinetics[j][0], sliding_slot(j, letter));
+            default: return true;
+        }
+    }
+
+    // Calls f(edge) for each generator of the contact cone T of a mode.
     template <class F>
     void for_each(const Mode& mode, F f) const {
         for (std::size_t j = 0; j < statics.size(); ++j) {
-            switch (mode.letters[j]) {
-                case 'f': f(statics[j][0]), f(statics[j][1]); break;
-                case 'r': f(kinetics[j][1]); break;
-                case 'l': f(kinetics[j][0]); break;
-                default: break;
-            }
+            for_contact(j, mode.letters[j], [&](const ExactVector& edge, int) {
+                f(edge);
+                return true;
+            });
         }
     }
 };
@@ -107,20 +128,13 @@ std::vector<ModeForces> analyze(const Scene& scene, const AnalysisOptions& optio
 namespace {
 
 // A generator of some mode's E, named so that another mode can tell whether it has it too:
-// contact j's friction edge `slot` (0, 1 static; 2, 3 kinetic, as FrictionEdges), negated, or
+// contact j's friction edge `slot` (FrictionEdges::for_contact), negated, or
 // the image M r of a twist r (contact < 0).
 struct Piece {
     int contact = -1;
     int slot = 0;
     Exact3 twist{};
 };
-
-// The slot of contact j's edge in a mode with letter `letter` ('r' or 'l'); the kinetic edges
-// are the static ones when mu_k = mu.
-int sliding_slot(const Contact& c, char letter) {
-    const int side = letter == 'r' ? 1 : 0;
-    return c.mu_kinetic == c.mu ? side : side + 2;
-}
 
 // Three generators of the full-dimensional pointed cone c whose cone holds w (a fan from ray 0;
 // w in c), as indices into c.rays().
@@ -148,8 +162,8 @@ Exact3 adjugate_times(const ExactMatrix& m, const Exact3& w) {
 // A cell no certificate decides has its E built, which gives the next certificate.
 class Decider {
 public:
-    Decider(const Scene& scene, const Cone& a, const std::optional<ExactMatrix>& m, const FrictionEdges& edges, const Vec3& e)
-        : scene_(scene), a_(a), m_(m), edges_(edges), e_(e), wrench_(ExactVector::input(e)) {}
+    Decider(const Cone& a, const std::optional<ExactMatrix>& m, const FrictionEdges& edges, const Vec3& e)
+        : a_(a), m_(m), edges_(edges), e_(e), wrench_(ExactVector::input(e)) {}
 
     [[nodiscard]] std::size_t built() const { return built_; }
 
@@ -166,18 +180,6 @@ private:
     static constexpr std::size_t kCache = 8;
     static constexpr std::size_t kSmallFace = 32;  // closed contacts for a full check of cached planes
 
-    // f(edge) for each friction edge the contact at position t contributes (E holds -edge).
-    template <class F>
-    bool all_edges(std::size_t t, F f) const {
-        const auto j = static_cast<std::size_t>(cell_->closed[t]);
-        switch (cell_->letters[t]) {
-            case 'f': return f(edges_.statics[j][0]) && f(edges_.statics[j][1]);
-            case 'r': return f(edges_.kinetics[j][1]);
-            case 'l': return f(edges_.kinetics[j][0]);
-            default: return true;
-        }
-    }
-
     // The images M g of the cell's twists, made when first needed (the triangles need none).
     const std::vector<ExactVector>& images() {
         if (!images_ready_) {
@@ -193,8 +195,10 @@ private:
         const std::vector<ExactVector>& g = images();
         return std::all_of(g.begin(), g.end(), [&](const ExactVector& v) { return dot_sign(h, v) != Sign::Negative; });
     }
+    // h holds the generators (-edge) that the contact at position t adds.
     bool holds_position(const ExactVector& h, std::size_t t) const {
-        return all_edges(t, [&](const ExactVector& edge) { return dot_sign(h, edge) != Sign::Positive; });
+        return edges_.for_contact(static_cast<std::size_t>(cell_->closed[t]), cell_->letters[t],
+                                  [&](const ExactVector& edge, int) { return dot_sign(h, edge) != Sign::Positive; });
     }
     bool holds_all(const ExactVector& h) {
         if (!holds_images(h)) return false;
@@ -216,7 +220,7 @@ private:
         }
         const char letter = letter_of_contact(p.contact);
         if (letter == 'f') return p.slot < 2;
-        return (letter == 'r' || letter == 'l') && p.slot == sliding_slot(scene_.contacts[static_cast<std::size_t>(p.contact)], letter);
+        return (letter == 'r' || letter == 'l') && p.slot == edges_.sliding_slot(static_cast<std::size_t>(p.contact), letter);
     }
 
     bool decide() {
@@ -271,17 +275,11 @@ private:
         }
         for (std::size_t t = 0; t < cell_->closed.size(); ++t) {
             const int j = cell_->closed[t];
-            const auto jj = static_cast<std::size_t>(j);
-            const char letter = cell_->letters[t];
-            if (letter == 'f') {
-                for (int slot = 0; slot < 2; ++slot) {
-                    generators.push_back(edges_.statics[jj][static_cast<std::size_t>(slot)].negated());
-                    pieces.push_back(Piece{j, slot, {}});
-                }
-            } else if (letter == 'r' || letter == 'l') {
-                generators.push_back(edges_.kinetics[jj][letter == 'r' ? 1 : 0].negated());
-                pieces.push_back(Piece{j, sliding_slot(scene_.contacts[jj], letter), {}});
-            }
+            edges_.for_contact(static_cast<std::size_t>(j), cell_->letters[t], [&](const ExactVector& edge, int slot) {
+                generators.push_back(edge.negated());
+                pieces.push_back(Piece{j, slot, {}});
+                return true;
+            });
         }
         const Cone applied = Cone::from_generators(generators);
         if (applied.has(e_)) {
@@ -319,7 +317,6 @@ private:
         }
     }
 
-    const Scene& scene_;
     const Cone& a_;
     const std::optional<ExactMatrix>& m_;
     const FrictionEdges& edges_;
@@ -335,12 +332,6 @@ private:
     std::vector<std::array<Piece, 3>> triangles_;
     std::size_t built_ = 0;
 };
-
-std::string dense_letters(const detail::WalkCell& cell, std::size_t n) {
-    std::string s(n, letter(ContactMode::Separating));
-    for (std::size_t t = 0; t < cell.closed.size(); ++t) s[static_cast<std::size_t>(cell.closed[t])] = cell.letters[t];
-    return s;
-}
 
 }  // namespace
 
@@ -371,7 +362,7 @@ SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions
     std::vector<int> everyone(n);
     std::iota(everyone.begin(), everyone.end(), 0);
     const std::vector<char> fixed(n, letter(ContactMode::Fixed));
-    Decider fixed_decider(scene, walk.feasible_twists(), m, edges, e);
+    Decider fixed_decider(walk.feasible_twists(), m, edges, e);
     const auto fixed_member = [&](const std::vector<Exact3>& closure) {
         detail::WalkCell cell;
         cell.closure = &closure;
@@ -387,7 +378,7 @@ SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions
             return;
         }
         Half& half = halves[task - 1];
-        Decider decider(scene, walk.feasible_twists(), m, edges, e);
+        Decider decider(walk.feasible_twists(), m, edges, e);
         const std::size_t begin = walk.faces() * (task - 1) / 2, end = walk.faces() * task / 2;
         const Progress progress = std::this_thread::get_id() == caller ? options.progress : Progress();
         walk.run_faces(begin, end, progress, counts, [&](const detail::WalkCell& cell) {
@@ -395,7 +386,7 @@ SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions
                 half.fixed_closure.insert(half.fixed_closure.end(), cell.closure->begin(), cell.closure->end());
                 return;
             }
-            if (decider.member(cell)) half.members.push_back({cell.face, cell.index, dense_letters(cell, n), *cell.closure});
+            if (decider.member(cell)) half.members.push_back({cell.face, cell.index, cell.all_letters(n), *cell.closure});
         });
         half.built = decider.built();
     });

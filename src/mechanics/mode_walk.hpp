@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <functional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "momentlab/core/exact.hpp"
@@ -30,6 +31,13 @@ struct WalkCell {
     std::span<const int> changed;
     /// The first cell of its face: nothing to compare with.
     bool first = true;
+
+    /// The mode's letters for all n contacts ('s' for those not closed).
+    [[nodiscard]] std::string all_letters(std::size_t n) const {
+        std::string s(n, letter(ContactMode::Separating));
+        for (std::size_t t = 0; t < closed.size(); ++t) s[static_cast<std::size_t>(closed[t])] = letters[t];
+        return s;
+    }
 };
 
 /// Walks the faces of A in the order of A.faces() and, inside each, its cells: a 2-D face in

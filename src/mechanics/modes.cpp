@@ -69,11 +69,10 @@ public:
             return;
         }
         if (dimension == 1) {
-            if (ray) {
+            if (!rays.empty()) {  // its letters at the ray as A stores it
+                assert(ray);
                 const std::size_t index = index_of(direct(*ray));
                 emit(index, {rays.front()}, true);
-            } else if (!rays.empty()) {
-                single(rays.front(), {rays.front()});
             } else {
                 single(lineality.front(), {lineality.front()});
                 single(-lineality.front(), {-lineality.front()});
@@ -458,10 +457,7 @@ ModeSet enumerate_modes(const std::vector<Contact>& contacts, const Progress& pr
         }
         auto& gens = closures[cell.index];
         gens.insert(gens.end(), cell.closure->begin(), cell.closure->end());
-        if (cell.index == 0) return;
-        std::string s(n, letter(ContactMode::Separating));
-        for (std::size_t t = 0; t < cell.closed.size(); ++t) s[static_cast<std::size_t>(cell.closed[t])] = cell.letters[t];
-        letters[cell.index] = std::move(s);
+        if (cell.index != 0) letters[cell.index] = cell.all_letters(n);
     });
     ModeSet out;
     out.feasible_twists = walk.feasible_twists();
