@@ -267,23 +267,23 @@ private:
     // E built from its generators; a new certificate either way.
     bool build() {
         ++built_;
-        std::vector<ExactVector> generators;
-        std::vector<Piece> pieces;
-        for (std::size_t g = 0; g < images().size(); ++g) {
-            generators.push_back(images_[g]);
-            pieces.push_back(Piece{-1, 0, (*cell_->closure)[g]});
-        }
+        // The images first, then the contacts' edges; a contact's generator is named by
+        // (contact, slot), kept beside it (a twist is named by itself, when a triangle needs it).
+        std::vector<ExactVector> generators = images();
+        std::vector<std::pair<int, int>> named;
+        generators.reserve(generators.size() + 2 * cell_->closed.size());
+        named.reserve(2 * cell_->closed.size());
         for (std::size_t t = 0; t < cell_->closed.size(); ++t) {
             const int j = cell_->closed[t];
             edges_.for_contact(static_cast<std::size_t>(j), cell_->letters[t], [&](const ExactVector& edge, int slot) {
                 generators.push_back(edge.negated());
-                pieces.push_back(Piece{j, slot, {}});
+                named.emplace_back(j, slot);
                 return true;
             });
         }
         const Cone applied = Cone::from_generators(generators);
         if (applied.has(e_)) {
-            if (applied.dimension() == 3 && applied.is_pointed()) remember_triangle(applied, generators, pieces);
+            if (applied.dimension() == 3 && applied.is_pointed()) remember_triangle(applied, generators, named);
             return true;
         }
         // A facet or equation of E with h . e < 0 (one exists: e is outside E).
@@ -296,7 +296,8 @@ private:
         return false;
     }
 
-    void remember_triangle(const Cone& applied, const std::vector<ExactVector>& generators, const std::vector<Piece>& pieces) {
+    void remember_triangle(const Cone& applied, const std::vector<ExactVector>& generators,
+                           const std::vector<std::pair<int, int>>& named) {
         // Name the three rays by generators pointing the same way (each ray is one).
         std::array<Piece, 3> t;
         const auto corners = fan_triangle(applied, wrench_);
@@ -306,7 +307,8 @@ private:
                 return parallel(v, ray) && dot_sign(v, ray) == Sign::Positive;
             });
             if (g == generators.end()) return;
-            t[corner] = pieces[static_cast<std::size_t>(g - generators.begin())];
+            const std::size_t k = static_cast<std::size_t>(g - generators.begin()), twists = images_.size();
+            t[corner] = k < twists ? Piece{-1, 0, (*cell_->closure)[k]} : Piece{named[k - twists].first, named[k - twists].second, {}};
         }
         // Kept only when exactly checked: det(a, b, c) > 0 and w on the inner side of each face.
         const ExactVector &a = applied.rays()[corners[0]], &b = applied.rays()[corners[1]], &c = applied.rays()[corners[2]];
@@ -333,20 +335,58 @@ private:
     std::size_t built_ = 0;
 };
 
+// The all-f mode's E once its closure (the twists of the cells merged into it) is known: the
+// images M g of those twists and -T of every contact fixed.
+Cone fixed_applied(const std::optional<ExactMatrix>& m, const FrictionEdges& edges, const std::vector<Exact3>& closure) {
+    std::vector<ExactVector> generators;
+    generators.reserve((m ? closure.size() : 0) + 2 * edges.statics.size());
+    if (m) {
+        for (const Exact3& g : closure) generators.push_back(ExactVector::from_exact(g).transformed(*m));
+    }
+    for (const auto& pair : edges.statics) {
+        for (const ExactVector& edge : pair) generators.push_back(edge.negated());
+    }
+    return Cone::from_generators(generators);
+}
+
 }  // namespace
 
-SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions& options) {
+struct SceneQuestions::State {
+    State(const Scene& scene, const AnalysisOptions& options)
+        : m(inertia_of(scene, options, "query_scene")),
+          n((detail::check_contacts(scene.contacts), scene.contacts.size())),
+          walk(scene.contacts),
+          edges(scene.contacts),
+          progress(options.progress) {}
+
+    std::optional<ExactMatrix> m;
+    std::size_t n;
+    detail::ModeWalk walk;
+    FrictionEdges edges;
+    Progress progress;
+    // After the first answer: the twists of the cells that join the all-f mode; from the second,
+    // that mode's E (built once; every answer then tests e against it).
+    std::optional<std::vector<Exact3>> fixed_closure;
+    std::optional<Cone> fixed_cone;
+};
+
+SceneQuestions::SceneQuestions(const Scene& scene, const AnalysisOptions& options)
+    : state_(std::make_unique<State>(scene, options)) {}
+SceneQuestions::~SceneQuestions() = default;
+SceneQuestions::SceneQuestions(SceneQuestions&&) noexcept = default;
+SceneQuestions& SceneQuestions::operator=(SceneQuestions&&) noexcept = default;
+
+SceneAnswer SceneQuestions::answer(const Vec3& e) {
     if (!e.allFinite()) throw std::invalid_argument("query_scene: the wrench must be finite");
-    const std::optional<ExactMatrix> m = inertia_of(scene, options, "query_scene");
-    detail::check_contacts(scene.contacts);
-    const std::size_t n = scene.contacts.size();
-    const detail::ModeWalk walk(scene.contacts);
-    const FrictionEdges edges(scene.contacts);
+    State& s = *state_;
+    const std::size_t n = s.n;
+    const detail::ModeWalk& walk = s.walk;
+    const std::optional<ExactMatrix>& m = s.m;
     // The all-f mode (xi = 0 and the cells whose letters are all 'f') is decided apart, when its
     // closure is complete; the others as the walk meets them. Its E holds -T for every contact
-    // fixed (2n generators): decided as one task, first without the twists of merged cells (a
-    // wrench in that smaller cone is in E whatever they are). The faces are walked in two
-    // halves, each with its own certificates; the three tasks share two threads.
+    // fixed (2n generators): decided as one task, at the first answer first without the twists
+    // of merged cells (a wrench in that smaller cone is in E whatever they are). The faces are
+    // walked in two halves, each with its own certificates; the three tasks share two threads.
     struct Member {
         std::size_t face, index;  // index within the face (0: the all-f mode)
         std::string letters;
@@ -362,7 +402,7 @@ SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions
     std::vector<int> everyone(n);
     std::iota(everyone.begin(), everyone.end(), 0);
     const std::vector<char> fixed(n, letter(ContactMode::Fixed));
-    Decider fixed_decider(walk.feasible_twists(), m, edges, e);
+    Decider fixed_decider(walk.feasible_twists(), m, s.edges, e);
     const auto fixed_member = [&](const std::vector<Exact3>& closure) {
         detail::WalkCell cell;
         cell.closure = &closure;
@@ -371,16 +411,25 @@ SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions
         return fixed_decider.member(cell);
     };
     bool fixed_holds = false;
+    bool fixed_built = false;
     const std::thread::id caller = std::this_thread::get_id();
     detail::for_each_index(3, n >= kTwoThreadContacts, [&](std::size_t task) {
         if (task == 0) {
-            fixed_holds = fixed_member({});
+            if (s.fixed_closure && n > 0) {  // a later answer: the mode's E, built once
+                if (!s.fixed_cone) {
+                    s.fixed_cone = fixed_applied(m, s.edges, *s.fixed_closure);
+                    fixed_built = true;
+                }
+                fixed_holds = s.fixed_cone->has(e);
+            } else {
+                fixed_holds = fixed_member({});
+            }
             return;
         }
         Half& half = halves[task - 1];
-        Decider decider(walk.feasible_twists(), m, edges, e);
+        Decider decider(walk.feasible_twists(), m, s.edges, e);
         const std::size_t begin = walk.faces() * (task - 1) / 2, end = walk.faces() * task / 2;
-        const Progress progress = std::this_thread::get_id() == caller ? options.progress : Progress();
+        const Progress progress = std::this_thread::get_id() == caller ? s.progress : Progress();
         walk.run_faces(begin, end, progress, counts, [&](const detail::WalkCell& cell) {
             if (cell.index == 0) {
                 half.fixed_closure.insert(half.fixed_closure.end(), cell.closure->begin(), cell.closure->end());
@@ -401,7 +450,10 @@ SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions
     out.mode_count = total;
     std::vector<Exact3> fixed_closure = halves[0].fixed_closure;
     fixed_closure.insert(fixed_closure.end(), halves[1].fixed_closure.begin(), halves[1].fixed_closure.end());
-    if (!fixed_holds && m && !fixed_closure.empty()) fixed_holds = fixed_member(fixed_closure);
+    if (!s.fixed_closure) {
+        if (!fixed_holds && m && !fixed_closure.empty()) fixed_holds = fixed_member(fixed_closure);
+        s.fixed_closure = fixed_closure;
+    }
     std::vector<Member> members;
     if (fixed_holds) members.push_back({0, 0, std::string(n, letter(ContactMode::Fixed)), fixed_closure});
     for (Half& half : halves) {
@@ -417,9 +469,15 @@ SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions
         out.result.modes.push_back(member.index);
         out.modes.push_back(Mode{std::move(member.letters), Cone::from_generators(gens)});
     }
-    out.built = halves[0].built + halves[1].built + (fixed_decider.built() > 0 ? 1 : 0);  // the all-f cone counts once
+    // The all-f mode's E counts once however many times its decider built it.
+    out.built = halves[0].built + halves[1].built + (fixed_decider.built() > 0 || fixed_built ? 1 : 0);
     out.result.verdict = verdict_of(out.result.modes.size());
     return out;
+}
+
+SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions& options) {
+    if (!e.allFinite()) throw std::invalid_argument("query_scene: the wrench must be finite");
+    return SceneQuestions(scene, options).answer(e);
 }
 
 const char* to_string(Verdict v) {

@@ -598,6 +598,70 @@ TEST(Analysis, LargeScenesOnTwoThreadsAgreeWithExactLp) {
     EXPECT_GE(members, 4);
 }
 
+// One SceneQuestions asked many wrenches in a row (the first answer walks with no all-f cone, the
+// second builds it, the rest test against it; every answer reuses the walk): each answer, with
+// its indices, against the exact LP mode by mode. Exactly degenerate scenes (normals q - p),
+// dynamic and quasi-static, 2-5 contacts and 24 (two threads); wrenches random, zero, on the
+// boundaries of the contacts' sets, and in the all-f mode's E (minus fixed generators of every
+// contact).
+TEST(Analysis, SceneQuestionsAnswersEveryWrenchOfASequenceAsTheExactLp) {
+    testing::Random rnd(1913);
+    int questions = 0, members = 0, fixed_members = 0;
+    for (int s = 0; s < testing::sized(24); ++s) {
+        const bool quasi_static = s % 3 == 2;
+        const int n = s % 6 == 5 ? 24 : 2 + s % 4;
+        Scene scene;
+        scene.body = Body{rnd.uniform(0.5, 2), Vec2(rnd.uniform(-0.5, 0.5), rnd.uniform(0, 1)), rnd.uniform(0.1, 1), {}};
+        const Vec2 q(rnd.integer(-4, 4) * 0.25, rnd.integer(0, 4) * 0.25);
+        for (int j = 0; j < n; ++j) {
+            const auto [mu, mk] = testing::random_mu(rnd);
+            const Vec2 p(rnd.integer(-16, 16) * 0.125, rnd.integer(-16, 0) * 0.125 - 0.125);
+            scene.contacts.push_back(Contact::make(p, s % 2 == 0 ? q - p : testing::slanted_direction(rnd), mu, mk));
+        }
+        const ModeSet modes = enumerate_modes(scene.contacts);
+        const testing::ExactContacts c(scene.contacts);
+        SceneQuestions questions_of(scene, AnalysisOptions{quasi_static});
+        for (int w = 0; w < 8; ++w) {
+            reference::QVec e = reference::q(rnd.vec3(10.0));
+            if (w % 4 == 1) e = minus_contact_generators({0, 0, 0}, c, n, rnd, n > 8 ? 4 : 1);
+            if (w % 4 == 3) {  // minus a 0/1 combination of every contact's static edges
+                e = {0, 0, 0};
+                for (int j = 0; j < n; ++j) {
+                    for (const auto& g : c.raw[static_cast<std::size_t>(j)].generators('f')) {
+                        e = reference::add(e, reference::scale(reference::Q(-rnd.integer(0, 1)), g));
+                    }
+                }
+            }
+            if (w == 6) e = {0, 0, 0};
+            const Vec3 ed = reference::to_vec3(e);
+            if (reference::q(ed) != e) continue;  // not an exact double
+            std::vector<std::size_t> expected;
+            for (std::size_t i = 0; i < modes.modes.size(); ++i) {
+                const std::string& letters = modes.modes[i].letters;
+                const bool in = quasi_static ? testing::exact_lp_quasi_static_in_mode(scene, letters, e)
+                                             : testing::exact_lp_applied_in_mode(scene, letters, e);
+                if (in) expected.push_back(i);
+            }
+            const SceneAnswer a = questions_of.answer(ed);
+            ++questions;
+            EXPECT_EQ(a.result.modes, expected) << "scene " << s << " (" << n << " contacts), question " << w << ", wrench "
+                                                << ed.transpose();
+            EXPECT_EQ(a.mode_count, modes.modes.size());
+            ASSERT_EQ(a.modes.size(), a.result.modes.size());
+            for (std::size_t k = 0; k < a.modes.size(); ++k) {
+                EXPECT_EQ(a.modes[k].letters, modes.modes.at(a.result.modes[k]).letters);
+            }
+            EXPECT_EQ(a.result.verdict, verdict_of(expected.size()));
+            members += static_cast<int>(expected.size());
+            fixed_members += !expected.empty() && expected.front() == 0;
+        }
+    }
+    std::cout << "[Analysis] SceneQuestions: " << questions << " questions, " << members << " mode answers 'yes', "
+              << fixed_members << " with the all-f mode\n";
+    EXPECT_GE(questions, testing::sized(24) * 6);
+    EXPECT_GE(fixed_members, testing::sized(24) * 2);
+}
+
 // The verdicts of random wrenches on the slanted-normal families are the same after an exact
 // transform of the scene and the wrench (modes renamed).
 TEST(Analysis, QueriesAreInvariantUnderExactTransforms) {

@@ -6,6 +6,7 @@
 /// docs/design.md, "Per-mode force sets"). For many questions about one analysis, QueryIndex
 /// (mechanics/query_index.hpp).
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -89,6 +90,29 @@ struct SceneAnswer {
 /// mode and the two halves of the faces; the result is the same.
 /// Throws as analyze does, and std::invalid_argument for a non-finite wrench.
 [[nodiscard]] SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions& options = {});
+
+/// Questions about one scene not analysed, asked one after another: each answer is
+/// query_scene's, but what does not depend on the wrench is done once: the cone of motions A, its
+/// faces and the contacts closed on each, the friction edges, and (built at the second answer) the
+/// all-f mode's E. Each answer still walks every cell, O(M + C + B k log k) in query_scene's terms,
+/// so for many questions about a scene small enough to analyse, analyze and QueryIndex answer
+/// faster; this is for scenes whose analysis would be too big (every mode's letters). Keeps
+/// nothing of the scene. Not for two threads at once.
+class SceneQuestions {
+public:
+    /// Throws as analyze does.
+    explicit SceneQuestions(const Scene& scene, const AnalysisOptions& options = {});
+    ~SceneQuestions();
+    SceneQuestions(SceneQuestions&&) noexcept;
+    SceneQuestions& operator=(SceneQuestions&&) noexcept;
+
+    /// query_scene(scene, e, options). Throws std::invalid_argument for a non-finite wrench.
+    [[nodiscard]] SceneAnswer answer(const Vec3& e);
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
 
 /// The answer to one question about a new scene: the letters of the modes e produces.
 struct OneShotAnswer {
