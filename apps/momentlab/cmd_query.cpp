@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "common.hpp"
 
@@ -65,15 +66,41 @@ nlohmann::json answer_json(const std::vector<ModeForces>& a, const QueryResult& 
     return {{"modes", modes}, {"verdict", to_string(r.verdict)}};
 }
 
+// Up to this many letters (modes x contacts) --wrenches may analyse the scene; beyond, every
+// wrench takes the walk (an analysis would hold every mode's letters and sets).
+constexpr double kAnalysedLetters = 1e8;
+
 // One JSON array [fx, fy, tau] per line in, one JSON object per line out (answers stream: the
-// lines before a bad one have been answered).
-void answer_file(const Problem& p, const std::string& path, bool margin) {
-    LineReader in(path, "--wrenches");
-    const QueryIndex index(p.analysis);  // compiled once for all the questions
+// lines before a bad one have been answered). With --margin the scene is analysed first (the
+// margins need every mode's set). Otherwise the wrenches are answered by the walk, as --wrench
+// is (SceneQuestions), until the sets they have built reach the number of modes: an analysis
+// builds about one per mode, then answers from its index for next to nothing. From there, if its
+// letters stay under kAnalysedLetters, the scene is analysed and the rest answered from the
+// index. The answers are the same either way.
+void answer_file(const QueryOptions& o) {
+    const Scene scene = read_scene_file(o.file);
+    TerminalProgress progress;
+    const AnalysisOptions options{o.quasi_static, progress.callback()};
+    Problem p;
+    std::optional<QueryIndex> index;
+    std::optional<SceneQuestions> walk;
+    const auto analyse = [&] {
+        p.scene = scene;
+        p.analysis = analyze_input(scene, "query", options);
+        index.emplace(p.analysis);  // compiled once for all the questions
+        walk.reset();
+    };
+    if (o.margin) {
+        analyse();
+    } else {
+        walk.emplace(questions_input(scene, "query", options));
+    }
+    std::size_t built = 0;
+    LineReader in(o.wrenches, "--wrenches");
     std::string line;
     while (in.next(line)) {
         if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        const std::string where = path + ":" + std::to_string(in.number());
+        const std::string where = o.wrenches + ":" + std::to_string(in.number());
         nlohmann::json w;
         try {
             w = nlohmann::json::parse(line);
@@ -88,12 +115,24 @@ void answer_file(const Problem& p, const std::string& path, bool margin) {
             throw InputError(where, "expected [fx, fy, tau]");
         }
         const Vec3 e = checked_wrench(w[0].get<double>(), w[1].get<double>(), w[2].get<double>(), where);
-        const QueryResult r = index.query(e);
-        nlohmann::json out = answer_json(p.analysis, r);
+        nlohmann::json out;
+        if (index) {
+            const QueryResult r = index->query(e);
+            out = answer_json(p.analysis, r);
+            if (o.margin) out["margins"] = margins_json(p, r, e);
+        } else {
+            const SceneAnswer a = walk->answer(e);
+            nlohmann::json modes = nlohmann::json::array();
+            for (const Mode& mode : a.modes) modes.push_back(mode.letters);
+            out = {{"modes", modes}, {"verdict", to_string(a.result.verdict)}};
+            built += a.built;
+            const double letters = static_cast<double>(a.mode_count) * static_cast<double>(scene.contacts.size());
+            if (built >= a.mode_count && letters <= kAnalysedLetters) analyse();
+        }
         out["wrench"] = w;
-        if (margin) out["margins"] = margins_json(p, r, e);
         std::cout << out.dump() << "\n";
     }
+    progress.finish();
 }
 
 // One wrench, no margins: the direct path (query_scene), which builds a mode's sets only when
@@ -127,12 +166,12 @@ int run(const QueryOptions& o) {
     if (o.wrenches.empty() && o.wrench.size() != 3) {
         throw InputError("--wrench", "expected three numbers FX FY TAU (or --wrenches FILE)");
     }
-    if (o.wrenches.empty() && !o.margin) return answer_one(o);
-    const Problem p = load_problem(o.file, "query", o.quasi_static);
     if (!o.wrenches.empty()) {
-        answer_file(p, o.wrenches, o.margin);
+        answer_file(o);
         return 0;
     }
+    if (!o.margin) return answer_one(o);
+    const Problem p = load_problem(o.file, "query", o.quasi_static);
     const Vec3 e = checked_wrench(o.wrench[0], o.wrench[1], o.wrench[2], "--wrench");
     const QueryResult r = query(p.analysis, e);
     if (o.json) {

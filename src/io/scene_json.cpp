@@ -205,6 +205,11 @@ SceneAnswer query_input(const Scene& scene, const Vec3& e, const std::string& co
     return query_scene(scene, e, options);
 }
 
+SceneQuestions questions_input(const Scene& scene, const std::string& command, const AnalysisOptions& options) {
+    require_body(scene, command, options);
+    return SceneQuestions(scene, options);
+}
+
 OneShotAnswer query_once_input(const Scene& scene, const Vec3& e, const std::string& command,
                                const AnalysisOptions& options) {
     require_body(scene, command, options);

@@ -38,6 +38,10 @@ namespace momentlab {
 [[nodiscard]] SceneAnswer query_input(const Scene& scene, const Vec3& e, const std::string& command,
                                       const AnalysisOptions& options = {});
 
+/// SceneQuestions for a scene a user gave, with the same message as analyze_input.
+[[nodiscard]] SceneQuestions questions_input(const Scene& scene, const std::string& command,
+                                             const AnalysisOptions& options = {});
+
 /// query_once for a scene a user gave, with the same message as analyze_input.
 [[nodiscard]] OneShotAnswer query_once_input(const Scene& scene, const Vec3& e, const std::string& command,
                                              const AnalysisOptions& options = {});
