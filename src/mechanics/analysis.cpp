@@ -51,11 +51,12 @@ struct FrictionEdges {
     std::vector<std::array<ExactVector, 2>> statics, kinetics;
     std::vector<char> kinetic_is_static;  // mu_k = mu: the kinetic edges are the static ones
 
-    explicit FrictionEdges(const std::vector<Contact>& contacts)
+    // Exact constructions, a few microseconds each: two halves on two threads for large scenes
+    // (unless the caller has the other thread busy).
+    explicit FrictionEdges(const std::vector<Contact>& contacts, bool two_threads = true)
         : statics(contacts.size()), kinetics(contacts.size()), kinetic_is_static(contacts.size()) {
-        // Exact constructions, a few microseconds each: two halves on two threads for large scenes.
         const std::size_t n = contacts.size();
-        detail::for_each_index(2, n >= kTwoThreadContacts, [&](std::size_t half) {
+        detail::for_each_index(2, two_threads && n >= kTwoThreadContacts, [&](std::size_t half) {
             for (std::size_t j = n * half / 2; j < n * (half + 1) / 2; ++j) {
                 const Contact& c = contacts[j];
                 statics[j] = friction_cone_edges(c.point, c.normal, c.mu);
@@ -355,14 +356,27 @@ struct SceneQuestions::State {
     State(const Scene& scene, const AnalysisOptions& options)
         : m(inertia_of(scene, options, "query_scene")),
           n((detail::check_contacts(scene.contacts), scene.contacts.size())),
-          walk(scene.contacts),
-          edges(scene.contacts),
-          progress(options.progress) {}
+          progress(options.progress) {
+        // The walk's set-up (A, its faces and their closed contacts) and the friction edges
+        // need nothing of each other: on two threads for large scenes.
+        const bool large = n >= kTwoThreadContacts;
+        std::optional<detail::ModeWalk> w;
+        std::optional<FrictionEdges> e;
+        detail::for_each_index(2, large, [&](std::size_t task) {
+            if (task == 0) {
+                w.emplace(scene.contacts);
+            } else {
+                e.emplace(scene.contacts, !large);
+            }
+        });
+        walk = std::move(*w);
+        edges = std::move(*e);
+    }
 
     std::optional<ExactMatrix> m;
     std::size_t n;
-    detail::ModeWalk walk;
-    FrictionEdges edges;
+    detail::ModeWalk walk{{}};
+    FrictionEdges edges{{}};
     Progress progress;
     // After the first answer: the twists of the cells that join the all-f mode; from the second,
     // that mode's E (built once; every answer then tests e against it).
