@@ -34,6 +34,9 @@ namespace {
 struct Parts {
     std::vector<ExactVector> rays, lineality, facets, equations;
     Incidence facet_rays;
+    // A pointed full-dimensional cone: its extreme rays in counter-clockwise order, as indices
+    // into the generators (facet i is rays i x i+1). Without facets when only those are wanted.
+    std::vector<int> cycle;
 };
 
 ExactVector in(const Vec3& v) { return ExactVector::input(v); }
@@ -277,7 +280,7 @@ Parts build_planar(std::span<const G> g, const G& a, const G& b) {
 // ---------------------------------------------------------------------------------------------
 // Rank 3, pointed, with a known extreme ray p: Graham's scan around p.
 template <class G>
-Parts pointed_from_cycle(std::span<const G> g, const std::vector<int>& cycle);
+Parts pointed_from_cycle(std::span<const G> g, const std::vector<int>& cycle, bool facets);
 
 // What the angular order around a pivot p tells:
 //  * a gap wider than pi: p is on an edge of the cone. Without -p among the generators p is an
@@ -311,7 +314,7 @@ Parts half_space_parts(const G& p, const G& b, const G& l, const G& w) {
 }
 
 template <class G>
-PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& witness_hint) {
+PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& witness_hint, bool facets) {
     PivotAnalysis out;
     const G& p = g[pivot];
     std::vector<Item<G>> items;
@@ -431,13 +434,15 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     for (std::int64_t k : stack) hull.push_back(k < 0 ? static_cast<int>(pivot) : items[static_cast<std::size_t>(k)].index);
     // The cycle starts at the extreme generator given first, whichever pivot found it.
     std::rotate(hull.begin(), std::min_element(hull.begin(), hull.end()), hull.end());
-    out.parts = pointed_from_cycle(g, hull);
+    out.parts = pointed_from_cycle(g, hull, facets);
     return out;
 }
 
 template <class G>
-Parts pointed_from_cycle(std::span<const G> g, const std::vector<int>& cycle) {
+Parts pointed_from_cycle(std::span<const G> g, const std::vector<int>& cycle, bool facets) {
     Parts parts;
+    parts.cycle = cycle;
+    if (!facets) return parts;
     const std::size_t k = cycle.size();
     parts.rays.reserve(k);
     parts.facets.reserve(k);
@@ -459,7 +464,7 @@ Parts pointed_from_cycle(std::span<const G> g, const std::vector<int>& cycle) {
 // constraints c_0 .. c_{m-1}; its vertex i is c_i x c_{i+1}; it always lies in an open
 // hemisphere (inside the initial simplicial cone), so these vertices are never antipodal.
 template <class G>
-Parts build_by_dual_clip(std::span<const G> g, std::size_t i0, std::size_t i1, std::size_t i2) {
+Parts build_by_dual_clip(std::span<const G> g, std::size_t i0, std::size_t i1, std::size_t i2, bool facets) {
     std::vector<int> poly;
     if (det_sign(g[i0], g[i1], g[i2]) == Sign::Positive) {
         poly = {static_cast<int>(i0), static_cast<int>(i1), static_cast<int>(i2)};
@@ -486,7 +491,7 @@ Parts build_by_dual_clip(std::span<const G> g, std::size_t i0, std::size_t i1, s
             if (side[i] == Sign::Negative) any_out = true; else any_in = true;
         }
         if (!any_out) continue;
-        if (!any_in) return Parts{{}, {in(Vec3::UnitX()), in(Vec3::UnitY()), in(Vec3::UnitZ())}, {}, {}, {}};
+        if (!any_in) return Parts{{}, {in(Vec3::UnitX()), in(Vec3::UnitY()), in(Vec3::UnitZ())}, {}, {}, {}, {}};
         // The vertices strictly outside form one cyclic run j .. k.
         std::size_t j = 0;
         while (!(side[j] == Sign::Negative && side[(j + m - 1) % m] != Sign::Negative)) ++j;
@@ -549,7 +554,7 @@ Parts build_by_dual_clip(std::span<const G> g, std::size_t i0, std::size_t i1, s
     }
     std::vector<int> cycle;
     for (std::size_t t : edges) cycle.push_back(poly[t]);
-    return pointed_from_cycle(g, cycle);
+    return pointed_from_cycle(g, cycle, facets);
 }
 
 // Floating-point guesses of an extreme ray; only the running time depends on them, every
@@ -579,7 +584,7 @@ std::size_t guess_extreme(std::span<const G> g) {
 }
 
 template <class G>
-Parts build_spatial(std::span<const G> g, std::size_t ia, std::size_t ib, std::size_t ic) {
+Parts build_spatial(std::span<const G> g, std::size_t ia, std::size_t ib, std::size_t ic, bool facets) {
     // At most three analyses: a face retry always ends in a decided case; an interior pivot
     // gets one more guess, the generator most opposite to it.
     // The generator farthest from the mean direction: extreme unless the cone is not pointed (an
@@ -588,7 +593,7 @@ Parts build_spatial(std::span<const G> g, std::size_t ia, std::size_t ib, std::s
     bool second_guess = false;
     for (int attempt = 0; attempt < 3; ++attempt) {
         if (attempt > 0) ++ConeBuilder::stats().retries;
-        PivotAnalysis pa = analyse_pivot(g, pivot, g[ic]);
+        PivotAnalysis pa = analyse_pivot(g, pivot, g[ic], facets);
         if (pa.parts) {
             ++ConeBuilder::stats().by_pivot;
             return std::move(*pa.parts);
@@ -603,21 +608,13 @@ Parts build_spatial(std::span<const G> g, std::size_t ia, std::size_t ib, std::s
         }
     }
     ++ConeBuilder::stats().dual_clip;
-    return build_by_dual_clip(g, ia, ib, ic);
+    return build_by_dual_clip(g, ia, ib, ic, facets);
 }
 
+// The parts of cone(g) for nonzero generators g (at least one); without a pointed
+// full-dimensional cone's facets (and rays) when `facets` is false: its cycle only.
 template <class G>
-Cone build_cone(std::span<const G> generators) {
-    // Zero vectors generate nothing; copy the input only when it holds some.
-    std::vector<G> nonzero;
-    std::span<const G> g = generators;
-    if (std::any_of(generators.begin(), generators.end(), [](const G& v) { return is_zero(v); })) {
-        for (const G& v : generators) {
-            if (!is_zero(v)) nonzero.push_back(v);
-        }
-        g = nonzero;
-    }
-    if (g.empty()) return Cone();  // {0}
+Parts parts_of(std::span<const G> g, bool facets) {
     const G& a = g[0];
     std::size_t ib = g.size();
     for (std::size_t i = 1; i < g.size(); ++i) {
@@ -639,16 +636,31 @@ Cone build_cone(std::span<const G> generators) {
             parts.facets = {in(a)};
             parts.facet_rays.add_row({});
         }
-    } else {
-        std::size_t ic = g.size();
-        for (std::size_t i = ib + 1; i < g.size(); ++i) {
-            if (det_sign(a, g[ib], g[i]) != Sign::Zero) {
-                ic = i;
-                break;
-            }
-        }
-        parts = ic == g.size() ? build_planar(g, a, g[ib]) : build_spatial(g, 0, ib, ic);
+        return parts;
     }
+    std::size_t ic = g.size();
+    for (std::size_t i = ib + 1; i < g.size(); ++i) {
+        if (det_sign(a, g[ib], g[i]) != Sign::Zero) {
+            ic = i;
+            break;
+        }
+    }
+    return ic == g.size() ? build_planar(g, a, g[ib]) : build_spatial(g, 0, ib, ic, facets);
+}
+
+template <class G>
+Cone build_cone(std::span<const G> generators) {
+    // Zero vectors generate nothing; copy the input only when it holds some.
+    std::vector<G> nonzero;
+    std::span<const G> g = generators;
+    if (std::any_of(generators.begin(), generators.end(), [](const G& v) { return is_zero(v); })) {
+        for (const G& v : generators) {
+            if (!is_zero(v)) nonzero.push_back(v);
+        }
+        g = nonzero;
+    }
+    if (g.empty()) return Cone();  // {0}
+    Parts parts = parts_of(g, true);
     return ConeBuilder::assemble(std::move(parts.rays), std::move(parts.lineality), std::move(parts.facets),
                                  std::move(parts.equations), std::move(parts.facet_rays));
 }
@@ -683,6 +695,56 @@ Cone ConeBuilder::build(std::span<const ExactVector> generators) {
         return build_cone(std::span<const Vec3>(plain));
     }
     return build_cone(generators);
+}
+
+Held cone_holds(std::span<const ExactVector> generators, const Vec3& wrench) {
+    const ExactVector w = ExactVector::input(wrench);
+    // The nonzero generators, and where each came from.
+    std::vector<ExactVector> g;
+    std::vector<std::size_t> from;
+    g.reserve(generators.size());
+    from.reserve(generators.size());
+    for (std::size_t i = 0; i < generators.size(); ++i) {
+        if (is_zero(generators[i])) continue;
+        g.push_back(generators[i]);
+        from.push_back(i);
+    }
+    Held out;
+    if (g.empty()) {  // {0}
+        out.member = is_zero(wrench);
+        if (!out.member) out.separator = w.negated();
+        return out;
+    }
+    Parts parts = parts_of(std::span<const ExactVector>(g), false);
+    if (parts.cycle.empty()) {  // not pointed and full-dimensional: the cone itself
+        const Cone cone = ConeBuilder::assemble(std::move(parts.rays), std::move(parts.lineality), std::move(parts.facets),
+                                                std::move(parts.equations), std::move(parts.facet_rays));
+        Membership m = cone.contains(wrench);
+        out.member = m.member;
+        if (!m.member) out.separator = std::move(m.separator);
+        return out;
+    }
+    // Facet i is r_i x r_{i+1} (pointed_from_cycle): w is in the cone when no det(r_i, r_{i+1}, w)
+    // is negative.
+    const std::vector<int>& c = parts.cycle;
+    const std::size_t k = c.size();
+    const auto ray = [&](std::size_t i) -> const ExactVector& { return g[static_cast<std::size_t>(c[i % k])]; };
+    for (std::size_t i = 0; i < k; ++i) {
+        if (det_sign(ray(i), ray(i + 1), w) == Sign::Negative) {
+            out.separator = ExactVector::cross(ray(i), ray(i + 1), 1);
+            return out;
+        }
+    }
+    out.member = true;
+    // The fan from ray 0: the triangle (r_0, r_i, r_{i+1}) that holds w.
+    for (std::size_t i = 1; i + 1 < k; ++i) {
+        if (det_sign(ray(0), ray(i), w) != Sign::Negative && det_sign(ray(0), ray(i + 1), w) != Sign::Positive) {
+            out.triangle = {from[static_cast<std::size_t>(c[0])], from[static_cast<std::size_t>(c[i])],
+                            from[static_cast<std::size_t>(c[i + 1])]};
+            break;
+        }
+    }
+    return out;
 }
 
 }  // namespace momentlab

@@ -137,16 +137,6 @@ struct Piece {
     Exact3 twist{};
 };
 
-// Three generators of the full-dimensional pointed cone c whose cone holds w (a fan from ray 0;
-// w in c), as indices into c.rays().
-std::array<std::size_t, 3> fan_triangle(const Cone& c, const ExactVector& w) {
-    const auto& r = c.rays();
-    for (std::size_t i = 1; i + 1 < r.size(); ++i) {
-        if (det_sign(r[0], r[i], w) != Sign::Negative && det_sign(r[0], r[i + 1], w) != Sign::Positive) return {0, i, i + 1};
-    }
-    return {0, 1, r.size() - 1};
-}
-
 // adj(m) w for a 3 x 3 matrix given by its rows: the columns of adj(m) are r1 x r2, r2 x r0,
 // r0 x r1, so that m adj(m) = det(m) I.
 Exact3 adjugate_times(const ExactMatrix& m, const Exact3& w) {
@@ -282,37 +272,31 @@ private:
                 return true;
             });
         }
-        const Cone applied = Cone::from_generators(generators);
-        if (applied.has(e_)) {
-            if (applied.dimension() == 3 && applied.is_pointed()) remember_triangle(applied, generators, named);
+        // Its facets are not built: only the one that separates, if any (cone_holds).
+        const Held held = cone_holds(generators, e_);
+        if (held.member) {
+            if (held.triangle) remember_triangle(*held.triangle, generators, named);
             return true;
         }
         // A facet or equation of E with h . e < 0 (one exists: e is outside E).
-        const Membership why = applied.contains(e_);
-        assert(!why.member);
-        current_ = why.separator;
+        current_ = held.separator;
         current_valid_ = true;
-        planes_.insert(planes_.begin(), why.separator);
+        planes_.insert(planes_.begin(), held.separator);
         if (planes_.size() > kCache) planes_.pop_back();
         return false;
     }
 
-    void remember_triangle(const Cone& applied, const std::vector<ExactVector>& generators,
+    // Keeps three generators of E whose cone holds e (corners: indices into generators), named.
+    void remember_triangle(const std::array<std::size_t, 3>& corners, const std::vector<ExactVector>& generators,
                            const std::vector<std::pair<int, int>>& named) {
-        // Name the three rays by generators pointing the same way (each ray is one).
         std::array<Piece, 3> t;
-        const auto corners = fan_triangle(applied, wrench_);
+        const std::size_t twists = images_.size();
         for (std::size_t corner = 0; corner < 3; ++corner) {
-            const ExactVector& ray = applied.rays()[corners[corner]];
-            const auto g = std::find_if(generators.begin(), generators.end(), [&](const ExactVector& v) {
-                return parallel(v, ray) && dot_sign(v, ray) == Sign::Positive;
-            });
-            if (g == generators.end()) return;
-            const std::size_t k = static_cast<std::size_t>(g - generators.begin()), twists = images_.size();
+            const std::size_t k = corners[corner];
             t[corner] = k < twists ? Piece{-1, 0, (*cell_->closure)[k]} : Piece{named[k - twists].first, named[k - twists].second, {}};
         }
         // Kept only when exactly checked: det(a, b, c) > 0 and w on the inner side of each face.
-        const ExactVector &a = applied.rays()[corners[0]], &b = applied.rays()[corners[1]], &c = applied.rays()[corners[2]];
+        const ExactVector &a = generators[corners[0]], &b = generators[corners[1]], &c = generators[corners[2]];
         if (det_sign(a, b, c) == Sign::Positive && det_sign(wrench_, b, c) != Sign::Negative &&
             det_sign(a, wrench_, c) != Sign::Negative && det_sign(a, b, wrench_) != Sign::Negative) {
             triangles_.insert(triangles_.begin(), t);

@@ -9,6 +9,7 @@
 
 #include "../common/sizes.hpp"
 #include "cone_checks.hpp"
+#include "cone_membership.hpp"
 #include "random_inputs.hpp"
 #include "geometry/cone_build.hpp"
 #include "momentlab/geometry/labels.hpp"
@@ -215,6 +216,67 @@ TEST(ConeLaws, ManyGeneratorsAgreeWithExactOracle) {
               << ", dual clip " << paths.dual_clip << "\n";
     EXPECT_GE(kinds["pointed cone"], testing::sized(50));
     EXPECT_GE(kinds["wedge x line"] + kinds["half-space"], testing::sized(20));
+}
+
+// cone_holds (no facets built for a pointed full-dimensional cone) against brute-force exact
+// membership (reference/cone_membership.hpp, Caratheodory over every subset) on the random and
+// degenerate families, with generators as stored doubles and as exact constructions u x v of
+// small integer vectors (the exact path); wrenches random, integer, and 0/1 sums of generators
+// (on the boundary). Each certificate is checked in rationals: a separator h has h . g >= 0 for
+// every generator and h . w < 0; a triangle's three generators hold w.
+TEST(ConeLaws, ConeHoldsAgreesWithBruteForceMembership) {
+    testing::Random rnd(20261125);
+    int members = 0, outside = 0, triangles = 0;
+    for (int i = 0; i < testing::sized(3000); ++i) {
+        const bool constructed = i % 3 == 2;
+        std::vector<ExactVector> g;
+        std::vector<reference::QVec> raw;
+        if (constructed) {  // u x v for small integer u, v: the oracle multiplies them itself
+            const int n = rnd.integer(1, 12);
+            for (int k = 0; k < n; ++k) {
+                const Vec3 u(rnd.integer(-3, 3), rnd.integer(-3, 3), rnd.integer(-3, 3));
+                const Vec3 v(rnd.integer(-3, 3), rnd.integer(-3, 3), rnd.integer(-3, 3));
+                g.push_back(ExactVector::cross(ExactVector::input(u), ExactVector::input(v)));
+                raw.push_back(reference::cross(reference::q(u), reference::q(v)));
+            }
+        } else {
+            for (const Vec3& v : testing::random_generators(rnd, family_of(i), 12)) {
+                g.push_back(ExactVector::input(v));
+                raw.push_back(reference::q(v));
+            }
+        }
+        for (int k = 0; k < 6; ++k) {
+            reference::QVec w = reference::q(rnd.vec3(3.0));
+            if (k == 1) w = reference::q(Vec3(rnd.integer(-2, 2), rnd.integer(-2, 2), rnd.integer(-2, 2)));
+            if (k >= 2) {
+                w = {0, 0, 0};
+                for (const reference::QVec& r : raw) w = reference::add(w, reference::scale(rnd.integer(0, 1), r));
+            }
+            const Vec3 wd = reference::to_vec3(w);
+            if (reference::q(wd) != w) continue;
+            const Held held = cone_holds(g, wd);
+            const bool expected = reference::in_cone(raw, w);
+            ASSERT_EQ(held.member, expected) << "w = " << wd.transpose() << ", generator set " << i;
+            if (!held.member) {
+                ++outside;
+                const reference::QVec h = reference::to_q(held.separator);
+                EXPECT_LT(reference::sign(reference::dot(h, w)), 0) << "separator, set " << i;
+                for (const reference::QVec& r : raw) EXPECT_GE(reference::sign(reference::dot(h, r)), 0) << "separator, set " << i;
+                continue;
+            }
+            ++members;
+            if (held.triangle) {
+                ++triangles;
+                const auto& t = *held.triangle;
+                ASSERT_TRUE(t[0] < raw.size() && t[1] < raw.size() && t[2] < raw.size());
+                EXPECT_TRUE(reference::in_cone({raw[t[0]], raw[t[1]], raw[t[2]]}, w)) << "triangle, set " << i;
+            }
+        }
+    }
+    std::cout << "[ConeLaws] cone_holds: " << members << " members (" << triangles << " with a triangle), " << outside
+              << " outside\n";
+    EXPECT_GE(triangles, testing::sized(3000));
+    EXPECT_GE(outside, testing::sized(3000));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <initializer_list>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -175,6 +176,21 @@ private:
 [[nodiscard]] Cone intersection(const Cone& f, const Cone& g);
 /// True when F is a subset of G. Exact (F's generators against G's half-spaces, both exact).
 [[nodiscard]] bool subset(const Cone& f, const Cone& g);
+
+/// Whether cone(generators) holds w, with a certificate, without the double description when
+/// the cone is pointed and full-dimensional: its extreme rays are found in cyclic order (as by
+/// Cone::from_generators) but its facets are not built, which saves an exact construction per
+/// facet; w is tested against each facet as det(r_i, r_i+1, w). Other cones are built.
+struct Held {
+    bool member = false;
+    /// For non-members: a facet normal or +-an equation h of the cone, with h . w < 0.
+    ExactVector separator;
+    /// For members of a pointed full-dimensional cone: three generators (indices into the
+    /// argument) whose cone holds w.
+    std::optional<std::array<std::size_t, 3>> triangle;
+};
+[[nodiscard]] Held cone_holds(std::span<const ExactVector> generators, const Vec3& w);
+
 /// True when the cone c (a subset of e) contains a point of the interior of e: c lies in no
 /// facet of e. False whenever e is not full-dimensional. Exact.
 [[nodiscard]] bool meets_interior(const Cone& c, const Cone& e);
