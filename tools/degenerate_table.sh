@@ -73,6 +73,12 @@ for f in cradle tangent; do
         contacts=$n count=query row "$f, $n contacts, one query" "$bin" query "$dir/${f}_$n.json" --wrench 0.1 1 0.2 --json
     done
 done
+# Six questions in one run (query --wrenches: the walk for each, its set-up once; `modes` and
+# `letters` summed over the answers).
+printf '%s\n' '[0.1, 1, 0.2]' '[0.5, 2, 0.1]' '[1, 1, 0.5]' '[0.2, -1, 0.3]' '[2, 0.5, -0.4]' '[0, 0, 1]' > "$dir/six_wrenches.jsonl"
+for f in bowl cradle tangent; do
+    contacts=100000 count=query row "$f, 10^5 contacts, six queries (--wrenches)" "$bin" query "$dir/${f}_100000.json" --wrenches "$dir/six_wrenches.jsonl" --json
+done
 for n in 1000 3000 10000; do
     need collinear $n
     contacts=$n count=query row "collinear, $n contacts, one query" "$bin" query "$dir/collinear_$n.json" --wrench 0.1 1 0.2 --json
