@@ -3,10 +3,16 @@
 // does output that cannot be written (a full disk, a closed pipe).
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <stdexcept>
 #include <string>
+
+#if defined(__linux__) && defined(__GLIBC__)
+#include <sys/stat.h>
+#include <unistd.h>
+#endif
 
 #include "common.hpp"
 
@@ -32,9 +38,50 @@ int finish(int status) {
     return status;
 }
 
+// For a big input (an argument naming a file of 1 MB or more: a scene of about 10^4 contacts),
+// glibc's malloc is asked to back its memory with transparent huge pages and to keep what it
+// frees (docs/benchmarks.md, "Memory"): on the bowl of 10^5 contacts `analyze --json` touches
+// 650 MB, and a page touched the first time costs a page fault. glibc reads these settings
+// (GLIBC_TUNABLES) only when a program starts, so the command starts itself again once with
+// them added to any the caller set; a caller who set glibc.malloc.hugetlb is left alone, and
+// so is a run under another loader (valgrind). If that fails, it runs on as it is.
+void tune_malloc_for_big_inputs(int argc, char** argv) {
+#if defined(__linux__) && defined(__GLIBC__)
+    constexpr off_t kBig = off_t{1} << 20;
+    bool big = false;
+    for (int i = 1; i < argc && !big; ++i) {
+        struct stat st {};
+        big = ::stat(argv[i], &st) == 0 && S_ISREG(st.st_mode) && st.st_size >= kBig;
+    }
+    if (!big) return;
+    const char* caller = std::getenv("GLIBC_TUNABLES");
+    std::string tunables = caller ? caller : "";
+    if (tunables.find("glibc.malloc.hugetlb") != std::string::npos) return;
+    char self[4096];
+    const ssize_t length = ::readlink("/proc/self/exe", self, sizeof self - 1);
+    if (length <= 0) return;
+    self[length] = '\0';
+    const char* name = std::strrchr(self, '/');
+    if (std::strncmp(name ? name + 1 : self, "momentlab", 9) != 0) return;
+    tunables += std::string(tunables.empty() ? "" : ":") +
+                "glibc.malloc.hugetlb=1:glibc.malloc.top_pad=268435456:glibc.malloc.trim_threshold=1073741824";
+    if (::setenv("GLIBC_TUNABLES", tunables.c_str(), 1) != 0) return;
+    ::execv(self, argv);
+    if (caller) {  // the exec failed: as the caller had it
+        ::setenv("GLIBC_TUNABLES", caller, 1);
+    } else {
+        ::unsetenv("GLIBC_TUNABLES");
+    }
+#else
+    (void)argc;
+    (void)argv;
+#endif
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    tune_malloc_for_big_inputs(argc, argv);
     CLI::App app{"momentlab: moment labels and planar contact mechanics (Mason 1991)"};
     app.require_subcommand(1);
     const auto run_label = momentlab::cli::add_label_command(app);

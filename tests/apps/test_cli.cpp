@@ -103,6 +103,38 @@ TEST(Cli, QueryJsonAndJsonLines) {
     EXPECT_NE(stderr_text().find("momentlab_bad_wrenches.txt:1"), std::string::npos) << stderr_text();
 }
 
+// A wrenches file of more than 1 MB: the command starts itself again with glibc's malloc
+// tunables (apps/momentlab/main.cpp), and --wrenches answers the first questions by the walk,
+// then from the analysis' index. Every one of the 60,000 answers is the block's known mode,
+// once, in order; the same with tunables the caller set.
+TEST(Cli, BigWrenchFilesAreAnsweredOnceEachInOrder) {
+    const std::string scene = kExamples + "/block-on-table.json";
+    const char* lines[] = {"[0, -9.81, -4.905]\n", "[20, -9.81, -5.105]\n", "[0, 9.81, 4.905]\n"};
+    const char* expected[] = {"ff", "rr", "ss"};
+    const int n = 60000;
+    {
+        std::ofstream out("/tmp/momentlab_many_wrenches.txt");
+        for (int i = 0; i < n; ++i) out << lines[i % 3];
+    }
+    ASSERT_GE(std::filesystem::file_size("/tmp/momentlab_many_wrenches.txt"), 1u << 20);
+    for (const std::string env : {"", "GLIBC_TUNABLES=glibc.malloc.check=0 "}) {
+        const std::string cmd = env + MOMENTLAB_BIN + " query " + scene + " --wrenches /tmp/momentlab_many_wrenches.txt";
+        FILE* p = popen(cmd.c_str(), "r");
+        std::string out;
+        std::array<char, 4096> buf{};
+        while (std::fgets(buf.data(), buf.size(), p)) out += buf.data();
+        ASSERT_EQ(WEXITSTATUS(pclose(p)), 0) << env;
+        std::istringstream answers(out);
+        int i = 0, wrong = 0;
+        for (std::string line; std::getline(answers, line); ++i) {
+            const auto j = nlohmann::json::parse(line);
+            wrong += j["modes"] != nlohmann::json::array({expected[i % 3]}) || j["wrench"] != nlohmann::json::parse(lines[i % 3]);
+        }
+        EXPECT_EQ(i, n) << env;
+        EXPECT_EQ(wrong, 0) << env;
+    }
+}
+
 TEST(Cli, AnalyzeJsonHasEveryModeWithItsCones) {
     const Result r = run("analyze " + kExamples + "/figure-3-block-along-wall.json --json");
     ASSERT_EQ(r.status, 0);
