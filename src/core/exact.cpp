@@ -332,6 +332,15 @@ Sign dot_sign(const ExactVector& a, const ExactVector& b) {
     return exact_sign(dot(a.exact(), b.exact()));
 }
 
+Sign dot_sign(const ExactVector& a, const Exact3& b) {
+    Sign s = Sign::Zero;
+    if (dot_filter(a.approximation(), exact_approximation(b), s)) {
+        ++g_stats.filtered;
+        return s;
+    }
+    return exact_sign(dot(a.exact(), b));
+}
+
 Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c) {
     if (!a.is_constructed() && !b.is_constructed() && !c.is_constructed()) return det_sign(a.value(), b.value(), c.value());
     Sign s = Sign::Zero;

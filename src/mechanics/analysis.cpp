@@ -150,7 +150,8 @@ Exact3 adjugate_times(const ExactMatrix& m, const Exact3& w) {
 //  - up to eight earlier planes, checked against every generator (on faces of few contacts);
 //  - up to eight triplets of named generators whose cone holds e: a cell that has all three
 //    holds e.
-// A cell no certificate decides has its E built, which gives the next certificate.
+// A cell no certificate decides has e tested against its E (cone_holds: its extreme rays, no
+// facets), which gives the next certificate.
 class Decider {
 public:
     Decider(const Cone& a, const std::optional<ExactMatrix>& m, const FrictionEdges& edges, const Vec3& e)
@@ -171,7 +172,22 @@ private:
     static constexpr std::size_t kCache = 8;
     static constexpr std::size_t kSmallFace = 32;  // closed contacts for a full check of cached planes
 
-    // The images M g of the cell's twists, made when first needed (the triangles need none).
+    // A separating plane h (h . e < 0), with M^T h: h . (M g) = (M^T h) . g, so that the cell's
+    // twists g are checked as they are, with no image M g made (unused when quasi-static).
+    struct Plane {
+        ExactVector h, pulled;
+    };
+    Plane plane_of(const ExactVector& h) const {
+        Plane p{h, {}};
+        if (m_) {
+            const Exact3 x = h.exact();
+            const ExactMatrix& m = *m_;
+            p.pulled = ExactVector::from_exact(x[0] * m[0] + x[1] * m[1] + x[2] * m[2]);
+        }
+        return p;
+    }
+
+    // The images M g of the cell's twists, made when first needed (only build() needs them).
     const std::vector<ExactVector>& images() {
         if (!images_ready_) {
             images_.clear();
@@ -182,19 +198,20 @@ private:
         }
         return images_;
     }
-    bool holds_images(const ExactVector& h) {
-        const std::vector<ExactVector>& g = images();
-        return std::all_of(g.begin(), g.end(), [&](const ExactVector& v) { return dot_sign(h, v) != Sign::Negative; });
+    bool holds_images(const Plane& p) const {
+        if (!m_) return true;
+        return std::all_of(cell_->closure->begin(), cell_->closure->end(),
+                           [&](const Exact3& g) { return dot_sign(p.pulled, g) != Sign::Negative; });
     }
     // h holds the generators (-edge) that the contact at position t adds.
     bool holds_position(const ExactVector& h, std::size_t t) const {
         return edges_.for_contact(static_cast<std::size_t>(cell_->closed[t]), cell_->letters[t],
                                   [&](const ExactVector& edge, int) { return dot_sign(h, edge) != Sign::Positive; });
     }
-    bool holds_all(const ExactVector& h) {
-        if (!holds_images(h)) return false;
+    bool holds_all(const Plane& p) const {
+        if (!holds_images(p)) return false;
         for (std::size_t t = 0; t < cell_->closed.size(); ++t) {
-            if (!holds_position(h, t)) return false;
+            if (!holds_position(p.h, t)) return false;
         }
         return true;
     }
@@ -236,7 +253,7 @@ private:
             // (A cell the caller skips, one that joins the all-f mode, changes only contacts the
             // next cell of its face lists again; a new face starts over.)
             if (holds && current_valid_ && !cell_->first && cell_->face == last_face_) {
-                for (int t : cell_->changed) holds = holds && holds_position(*current_, static_cast<std::size_t>(t));
+                for (int t : cell_->changed) holds = holds && holds_position(current_->h, static_cast<std::size_t>(t));
             } else if (holds) {
                 holds = holds_all(*current_);
             }
@@ -244,7 +261,7 @@ private:
             if (holds) return false;
         }
         if (cell_->closed.size() <= kSmallFace) {
-            const auto found = std::find_if(planes_.begin(), planes_.end(), [&](const ExactVector& h) { return holds_all(h); });
+            const auto found = std::find_if(planes_.begin(), planes_.end(), [&](const Plane& p) { return holds_all(p); });
             if (found != planes_.end()) {
                 current_ = *found;
                 current_valid_ = true;
@@ -255,7 +272,7 @@ private:
         return build();
     }
 
-    // E built from its generators; a new certificate either way.
+    // e against E (its extreme rays from its generators); a new certificate either way.
     bool build() {
         ++built_;
         // The images first, then the contacts' edges; a contact's generator is named by
@@ -279,9 +296,9 @@ private:
             return true;
         }
         // A facet or equation of E with h . e < 0 (one exists: e is outside E).
-        current_ = held.separator;
+        current_ = plane_of(held.separator);
         current_valid_ = true;
-        planes_.insert(planes_.begin(), held.separator);
+        planes_.insert(planes_.begin(), *current_);
         if (planes_.size() > kCache) planes_.pop_back();
         return false;
     }
@@ -312,10 +329,10 @@ private:
     const detail::WalkCell* cell_ = nullptr;
     std::vector<ExactVector> images_;
     bool images_ready_ = false;
-    std::optional<ExactVector> current_;
+    std::optional<Plane> current_;
     bool current_valid_ = false;  // the current plane held every generator of the previous cell
     std::size_t last_face_ = static_cast<std::size_t>(-1);  // that cell's face
-    std::vector<ExactVector> planes_;
+    std::vector<Plane> planes_;
     std::vector<std::array<Piece, 3>> triangles_;
     std::size_t built_ = 0;
 };

@@ -125,6 +125,9 @@ private:
 
 /// The exact sign of a . b.
 [[nodiscard]] Sign dot_sign(const ExactVector& a, const ExactVector& b);
+/// The exact sign of a . b for b given by its Dyadic coordinates (no ExactVector made of b: the
+/// filter rounds b on the spot).
+[[nodiscard]] Sign dot_sign(const ExactVector& a, const Exact3& b);
 /// The exact sign of det[a b c].
 [[nodiscard]] Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c);
 /// The exact sign of the minor a[i] b[j] - a[j] b[i].

@@ -72,7 +72,7 @@ struct SceneAnswer {
     std::vector<Mode> modes;     ///< the modes e produces (letters and twists), in the order of result.modes
     QueryResult result;          ///< their indices in enumerate_modes' order (analyze's), increasing
     std::size_t mode_count = 0;  ///< how many modes the scene has
-    std::size_t built = 0;       ///< how many modes' E had to be built (the rest were decided by certificates)
+    std::size_t built = 0;       ///< how many modes' E e was tested against (the rest were decided by certificates)
 };
 
 /// The same answer as query(analyze(scene, options), e), without building every mode's sets or
@@ -82,12 +82,14 @@ struct SceneAnswer {
 /// cells before: a plane h with h . e < 0 that holds every generator of this E on its side proves
 /// e is not in E (Farkas; along a face only the generators that changed are checked against the
 /// latest plane), and three generators of an earlier E whose cone holds e, when this cell has all
-/// three, prove e is in it. Only a cell that no certificate decides has its E built (which gives a
-/// new certificate). Every sign is exact. O(n log n + M + C + B k log k) for n contacts, M modes,
+/// three, prove e is in it. Only a cell that no certificate decides has e tested against its E
+/// (cone_holds: E's extreme rays, with no facet built but the separating one; this gives a new
+/// certificate). Every sign is exact. O(n log n + M + C + B k log k) for n contacts, M modes,
 /// C letter changes along the walks (at most the number of closed contacts per face times its
-/// cells), B modes built and k closed contacts per face; memory O(n + the answer's letters)
-/// (docs/benchmarks.md, "Nearly degenerate scenes"). From 20 contacts on two threads: the all-f
-/// mode and the two halves of the faces; the result is the same.
+/// cells), B modes tested so and k closed contacts per face; memory O(n + the answer's letters)
+/// (docs/benchmarks.md, "Nearly degenerate scenes"). From 20 contacts on two threads: the walk's
+/// set-up beside the friction edges, then the all-f mode and the two halves of the faces; the
+/// result is the same.
 /// Throws as analyze does, and std::invalid_argument for a non-finite wrench.
 [[nodiscard]] SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions& options = {});
 
