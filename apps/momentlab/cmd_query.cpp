@@ -1,6 +1,8 @@
 // `momentlab query SCENE --wrench FX FY TAU | --wrenches FILE [--json]`: which modes an applied
 // wrench produces.
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -66,6 +68,18 @@ nlohmann::json answer_json(const std::vector<ModeForces>& a, const QueryResult& 
     return {{"modes", modes}, {"verdict", to_string(r.verdict)}};
 }
 
+// The lines of a regular file that are not blank (a wrench each, or an error); none for a pipe
+// or a device, which can be read only once.
+std::optional<std::size_t> questions_in(const std::string& path) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) return std::nullopt;
+    std::ifstream in(path);
+    if (!in) return std::nullopt;
+    std::size_t count = 0;
+    for (std::string line; std::getline(in, line);) count += line.find_first_not_of(" \t\r") != std::string::npos;
+    return count;
+}
+
 // Up to this many letters (modes x contacts) --wrenches may analyse the scene; beyond, every
 // wrench takes the walk (an analysis would hold every mode's letters and sets).
 constexpr double kAnalysedLetters = 1e8;
@@ -73,10 +87,14 @@ constexpr double kAnalysedLetters = 1e8;
 // One JSON array [fx, fy, tau] per line in, one JSON object per line out (answers stream: the
 // lines before a bad one have been answered). With --margin the scene is analysed first (the
 // margins need every mode's set). Otherwise the wrenches are answered by the walk, as --wrench
-// is (SceneQuestions), until the sets they have built reach the number of modes: an analysis
-// builds about one per mode, then answers from its index for next to nothing. From there, if its
-// letters stay under kAnalysedLetters, the scene is analysed and the rest answered from the
-// index. The answers are the same either way.
+// is (SceneQuestions), as long as walking for the questions left costs less than an analysis,
+// which then answers each for next to nothing. After each answer, the walk's work (cells
+// walked and generators tested) is weighed against an analysis on two threads (a cone per
+// mode, of about its closed contacts' generators, the modes shared out): for a file, the work
+// per answer so far times the questions left; for a pipe, whose length is unknown, the work so
+// far (rent or buy: at most about twice the better of the two). From the next
+// wrench on, if its letters stay under kAnalysedLetters, the scene is analysed and the rest
+// answered from the index. The answers are the same either way.
 void answer_file(const QueryOptions& o) {
     const Scene scene = read_scene_file(o.file);
     TerminalProgress progress;
@@ -95,7 +113,10 @@ void answer_file(const QueryOptions& o) {
     } else {
         walk.emplace(questions_input(scene, "query", options));
     }
-    std::size_t built = 0;
+    double walked = 0.0;  // cells walked and generators tested so far
+    std::size_t walks = 0;
+    const std::optional<std::size_t> questions = questions_in(o.wrenches);
+    bool analyse_next = false;
     LineReader in(o.wrenches, "--wrenches");
     std::string line;
     while (in.next(line)) {
@@ -115,6 +136,7 @@ void answer_file(const QueryOptions& o) {
             throw InputError(where, "expected [fx, fy, tau]");
         }
         const Vec3 e = checked_wrench(w[0].get<double>(), w[1].get<double>(), w[2].get<double>(), where);
+        if (analyse_next && !index) analyse();
         nlohmann::json out;
         if (index) {
             const QueryResult r = index->query(e);
@@ -125,9 +147,14 @@ void answer_file(const QueryOptions& o) {
             nlohmann::json modes = nlohmann::json::array();
             for (const Mode& mode : a.modes) modes.push_back(mode.letters);
             out = {{"modes", modes}, {"verdict", to_string(a.result.verdict)}};
-            built += a.built;
+            walked += static_cast<double>(a.mode_count + a.tested_generators);
+            ++walks;
+            const double analysis = static_cast<double>(a.mode_count + a.closed_letters) / 2.0;  // on two threads
+            const double to_walk = questions ? walked / static_cast<double>(walks) *
+                                                   static_cast<double>(*questions > walks ? *questions - walks : 0)
+                                             : walked;
             const double letters = static_cast<double>(a.mode_count) * static_cast<double>(scene.contacts.size());
-            if (built >= a.mode_count && letters <= kAnalysedLetters) analyse();
+            analyse_next = to_walk >= analysis && letters <= kAnalysedLetters;
         }
         out["wrench"] = w;
         std::cout << out.dump() << "\n";

@@ -158,6 +158,7 @@ public:
         : a_(a), m_(m), edges_(edges), e_(e), wrench_(ExactVector::input(e)) {}
 
     [[nodiscard]] std::size_t built() const { return built_; }
+    [[nodiscard]] std::size_t tested() const { return tested_; }
 
     bool member(const detail::WalkCell& cell) {
         cell_ = &cell;
@@ -290,6 +291,7 @@ private:
             });
         }
         // Its facets are not built: only the one that separates, if any (cone_holds).
+        tested_ += generators.size();
         const Held held = cone_holds(generators, e_);
         if (held.member) {
             if (held.triangle) remember_triangle(*held.triangle, generators, named);
@@ -335,6 +337,7 @@ private:
     std::vector<Plane> planes_;
     std::vector<std::array<Piece, 3>> triangles_;
     std::size_t built_ = 0;
+    std::size_t tested_ = 0;  // generators of the E's tested
 };
 
 // The all-f mode's E once its closure (the twists of the cells merged into it) is known: the
@@ -410,7 +413,7 @@ SceneAnswer SceneQuestions::answer(const Vec3& e) {
     struct Half {
         std::vector<Member> members;
         std::vector<Exact3> fixed_closure;
-        std::size_t built = 0;
+        std::size_t built = 0, tested = 0, closed_letters = 0;
     };
     std::array<Half, 2> halves;
     std::vector<std::size_t> counts(walk.faces());
@@ -427,6 +430,7 @@ SceneAnswer SceneQuestions::answer(const Vec3& e) {
     };
     bool fixed_holds = false;
     bool fixed_built = false;
+    std::size_t fixed_tested = 0;
     const std::thread::id caller = std::this_thread::get_id();
     detail::for_each_index(3, n >= kTwoThreadContacts, [&](std::size_t task) {
         if (task == 0) {
@@ -434,6 +438,7 @@ SceneAnswer SceneQuestions::answer(const Vec3& e) {
                 if (!s.fixed_cone) {
                     s.fixed_cone = fixed_applied(m, s.edges, *s.fixed_closure);
                     fixed_built = true;
+                    fixed_tested = (m ? s.fixed_closure->size() : 0) + 2 * n;
                 }
                 fixed_holds = s.fixed_cone->has(e);
             } else {
@@ -446,13 +451,15 @@ SceneAnswer SceneQuestions::answer(const Vec3& e) {
         const std::size_t begin = walk.faces() * (task - 1) / 2, end = walk.faces() * task / 2;
         const Progress progress = std::this_thread::get_id() == caller ? s.progress : Progress();
         walk.run_faces(begin, end, progress, counts, [&](const detail::WalkCell& cell) {
-            if (cell.index == 0) {
+            if (cell.index == 0) {  // (its letters are counted once, as the all-f mode's)
                 half.fixed_closure.insert(half.fixed_closure.end(), cell.closure->begin(), cell.closure->end());
                 return;
             }
+            half.closed_letters += cell.closed.size();
             if (decider.member(cell)) half.members.push_back({cell.face, cell.index, cell.all_letters(n), *cell.closure});
         });
         half.built = decider.built();
+        half.tested = decider.tested();
     });
     // Face i's modes come after those of the faces before it.
     std::vector<std::size_t> first_index(counts.size());
@@ -486,6 +493,8 @@ SceneAnswer SceneQuestions::answer(const Vec3& e) {
     }
     // The all-f mode's E counts once however many times its decider built it.
     out.built = halves[0].built + halves[1].built + (fixed_decider.built() > 0 || fixed_built ? 1 : 0);
+    out.tested_generators = halves[0].tested + halves[1].tested + fixed_decider.tested() + fixed_tested;
+    out.closed_letters = n + halves[0].closed_letters + halves[1].closed_letters;
     out.result.verdict = verdict_of(out.result.modes.size());
     return out;
 }

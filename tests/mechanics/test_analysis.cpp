@@ -45,6 +45,10 @@ std::set<std::string> direct(const Scene& scene, const Vec3& e, bool quasi_stati
     // The indices are enumerate_modes' (and analyze's): the same letters there.
     const ModeSet all = enumerate_modes(scene.contacts);
     EXPECT_EQ(a.mode_count, all.modes.size());
+    std::size_t closed = 0;  // the letters that are not 's', over every mode
+    for (const Mode& mode : all.modes) closed += static_cast<std::size_t>(std::count_if(mode.letters.begin(), mode.letters.end(), [](char c) { return c != 's'; }));
+    EXPECT_EQ(a.closed_letters, closed);
+    EXPECT_GE(a.tested_generators, a.built);
     EXPECT_EQ(a.modes.size(), a.result.modes.size());
     EXPECT_TRUE(std::is_sorted(a.result.modes.begin(), a.result.modes.end()));
     std::set<std::string> out;

@@ -73,6 +73,11 @@ struct SceneAnswer {
     QueryResult result;          ///< their indices in enumerate_modes' order (analyze's), increasing
     std::size_t mode_count = 0;  ///< how many modes the scene has
     std::size_t built = 0;       ///< how many modes' E e was tested against (the rest were decided by certificates)
+    /// The generators of those E: with mode_count, the work of this answer.
+    std::size_t tested_generators = 0;
+    /// The closed contacts summed over the modes (the letters that are not 's'): about the
+    /// generators an analysis of the scene builds.
+    std::size_t closed_letters = 0;
 };
 
 /// The same answer as query(analyze(scene, options), e), without building every mode's sets or
