@@ -92,9 +92,9 @@ constexpr double kAnalysedLetters = 1e8;
 // walked and generators tested) is weighed against an analysis on two threads (a cone per
 // mode, of about its closed contacts' generators, the modes shared out): for a file, the work
 // per answer so far times the questions left; for a pipe, whose length is unknown, the work so
-// far (rent or buy: at most about twice the better of the two). From the next
-// wrench on, if its letters stay under kAnalysedLetters, the scene is analysed and the rest
-// answered from the index. The answers are the same either way.
+// far (rent or buy: at most about twice the better of the two). When the analysis wins, it is
+// made at the next wrench (if its letters stay under kAnalysedLetters) and answers the rest
+// from its index. The answers are the same either way.
 void answer_file(const QueryOptions& o) {
     const Scene scene = read_scene_file(o.file);
     TerminalProgress progress;
