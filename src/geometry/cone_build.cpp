@@ -34,8 +34,9 @@ namespace {
 struct Parts {
     std::vector<ExactVector> rays, lineality, facets, equations;
     Incidence facet_rays;
-    // A pointed full-dimensional cone: its extreme rays in counter-clockwise order, as indices
-    // into the generators (facet i is rays i x i+1). Without facets when only those are wanted.
+    // Built without facets (cone_holds), a pointed full-dimensional cone is only this: its
+    // extreme rays in counter-clockwise order, as indices into the generators (facet i is
+    // rays i x i+1).
     std::vector<int> cycle;
 };
 
@@ -441,8 +442,10 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
 template <class G>
 Parts pointed_from_cycle(std::span<const G> g, const std::vector<int>& cycle, bool facets) {
     Parts parts;
-    parts.cycle = cycle;
-    if (!facets) return parts;
+    if (!facets) {  // the cycle is all cone_holds needs
+        parts.cycle = cycle;
+        return parts;
+    }
     const std::size_t k = cycle.size();
     parts.rays.reserve(k);
     parts.facets.reserve(k);
@@ -699,23 +702,26 @@ Cone ConeBuilder::build(std::span<const ExactVector> generators) {
 
 Held cone_holds(std::span<const ExactVector> generators, const Vec3& wrench) {
     const ExactVector w = ExactVector::input(wrench);
-    // The nonzero generators, and where each came from.
-    std::vector<ExactVector> g;
+    // The nonzero generators, and where each came from; copied only when some are zero.
+    std::span<const ExactVector> g = generators;
+    std::vector<ExactVector> nonzero;
     std::vector<std::size_t> from;
-    g.reserve(generators.size());
-    from.reserve(generators.size());
-    for (std::size_t i = 0; i < generators.size(); ++i) {
-        if (is_zero(generators[i])) continue;
-        g.push_back(generators[i]);
-        from.push_back(i);
+    if (std::any_of(generators.begin(), generators.end(), [](const ExactVector& v) { return is_zero(v); })) {
+        for (std::size_t i = 0; i < generators.size(); ++i) {
+            if (is_zero(generators[i])) continue;
+            nonzero.push_back(generators[i]);
+            from.push_back(i);
+        }
+        g = nonzero;
     }
+    const auto origin = [&](int i) { return from.empty() ? static_cast<std::size_t>(i) : from[static_cast<std::size_t>(i)]; };
     Held out;
     if (g.empty()) {  // {0}
         out.member = is_zero(wrench);
         if (!out.member) out.separator = w.negated();
         return out;
     }
-    Parts parts = parts_of(std::span<const ExactVector>(g), false);
+    Parts parts = parts_of(g, false);
     if (parts.cycle.empty()) {  // not pointed and full-dimensional: the cone itself
         const Cone cone = ConeBuilder::assemble(std::move(parts.rays), std::move(parts.lineality), std::move(parts.facets),
                                                 std::move(parts.equations), std::move(parts.facet_rays));
@@ -739,8 +745,7 @@ Held cone_holds(std::span<const ExactVector> generators, const Vec3& wrench) {
     // The fan from ray 0: the triangle (r_0, r_i, r_{i+1}) that holds w.
     for (std::size_t i = 1; i + 1 < k; ++i) {
         if (det_sign(ray(0), ray(i), w) != Sign::Negative && det_sign(ray(0), ray(i + 1), w) != Sign::Positive) {
-            out.triangle = {from[static_cast<std::size_t>(c[0])], from[static_cast<std::size_t>(c[i])],
-                            from[static_cast<std::size_t>(c[i + 1])]};
+            out.triangle = {origin(c[0]), origin(c[i]), origin(c[i + 1])};
             break;
         }
     }
