@@ -162,7 +162,6 @@ public:
 
     bool member(const detail::WalkCell& cell) {
         cell_ = &cell;
-        images_ready_ = false;
         const bool answer = decide();
         last_face_ = cell.face;
         if (answer) current_valid_ = false;  // no plane holds a cone that holds e
@@ -188,17 +187,6 @@ private:
         return p;
     }
 
-    // The images M g of the cell's twists, made when first needed (only build() needs them).
-    const std::vector<ExactVector>& images() {
-        if (!images_ready_) {
-            images_.clear();
-            if (m_) {
-                for (const Exact3& g : *cell_->closure) images_.push_back(ExactVector::from_exact(g).transformed(*m_));
-            }
-            images_ready_ = true;
-        }
-        return images_;
-    }
     bool holds_images(const Plane& p) const {
         if (!m_) return true;
         return std::all_of(cell_->closure->begin(), cell_->closure->end(),
@@ -276,11 +264,16 @@ private:
     // e against E (its extreme rays from its generators); a new certificate either way.
     bool build() {
         ++built_;
-        // The images first, then the contacts' edges; a contact's generator is named by
-        // (contact, slot), kept beside it (a twist is named by itself, when a triangle needs it).
-        std::vector<ExactVector> generators = images();
+        // The images M g of the cell's twists first, then the contacts' edges; a contact's
+        // generator is named by (contact, slot), kept beside it (a twist is named by itself,
+        // when a triangle needs it).
+        std::vector<ExactVector> generators;
+        if (m_) {
+            for (const Exact3& g : *cell_->closure) generators.push_back(ExactVector::from_exact(g).transformed(*m_));
+        }
+        const std::size_t twists = generators.size();
         std::vector<std::pair<int, int>> named;
-        generators.reserve(generators.size() + 2 * cell_->closed.size());
+        generators.reserve(twists + 2 * cell_->closed.size());
         named.reserve(2 * cell_->closed.size());
         for (std::size_t t = 0; t < cell_->closed.size(); ++t) {
             const int j = cell_->closed[t];
@@ -294,7 +287,7 @@ private:
         tested_ += generators.size();
         const Held held = cone_holds(generators, e_);
         if (held.member) {
-            if (held.triangle) remember_triangle(*held.triangle, generators, named);
+            if (held.triangle) remember_triangle(*held.triangle, generators, twists, named);
             return true;
         }
         // A facet or equation of E with h . e < 0 (one exists: e is outside E).
@@ -305,11 +298,11 @@ private:
         return false;
     }
 
-    // Keeps three generators of E whose cone holds e (corners: indices into generators), named.
+    // Keeps three generators of E whose cone holds e (corners: indices into generators, whose
+    // first `twists` are the images of the cell's twists), named.
     void remember_triangle(const std::array<std::size_t, 3>& corners, const std::vector<ExactVector>& generators,
-                           const std::vector<std::pair<int, int>>& named) {
+                           std::size_t twists, const std::vector<std::pair<int, int>>& named) {
         std::array<Piece, 3> t;
-        const std::size_t twists = images_.size();
         for (std::size_t corner = 0; corner < 3; ++corner) {
             const std::size_t k = corners[corner];
             t[corner] = k < twists ? Piece{-1, 0, (*cell_->closure)[k]} : Piece{named[k - twists].first, named[k - twists].second, {}};
@@ -329,8 +322,6 @@ private:
     Vec3 e_;
     ExactVector wrench_;
     const detail::WalkCell* cell_ = nullptr;
-    std::vector<ExactVector> images_;
-    bool images_ready_ = false;
     std::optional<Plane> current_;
     bool current_valid_ = false;  // the current plane held every generator of the previous cell
     std::size_t last_face_ = static_cast<std::size_t>(-1);  // that cell's face
