@@ -68,6 +68,13 @@ nlohmann::json answer_json(const std::vector<ModeForces>& a, const QueryResult& 
     return {{"modes", modes}, {"verdict", to_string(r.verdict)}};
 }
 
+// {"modes", "verdict"} of an answer by the walk (as answer_json of one through the analysis).
+nlohmann::json answer_json(const SceneAnswer& a) {
+    nlohmann::json modes = nlohmann::json::array();
+    for (const Mode& mode : a.modes) modes.push_back(mode.letters);
+    return {{"modes", modes}, {"verdict", to_string(a.result.verdict)}};
+}
+
 // The lines of a regular file that are not blank (a wrench each, or an error); none for a pipe
 // or a device, which can be read only once.
 std::optional<std::size_t> questions_in(const std::string& path) {
@@ -144,9 +151,7 @@ void answer_file(const QueryOptions& o) {
             if (o.margin) out["margins"] = margins_json(p, r, e);
         } else {
             const SceneAnswer a = walk->answer(e);
-            nlohmann::json modes = nlohmann::json::array();
-            for (const Mode& mode : a.modes) modes.push_back(mode.letters);
-            out = {{"modes", modes}, {"verdict", to_string(a.result.verdict)}};
+            out = answer_json(a);
             walked += static_cast<double>(a.mode_count + a.tested_generators);
             ++walks;
             const double analysis = static_cast<double>(a.mode_count + a.closed_letters) / 2.0;  // on two threads
@@ -171,9 +176,7 @@ int answer_one(const QueryOptions& o) {
     const SceneAnswer a = query_input(scene, e, "query", AnalysisOptions{o.quasi_static, progress.callback()});
     progress.finish();
     if (o.json) {
-        nlohmann::json modes = nlohmann::json::array();
-        for (const Mode& mode : a.modes) modes.push_back(mode.letters);
-        std::cout << nlohmann::json{{"modes", modes}, {"verdict", to_string(a.result.verdict)}}.dump() << "\n";
+        std::cout << answer_json(a).dump() << "\n";
         return 0;
     }
     std::cout << "verdict: " << to_string(a.result.verdict) << "\n";
