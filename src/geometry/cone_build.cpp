@@ -21,8 +21,10 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory_resource>
 #include <numeric>
 #include <optional>
 #include <random>
@@ -129,22 +131,33 @@ struct AngularOrder {
 template <class G>
 struct Item {
     G v;
-    double key;  // floating-point pseudo-angle inside the half; only a hint for the sort
+    double key;  // 4 * half + a floating-point pseudo-angle inside the half; only a hint for the sort
     int index;
     int half;
 };
 
+// The working vectors of one angular analysis (items, their ties, groups, the scan's stack) come
+// from a buffer on the stack while they fit, so a cone of a few generators makes no allocation
+// beyond its own representation; bigger ones spill to the heap.
+struct Scratch {
+    alignas(std::max_align_t) std::byte buffer[6144];
+    std::pmr::monotonic_buffer_resource memory{buffer, sizeof buffer};
+};
+
 // A pseudo-angle, increasing with the angle inside one open half-plane, from coordinates
-// (a, b) along and across the reference direction (b > 0 in half 1, b < 0 in half 3).
+// (a, b) along and across the reference direction (b > 0 in half 1, b < 0 in half 3), in
+// [0, 2], plus 4 * half: one double orders the halves and the angles within each.
 inline double pseudo_angle(double a, double b, int half) {
     const double d = std::fabs(a) + std::fabs(b);
-    if (d == 0.0 || !std::isfinite(d)) return 0.0;
-    return half == 1 ? 1.0 - a / d : 1.0 + a / d;
+    const double base = 4.0 * half;
+    if (d == 0.0 || !std::isfinite(d)) return base;
+    return base + (half == 1 ? 1.0 - a / d : 1.0 + a / d);
 }
 
 // Groups of items of exactly equal angle: [begin, end) ranges, stored as 32-bit starts.
 class Groups {
 public:
+    explicit Groups(std::pmr::memory_resource* memory) : starts_(memory) {}
     void add(std::size_t begin) { starts_.push_back(static_cast<std::uint32_t>(begin)); }
     void close(std::size_t end) { end_ = end; }
     [[nodiscard]] std::size_t size() const { return starts_.size(); }
@@ -153,20 +166,21 @@ public:
     }
 
 private:
-    std::vector<std::uint32_t> starts_;
+    std::pmr::vector<std::uint32_t> starts_;
     std::size_t end_ = 0;
 };
 
-// Sorts items by angle, ties (the same direction around the axis) by `closer_first`, and
-// returns the groups of exactly equal angle as [begin, end) ranges.
+// Sorts items by angle, ties (the same direction around the axis) by the order
+// `tie_order(first)` gives for the group of `first`, and returns the groups of exactly equal
+// angle as [begin, end) ranges.
 // The floating-point keys put the items almost in order; an exact insertion pass then makes
 // the order exact in O(n + inversions), and runs of exactly equal angle are sorted by the
 // exact tie-break. Correct for any keys; fast when they are close to the truth.
-template <class G, class Closer>
-Groups angular_sort(std::vector<Item<G>>& items, const AngularOrder<G>& ord, Closer closer_first) {
+template <class G, class TieOrder>
+Groups angular_sort(std::pmr::vector<Item<G>>& items, const AngularOrder<G>& ord, TieOrder tie_order) {
     using Item = momentlab::Item<G>;
     std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) {
-        return a.half != b.half ? a.half < b.half : a.key < b.key;
+        return a.key < b.key;  // the halves first (pseudo_angle)
     });
     // compare(a, b): Negative if a comes first, Zero for the same angle, Positive after.
     auto compare = [&](const Item& a, const Item& b) {
@@ -179,13 +193,16 @@ Groups angular_sort(std::vector<Item<G>>& items, const AngularOrder<G>& ord, Clo
     // in one plane through the pivot, where the floating-point angles are noise), the moves
     // are bounded and a plain exact sort takes over, so the whole stays O(n log n).
     // `same[i]`: items i-1 and i share an angle.
-    std::vector<char> same(items.size(), 0);
+    // While nothing has moved, the comparison that stopped item i is its final relation to item
+    // i-1, so `same` is filled on the way; after a move it is filled again.
+    std::pmr::vector<char> same(items.size(), 0, items.get_allocator());
     std::size_t moves = 0;
     const std::size_t budget = 8 * items.size() + 1024;
     bool sorted = true;
     for (std::size_t i = 1; i < items.size() && sorted; ++i) {
         std::size_t j = i;
-        while (j > 0 && compare(items[j - 1], items[j]) == Sign::Positive) {
+        Sign c = Sign::Negative;
+        while (j > 0 && (c = compare(items[j - 1], items[j])) == Sign::Positive) {
             std::swap(items[j], items[j - 1]);
             --j;
             if (++moves > budget) {
@@ -193,18 +210,22 @@ Groups angular_sort(std::vector<Item<G>>& items, const AngularOrder<G>& ord, Clo
                 break;
             }
         }
+        if (moves == 0) same[i] = c == Sign::Zero;
     }
     if (!sorted) {
         std::sort(items.begin(), items.end(),
                   [&](const Item& a, const Item& b) { return compare(a, b) == Sign::Negative; });
     }
-    for (std::size_t i = 1; i < items.size(); ++i) same[i] = compare(items[i - 1], items[i]) == Sign::Zero;
-    Groups groups;
+    if (moves > 0) {
+        for (std::size_t i = 1; i < items.size(); ++i) same[i] = compare(items[i - 1], items[i]) == Sign::Zero;
+    }
+    Groups groups(items.get_allocator().resource());
     std::size_t start = 0;
     for (std::size_t i = 1; i <= items.size(); ++i) {
         if (i < items.size() && same[i]) continue;
         groups.add(start);
         if (i - start > 1) {
+            const auto closer_first = tie_order(items[start].v);
             std::sort(items.begin() + static_cast<std::ptrdiff_t>(start),
                       items.begin() + static_cast<std::ptrdiff_t>(i),
                       [&](const Item& a, const Item& b) { return closer_first(a.v, b.v); });
@@ -232,7 +253,8 @@ Parts build_planar(std::span<const G> g, const G& a, const G& b) {
     Parts parts;
     parts.equations.push_back(ExactVector::cross(a, b, 1));
     AngularOrder<G> ord{AngularOrder<G>::Mode::PlaneAxis, nonzero_cross_axis(a, b), G{}, a, G{}};
-    std::vector<Item<G>> items;
+    Scratch scratch;
+    std::pmr::vector<Item<G>> items(&scratch.memory);
     items.reserve(g.size());
     // Keys in the coordinate plane across the axis, where the exact orientation is the
     // sign of (u x v)[axis]: the same sense, so the keys increase with the exact order.
@@ -244,7 +266,7 @@ Parts build_planar(std::span<const G> g, const G& a, const G& b) {
         const double across = x[ci] * y[cj] - x[cj] * y[ci];
         items.push_back({g[i], pseudo_angle(along, across, half), static_cast<int>(i), half});
     }
-    const Groups groups = angular_sort(items, ord, [](const G&, const G&) { return false; });
+    const Groups groups = angular_sort(items, ord, [](const G&) { return [](const G&, const G&) { return false; }; });
     const std::size_t m = groups.size();
     assert(m >= 2);
     auto rep = [&](std::size_t group) -> const G& { return items[groups[group % m].first].v; };
@@ -281,7 +303,7 @@ Parts build_planar(std::span<const G> g, const G& a, const G& b) {
 // ---------------------------------------------------------------------------------------------
 // Rank 3, pointed, with a known extreme ray p: Graham's scan around p.
 template <class G>
-Parts pointed_from_cycle(std::span<const G> g, const std::vector<int>& cycle, bool facets);
+Parts pointed_from_cycle(std::span<const G> g, std::span<const int> cycle, bool facets);
 
 // What the angular order around a pivot p tells:
 //  * a gap wider than pi: p is on an edge of the cone. Without -p among the generators p is an
@@ -318,48 +340,63 @@ template <class G>
 PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& witness_hint, bool facets) {
     PivotAnalysis out;
     const G& p = g[pivot];
-    std::vector<Item<G>> items;
-    items.reserve(g.size());
     bool antiparallel = false;
-    int reference = -1;
-    for (std::size_t i = 0; i < g.size(); ++i) {
-        if (i == pivot) continue;  // p itself: parallel, and the test would take the exact path
-        if (parallel(p, g[i])) {
-            if (dot_sign(p, g[i]) == Sign::Negative) antiparallel = true;
-            continue;
-        }
-        if (reference < 0) reference = static_cast<int>(i);
-        items.push_back({g[i], 0.0, static_cast<int>(i), 0});
+    // The reference direction r: the first generator not parallel to p (the rank is 3).
+    std::size_t reference = 0;
+    for (;; ++reference) {
+        if (reference == pivot) continue;  // p itself: parallel, and the test would take the exact path
+        if (!parallel(p, g[reference])) break;
+        if (dot_sign(p, g[reference]) == Sign::Negative) antiparallel = true;
     }
-    const G& r = g[static_cast<std::size_t>(reference)];
-    G witness = witness_hint;
-    if (det_sign(p, r, witness) == Sign::Zero) {
-        for (const G& v : g) {
-            if (det_sign(p, r, v) != Sign::Zero) {
-                witness = v;
-                break;
-            }
-        }
+    const G& r = g[reference];
+    // A witness w with det(p, r, w) != 0 tells r from -r around p.
+    const G* witness = &witness_hint;
+    Sign witness_side = &witness_hint == &r || &witness_hint == &p ? Sign::Zero : det_sign(p, r, witness_hint);
+    for (std::size_t i = 0; witness_side == Sign::Zero && i < g.size(); ++i) {
+        if (i == pivot || i == reference) continue;
+        witness = &g[i];
+        witness_side = det_sign(p, r, g[i]);
     }
-    AngularOrder<G> ord{AngularOrder<G>::Mode::Pivot, 0, p, r, witness};
+    AngularOrder<G> ord{AngularOrder<G>::Mode::Pivot, 0, p, r, *witness};
     // An orthonormal frame (e1, e2) of the quotient by p, e1 along r: hints for the keys.
     const Vec3 ph = approx(p).normalized();
     const Vec3 e1 = (approx(r) - approx(r).dot(ph) * ph).normalized();
     const Vec3 e2 = ph.cross(e1);
-    for (Item<G>& it : items) {
-        it.half = it.index == reference ? 0 : ord.half(it.v);  // r itself: along r, no det(p, r, r)
-        const Vec3& u = approx(it.v);
-        it.key = pseudo_angle(u.dot(e1), u.dot(e2), it.half);
+    Scratch scratch;
+    std::pmr::vector<Item<G>> items(&scratch.memory);
+    items.reserve(g.size() - reference);
+    // Each generator's half around p from one determinant det(p, r, x); only where it is zero
+    // is x tested for being parallel to p (dropped) or told from -r by the witness.
+    for (std::size_t i = reference; i < g.size(); ++i) {
+        if (i == pivot) continue;
+        int half = 0;
+        if (i != reference) {  // r itself: along r, no det(p, r, r)
+            const Sign s = det_sign(p, r, g[i]);
+            if (s != Sign::Zero) {
+                half = s == Sign::Positive ? 1 : 3;
+            } else if (parallel(p, g[i])) {
+                if (dot_sign(p, g[i]) == Sign::Negative) antiparallel = true;
+                continue;
+            } else {
+                half = det_sign(p, g[i], *witness) == witness_side ? 0 : 2;
+            }
+        }
+        const Vec3& u = approx(g[i]);
+        items.push_back({g[i], pseudo_angle(u.dot(e1), u.dot(e2), half), static_cast<int>(i), half});
     }
     // Ties: nearer to p (along the great circle through p) first. In the plane of p and u,
-    // u is nearer than v iff u lies inside cone(p, v).
-    auto closer_first = [&](const G& u, const G& v) {
-        const int k = nonzero_cross_axis(p, v);
-        const Sign pv = cross_component_sign(p, v, k);
-        const Sign uv = cross_component_sign(u, v, k);
-        return uv != Sign::Zero && uv == pv;
+    // u is nearer than v iff u lies inside cone(p, v). The items of a group lie on one half-plane
+    // bounded by the line of p, so their products p x v are positive multiples of each other:
+    // one axis k where they are non-zero, and their sign there, serve the whole group.
+    auto tie_order = [&](const G& first) {
+        const int k = nonzero_cross_axis(p, first);
+        const Sign pv = cross_component_sign(p, first, k);
+        return [k, pv](const G& u, const G& v) {
+            const Sign uv = cross_component_sign(u, v, k);
+            return uv != Sign::Zero && uv == pv;
+        };
     };
-    const Groups groups = angular_sort(items, ord, closer_first);
+    const Groups groups = angular_sort(items, ord, tie_order);
     const std::size_t m = groups.size();
     auto rep = [&](std::size_t group) -> const G& { return items[groups[group % m].first].v; };
     std::size_t wide = m, flat = m;
@@ -413,7 +450,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     }
     // Graham's scan: p, then the groups from just after the gap to just before it.
     // The stack holds positions in `items` (-1 for p), which the scan visits in order.
-    std::vector<std::int64_t> stack = {-1};
+    std::pmr::vector<std::int64_t> stack({-1}, &scratch.memory);
     auto at = [&](std::int64_t k) -> const G& { return k < 0 ? p : items[static_cast<std::size_t>(k)].v; };
     auto push = [&](std::size_t k) {
         const G& x = items[k].v;
@@ -430,7 +467,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
         stack.pop_back();
     }
     assert(stack.size() >= 3);
-    std::vector<int> hull;
+    std::pmr::vector<int> hull(&scratch.memory);
     hull.reserve(stack.size());
     for (std::int64_t k : stack) hull.push_back(k < 0 ? static_cast<int>(pivot) : items[static_cast<std::size_t>(k)].index);
     // The cycle starts at the extreme generator given first, whichever pivot found it.
@@ -440,10 +477,10 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
 }
 
 template <class G>
-Parts pointed_from_cycle(std::span<const G> g, const std::vector<int>& cycle, bool facets) {
+Parts pointed_from_cycle(std::span<const G> g, std::span<const int> cycle, bool facets) {
     Parts parts;
     if (!facets) {  // the cycle is all cone_holds needs
-        parts.cycle = cycle;
+        parts.cycle.assign(cycle.begin(), cycle.end());
         return parts;
     }
     const std::size_t k = cycle.size();
@@ -677,7 +714,7 @@ ConePathStats& ConeBuilder::stats() {
 
 Cone ConeBuilder::assemble(std::vector<ExactVector> rays, std::vector<ExactVector> lineality,
                            std::vector<ExactVector> facets, std::vector<ExactVector> equations, Incidence facet_rays) {
-    Cone cone;
+    Cone cone{Cone::Unset{}};
     cone.rays_ = std::move(rays);
     cone.lineality_ = std::move(lineality);
     cone.facets_ = std::move(facets);

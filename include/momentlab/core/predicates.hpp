@@ -73,8 +73,14 @@ struct DetTerms {
     // A product of b and c below the normal range errs by up to 2^-1075 absolutely, and a's
     // coordinates scale that error: the bound needs an absolute term (found by fuzz_cone with
     // coordinates near 1e231 and 1e-322).
-    const double underflow = (std::fabs(a.x()) + std::fabs(a.y()) + std::fabs(a.z())) * 0x1p-1072;
-    if (detail::filter_decides(value, permanent) && std::fabs(value) > detail::kErrorBound * permanent + underflow) {
+    // That term is at most 2^-772 while a's coordinates sum below 2^300, which the filter's
+    // slack already covers (kErrorBound is 8 eps where Shewchuk's bound is below 7.1 eps, and
+    // the permanent exceeds 2^-600: a margin above 2^-653). It is computed only beyond that,
+    // where it is a normal number: a subnormal product stalls the processor for about a hundred
+    // cycles, which made every det_sign cost 20-30 ns.
+    const double a_sum = std::fabs(a.x()) + std::fabs(a.y()) + std::fabs(a.z());
+    if (detail::filter_decides(value, permanent) &&
+        (a_sum < 0x1p300 || std::fabs(value) > detail::kErrorBound * permanent + a_sum * 0x1p-1072)) {
         return sign_of(value);
     }
     return detail::det_sign_exact(a, b, c);

@@ -28,6 +28,7 @@ public:
         indices_.reserve(rows * per_row);
     }
     void add_row(std::span<const int> rays) {
+        if (offsets_.empty()) offsets_.push_back(0);
         indices_.insert(indices_.end(), rays.begin(), rays.end());
         offsets_.push_back(static_cast<int>(indices_.size()));
     }
@@ -36,12 +37,12 @@ public:
         return {indices_.data() + offsets_[j], static_cast<std::size_t>(offsets_[j + 1] - offsets_[j])};
     }
     /// The number of facets.
-    [[nodiscard]] std::size_t size() const { return offsets_.size() - 1; }
+    [[nodiscard]] std::size_t size() const { return offsets_.empty() ? 0 : offsets_.size() - 1; }
     /// The incidence seen from the other side: for each of `columns` rays, the facets through it.
     [[nodiscard]] Incidence transposed(std::size_t columns) const;
 
 private:
-    std::vector<int> offsets_{0};
+    std::vector<int> offsets_;  // row j is indices_[offsets_[j], offsets_[j + 1]); empty for no rows
     std::vector<int> indices_;
 };
 
@@ -158,6 +159,9 @@ public:
     [[nodiscard]] std::vector<Vec3> halfspace_values() const;
 
 private:
+    struct Unset {};
+    explicit Cone(Unset) {}  // no representation yet: for ConeBuilder, which fills every member
+
     std::vector<ExactVector> rays_;
     std::vector<ExactVector> lineality_;
     std::vector<ExactVector> facets_;
