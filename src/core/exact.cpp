@@ -205,6 +205,17 @@ ExactVector ExactVector::cross(const ExactVector& u, const ExactVector& v, int s
     return from_exact(sign >= 0 ? c : -c);
 }
 
+ExactVector ExactVector::cross(const ExactVector& u, const ExactVector& v, int sign, const ExactVector& same) {
+    if (u.kind_ == Kind::Input && v.kind_ == Kind::Input) return cross(u.value_, v.value_, sign);
+    Exact3 c = momentlab::cross(u.exact(), v.exact());
+    if (sign < 0) c = -c;
+    // from_exact(c) makes an input of c when it fits doubles, a computed vector otherwise; `same`
+    // is that vector when it is of the same kind with the same coordinates.
+    const bool fits = c[0].fits_double() && c[1].fits_double() && c[2].fits_double();
+    if (same.kind_ == (fits ? Kind::Input : Kind::Computed) && same.exact() == c) return same;
+    return fits ? input(to_double(c)) : computed(std::move(c));
+}
+
 ExactVector ExactVector::from_exact(const Exact3& e) {
     if (e[0].fits_double() && e[1].fits_double() && e[2].fits_double()) return input(to_double(e));
     return computed(e);
@@ -213,18 +224,18 @@ ExactVector ExactVector::from_exact(const Exact3& e) {
 ExactVector ExactVector::computed(Exact3 e) {
     ExactVector out;
     out.kind_ = Kind::Computed;
-    auto block = std::make_shared<Computed>();
-    block->approximation = exact_approximation(e);
+    const Approximation approximation = exact_approximation(e);
     // The value on its own scale when that is readable, else on the approximation's.
     const Vec3 plain = to_double(e);
     out.value_ = plain.allFinite() && plain.cwiseAbs().maxCoeff() > 0x1p-64 && plain.cwiseAbs().maxCoeff() < 0x1p64
                      ? readable(plain)
-                     : block->approximation.approx;
-    // The approximation is also kept in the object itself (u_ and v_.x(), unused by this kind):
+                     : approximation.approx;
+    // The approximation is kept in the object itself (u_ and v_.x(), unused by this kind):
     // predicates read it without following the pointer, which on a cone of 10^5 constructed
     // generators is a cache miss per predicate.
-    out.u_ = block->approximation.approx;
-    out.v_ = Vec3(block->approximation.err, 0.0, 0.0);
+    out.u_ = approximation.approx;
+    out.v_ = Vec3(approximation.err, 0.0, 0.0);
+    auto block = std::make_shared<Computed>();
     block->exact = std::move(e);
     out.computed_ = std::move(block);
     return out;
@@ -237,7 +248,16 @@ Exact3 ExactVector::exact() const {
             const Exact3 c = momentlab::cross(momentlab::exact(u_), momentlab::exact(v_));
             return sign_ > 0 ? c : -c;
         }
-        case Kind::Computed: return sign_ > 0 ? computed_->exact : -computed_->exact;
+        case Kind::Computed: {
+            const Exact3& stored = computed_->exact;
+            Exact3 out;
+            for (std::size_t i = 0; i < 3; ++i) {
+                const int from = from_[i];
+                const Dyadic& x = stored[static_cast<std::size_t>(std::abs(from) - 1)];
+                out[i] = (from < 0) == (sign_ > 0) ? -x : x;
+            }
+            return out;
+        }
     }
     return {};
 }
@@ -284,26 +304,19 @@ ExactVector ExactVector::negated() const {
 
 ExactVector ExactVector::signed_permuted(const Mat3& p) const {
     if (kind_ == Kind::Computed) {
-        // Coordinates moved and negated: no arithmetic, and the approximation moves with them.
-        Exact3 moved;
-        const Exact3& from = computed_->exact;
+        // Coordinates moved and negated: no arithmetic, and the stored numbers are shared (only
+        // the map from them, from_, changes); the approximation moves with them.
+        ExactVector e = *this;
         for (int i = 0; i < 3; ++i) {
             for (int j = 0; j < 3; ++j) {
                 if (p(i, j) == 0.0) continue;
                 assert(p(i, j) == 1.0 || p(i, j) == -1.0);
-                const bool negative = (p(i, j) < 0) != (sign_ < 0);
-                moved[static_cast<std::size_t>(i)] = negative ? -from[static_cast<std::size_t>(j)] : from[static_cast<std::size_t>(j)];
+                const signed char f = from_[static_cast<std::size_t>(j)];
+                e.from_[static_cast<std::size_t>(i)] = static_cast<signed char>(p(i, j) < 0 ? -f : f);
             }
         }
-        ExactVector e;
-        e.kind_ = Kind::Computed;
         e.value_ = p * value_;
-        e.u_ = p * (sign_ > 0 ? u_ : Vec3(-u_));
-        e.v_ = v_;
-        auto block = std::make_shared<Computed>();
-        block->approximation = {e.u_, v_.x()};
-        block->exact = std::move(moved);
-        e.computed_ = std::move(block);
+        e.u_ = p * u_;
         return e;
     }
     ExactVector e = *this;

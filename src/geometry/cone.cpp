@@ -292,6 +292,10 @@ Cone sum(std::span<const Cone> cones) {
 }
 
 Cone intersection(const Cone& f, const Cone& g) {
+    // A pointed cone cut by a half-space (labels' sheets): its facets need no sorting again.
+    if (g.dimension() == 3 && g.lineality_dimension() == 2 && g.facets().size() == 1) {
+        if (std::optional<Cone> cut = ConeBuilder::cut(f, g.facets()[0])) return std::move(*cut);
+    }
     std::vector<ExactVector> normals = f.halfspaces();
     const std::vector<ExactVector> more = g.halfspaces();
     normals.insert(normals.end(), more.begin(), more.end());

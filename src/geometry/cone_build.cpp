@@ -713,14 +713,15 @@ ConePathStats& ConeBuilder::stats() {
 }
 
 Cone ConeBuilder::assemble(std::vector<ExactVector> rays, std::vector<ExactVector> lineality,
-                           std::vector<ExactVector> facets, std::vector<ExactVector> equations, Incidence facet_rays) {
+                           std::vector<ExactVector> facets, std::vector<ExactVector> equations, Incidence facet_rays,
+                           Representation exact) {
     Cone cone{Cone::Unset{}};
     cone.rays_ = std::move(rays);
     cone.lineality_ = std::move(lineality);
     cone.facets_ = std::move(facets);
     cone.equations_ = std::move(equations);
     cone.facet_rays_ = std::move(facet_rays);
-    cone.exact_ = Representation::Generators;
+    cone.exact_ = exact;
     return cone;
 }
 

@@ -279,5 +279,100 @@ TEST(ConeLaws, ConeHoldsAgreesWithBruteForceMembership) {
     EXPECT_GE(outside, testing::sized(3000));
 }
 
+// The same cone, vector for vector: exact coordinates, printed values, order and incidence.
+std::string identical(const Cone& a, const Cone& b) {
+    const auto same_list = [](const std::vector<ExactVector>& x, const std::vector<ExactVector>& y) {
+        if (x.size() != y.size()) return false;
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            if (reference::to_q(x[i]) != reference::to_q(y[i]) || x[i].value() != y[i].value()) return false;
+        }
+        return true;
+    };
+    if (!same_list(a.rays(), b.rays())) return "rays differ";
+    if (!same_list(a.facets(), b.facets())) return "facets differ";
+    if (!same_list(a.lineality(), b.lineality()) || !same_list(a.equations(), b.equations())) return "spans differ";
+    if (a.facet_rays().size() != b.facet_rays().size()) return "incidence differs";
+    for (std::size_t j = 0; j < a.facet_rays().size(); ++j) {
+        const auto x = a.facet_rays().row(j), y = b.facet_rays().row(j);
+        if (!std::equal(x.begin(), x.end(), y.begin(), y.end())) return "incidence differs";
+    }
+    return a.exact_representation() == b.exact_representation() ? "" : "exact representation differs";
+}
+
+// intersection(F, half-space) cuts a pointed F's cycle of facets (ConeBuilder::cut) instead of
+// building the cone of all half-spaces again: against cddlib (exact, from the raw generators and
+// h), and vector for vector against the cone of all the half-spaces. Cones of stored doubles and
+// of exact constructions (u x v: the shared rays), negated and signed-permuted as labels use them;
+// h random, an axis, through rays of F (exactly on the boundary), and +-a facet of F.
+TEST(ConeLaws, CutByHalfSpaceIsTheConeOfAllHalfSpaces) {
+    testing::Random rnd(20261126);
+    int cut = 0, other = 0, through_rays = 0;
+    Mat3 rotation;
+    rotation << 0, -1, 0, 1, 0, 0, 0, 0, 1;  // labels' points -> functionals, a signed permutation
+    for (int i = 0; i < testing::sized(3000); ++i) {
+        std::vector<ExactVector> g;
+        std::vector<reference::QVec> raw;
+        const int n = rnd.integer(3, 14);
+        const bool constructed = i % 3 == 2;
+        const Family family = family_of(i);
+        const auto doubles = testing::random_generators(rnd, family, n);
+        for (std::size_t k = 0; k < doubles.size(); ++k) {
+            if (constructed) {  // u x v with u a generator, v a small integer vector
+                const Vec3 v(rnd.integer(-3, 3), rnd.integer(-3, 3), rnd.integer(1, 3));
+                g.push_back(ExactVector::cross(ExactVector::input(doubles[k]), ExactVector::input(v)));
+                raw.push_back(reference::cross(reference::q(doubles[k]), reference::q(v)));
+            } else {
+                g.push_back(ExactVector::input(doubles[k]));
+                raw.push_back(reference::q(doubles[k]));
+            }
+        }
+        Cone f = Cone::from_generators(g);
+        if (i % 4 == 1) {  // as labels cut -K
+            f = f.negated();
+            for (auto& r : raw) r = reference::scale(-1, r);
+        }
+        if (i % 4 == 2) {
+            f = f.signed_permuted(rotation);
+            for (auto& r : raw) r = {-r[1], r[0], r[2]};
+        }
+        if (i % 4 == 3) f = f.dual().dual();
+        for (int k = 0; k < 4; ++k) {
+            Vec3 h = rnd.vec3(2.0);
+            if (k == 1) h = Vec3::Unit(rnd.integer(0, 2)) * (rnd.integer(0, 1) ? 1.0 : -1.0);
+            if (k == 2 && f.rays().size() >= 2 && !f.rays()[0].is_constructed()) {
+                // through two rays of F (exactly on the boundary), when the product is exact
+                const Vec3 a = f.rays()[0].value(), b = f.rays()[1].value();
+                if (reference::q(Vec3(a.cross(b))) == reference::cross(reference::q(a), reference::q(b))) {
+                    h = a.cross(b);
+                    ++through_rays;
+                }
+            }
+            if (k == 3 && !f.facets().empty() && !f.facets()[0].is_constructed()) h = f.facets()[0].value() * (i % 2 ? 1.0 : -1.0);
+            if (h.isZero()) continue;
+            const Cone half = Cone::half_space(h);
+            const Cone ours = intersection(f, half);
+            std::vector<ExactVector> normals = f.halfspaces();
+            normals.push_back(ExactVector::input(h));
+            const long clips = ConeBuilder::stats().dual_clip;
+            const Cone general = Cone::from_halfspaces(normals);
+            const bool took_cut = ConeBuilder::cut(f, ExactVector::input(h)).has_value();
+            (took_cut ? cut : other) += 1;
+            // cddlib: F's H-representation from the raw generators, and h.
+            auto hs = testing::oracle_halfspaces(oracle::from_generators(raw));
+            hs.push_back(reference::q(h));
+            const std::string why = testing::compare_with_oracle(ours, oracle::from_halfspaces(hs));
+            ASSERT_TRUE(why.empty()) << why << ", set " << i << ", h = " << h.transpose();
+            if (ConeBuilder::stats().dual_clip == clips) {  // (the clip may start the cycle elsewhere)
+                const std::string diff = identical(ours, general);
+                ASSERT_TRUE(diff.empty()) << diff << ", set " << i << ", h = " << h.transpose() << ", " << f.kind();
+            }
+        }
+    }
+    std::cout << "[ConeLaws] cut by a half-space: " << cut << " cut, " << other << " built from all half-spaces; "
+              << through_rays << " through two rays\n";
+    EXPECT_GE(cut, testing::sized(3000));
+    EXPECT_GE(through_rays, testing::sized(100));
+}
+
 }  // namespace
 }  // namespace momentlab

@@ -69,6 +69,10 @@ public:
     static ExactVector cross(const Vec3& u, const Vec3& v, int sign);
     /// sign * (u x v) for any exact u, v.
     static ExactVector cross(const ExactVector& u, const ExactVector& v, int sign = 1);
+    /// The same vector as cross(u, v, sign), in every value and predicate, sharing the storage of
+    /// `same` when `same` is exactly that construction (a ray of a cone being cut usually is:
+    /// no new exact vector is kept then).
+    static ExactVector cross(const ExactVector& u, const ExactVector& v, int sign, const ExactVector& same);
     /// The exact vector e (an input when every coordinate is a double).
     static ExactVector from_exact(const Exact3& e);
 
@@ -110,8 +114,7 @@ public:
 private:
     enum class Kind : unsigned char { Input, Cross, Computed };
     struct Computed {
-        Exact3 exact;
-        Approximation approximation;
+        Exact3 exact;  // the approximation lives in the object (u_, v_)
     };
     static ExactVector computed(Exact3 e);
 
@@ -121,6 +124,9 @@ private:
     std::shared_ptr<const Computed> computed_;
     signed char sign_ = 1;  // Cross and Computed: the vector is sign_ times the construction
     Kind kind_ = Kind::Input;
+    // Computed: coordinate i is +-(the stored coordinate |from_[i]| - 1), negated when from_[i]
+    // < 0, so a signed permutation (labels' K) shares the stored numbers instead of copying them.
+    std::array<signed char, 3> from_{1, 2, 3};
 };
 
 /// The exact sign of a . b.
