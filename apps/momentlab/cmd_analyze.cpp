@@ -1,13 +1,15 @@
 // `momentlab analyze SCENE [--json]`: every mode with its sets of twists, total, contact and
 // applied wrenches, and their labels.
 #include <array>
-#include <cstring>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "common.hpp"
+#include "momentlab/core/parallel.hpp"
+#include "momentlab/io/json_writer.hpp"
 
 namespace momentlab::cli {
 namespace {
@@ -18,69 +20,46 @@ struct AnalyzeOptions {
     bool quasi_static = false;
 };
 
-// Passes text on to `out`, with `prefix` after each newline (buffered; flush before writing
-// to `out` directly).
-class IndentingBuffer : public std::streambuf {
-public:
-    IndentingBuffer(std::streambuf& out, std::string prefix) : out_(out), prefix_(std::move(prefix)) {
-        setp(buffer_.data(), buffer_.data() + buffer_.size());
-    }
-
-protected:
-    int_type overflow(int_type c) override {
-        if (!drain()) return traits_type::eof();
-        if (!traits_type::eq_int_type(c, traits_type::eof())) {
-            *pptr() = traits_type::to_char_type(c);
-            pbump(1);
-        }
-        return traits_type::not_eof(c);
-    }
-    int sync() override { return drain() ? 0 : -1; }
-
-private:
-    bool drain() {
-        const char* s = pbase();
-        const char* end = pptr();
-        while (s < end) {  // runs without a newline in one piece
-            const char* newline = static_cast<const char*>(std::memchr(s, '\n', static_cast<std::size_t>(end - s)));
-            const char* stop = newline ? newline + 1 : end;
-            if (out_.sputn(s, stop - s) != stop - s) return false;
-            if (newline && out_.sputn(prefix_.data(), static_cast<std::streamsize>(prefix_.size())) !=
-                               static_cast<std::streamsize>(prefix_.size())) {
-                return false;
-            }
-            s = stop;
-        }
-        setp(buffer_.data(), buffer_.data() + buffer_.size());
-        return true;
-    }
-
-    std::streambuf& out_;
-    std::string prefix_;
-    std::array<char, 1 << 16> buffer_{};
-};
-
 int run(const AnalyzeOptions& o) {
-    const Problem p = load_problem(o.file, "analyze", o.quasi_static);
+    Problem p = load_problem(o.file, "analyze", o.quasi_static);
     if (o.json) {
-        // One mode's document at a time, written as dump(2) of {"modes": [...]} writes it: on
-        // 10^5 contacts the whole document is hundreds of megabytes. JSON strings hold no raw
-        // newline, so indenting after each one is indenting each line.
-        IndentingBuffer indent(*std::cout.rdbuf(), "    ");
-        std::cout << "{\n  \"modes\": [";
-        for (std::size_t i = 0; i < p.analysis.size(); ++i) {
-            const ModeForces& m = p.analysis[i];
-            const nlohmann::json mode = {{"mode", m.mode.letters},
-                                         {"A", to_json(m.mode.twists)},
-                                         {"rotation_centres", to_json(rotation_centres(m.mode))},
-                                         {"F", {{"cone", to_json(m.total)}, {"labels", to_json(Labels(m.total))}}},
-                                         {"T", {{"cone", to_json(m.contact)}, {"labels", to_json(Labels(m.contact))}}},
-                                         {"E", {{"cone", to_json(m.applied)}, {"labels", to_json(Labels(m.applied))}}}};
-            std::cout << (i == 0 ? "\n    " : ",\n    ");
-            std::ostream indented(&indent);
-            indented << std::setw(2) << mode << std::flush;
+        // Written as it is made, one mode at a time: on 10^5 contacts the document is hundreds
+        // of megabytes, the text nlohmann's dump(2) writes for {"modes": [...]}.
+        JsonWriter w(std::cout);
+        w.begin_object();
+        w.key("modes");
+        w.begin_array();
+        for (ModeForces& m : p.analysis) {
+            // The labels of E, F and T (each keeps its cone: moved in, not copied) and the
+            // rotation centres, on two threads when the mode is big.
+            std::array<std::optional<Labels>, 4> labels;
+            Cone* const sets[] = {&m.applied, &m.total, &m.contact};
+            const std::size_t size = m.applied.rays().size() + m.applied.facets().size() + m.contact.rays().size();
+            detail::for_each_index(4, size > 1000, [&](std::size_t i) {
+                labels[i].emplace(i < 3 ? Labels(std::move(*sets[i])) : rotation_centres(m.mode));
+            });
+            w.begin_object();  // keys sorted, as a document holds them
+            w.key("A");
+            write_json(w, m.mode.twists);
+            for (std::size_t i = 0; i < 3; ++i) {
+                w.key(i == 0 ? "E" : i == 1 ? "F" : "T");
+                w.begin_object();
+                w.key("cone");
+                write_json(w, labels[i]->forces());
+                w.key("labels");
+                write_json(w, *labels[i]);
+                w.end_object();
+            }
+            w.key("mode");
+            w.value(m.mode.letters);
+            w.key("rotation_centres");
+            write_json(w, *labels[3]);
+            w.end_object();
         }
-        std::cout << (p.analysis.empty() ? "]\n}\n" : "\n  ]\n}\n");
+        w.end_array();
+        w.end_object();
+        w.flush();
+        std::cout << "\n";
         return 0;
     }
     // The whole answer first: a value that cannot be printed stops it before any of it is.

@@ -42,6 +42,7 @@
 #include "momentlab/io/force_set_json.hpp"
 #include "momentlab/io/input_error.hpp"
 #include "momentlab/io/json_output.hpp"
+#include "momentlab/io/json_writer.hpp"
 #include "momentlab/io/scene_json.hpp"
 #include "momentlab/mechanics/analysis.hpp"
 #include "momentlab/mechanics/closure.hpp"

@@ -332,12 +332,12 @@ PYBIND11_MODULE(_momentlab, m) {
         .def("in_relative_interior",
              [](const Cone& c, const py::handle& w) { return c.in_relative_interior(vector_of<3>(w, "wrench")); },
              py::arg("w"))
-        .def("dual", &Cone::dual)
-        .def("negated", &Cone::negated)
+        .def("dual", [](const Cone& c) { return c.dual(); })
+        .def("negated", [](const Cone& c) { return c.negated(); })
         .def("issubset", [](const Cone& a, const Cone& b) { return subset(a, b); }, py::arg("other"))
         .def("__add__", [](const Cone& a, const Cone& b) { return sum(a, b); })
         .def("__and__", [](const Cone& a, const Cone& b) { return intersection(a, b); })
-        .def("__neg__", &Cone::negated)
+        .def("__neg__", [](const Cone& c) { return c.negated(); })
         .def("__eq__", [](const Cone& a, const Cone& b) { return a == b; })
         .def("labels", [](const Cone& c) { return Labels(c); }, "Its moment labels.")
         .def("__repr__", [](const Cone& c) {

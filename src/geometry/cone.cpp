@@ -87,34 +87,38 @@ std::string Cone::kind() const {
     }
 }
 
-Cone Cone::dual() const {
+Cone Cone::dual() const& { return Cone(*this).dual(); }
+
+Cone Cone::dual() && {
     Cone d;
-    d.rays_ = facets_;
-    d.lineality_ = equations_;
-    d.facets_ = rays_;
-    d.equations_ = lineality_;
-    d.exact_ = exact_ == Representation::Generators ? Representation::Halfspaces
-                                                    : Representation::Generators;
     // Transpose the incidences: ray j of the dual (facet j of this) lies on facet i of the dual
     // (ray i of this) exactly when ray i lies on facet j here.
     d.facet_rays_ = facet_rays_.transposed(rays_.size());
+    d.rays_ = std::move(facets_);
+    d.lineality_ = std::move(equations_);
+    d.facets_ = std::move(rays_);
+    d.equations_ = std::move(lineality_);
+    d.exact_ = exact_ == Representation::Generators ? Representation::Halfspaces
+                                                    : Representation::Generators;
     return d;
 }
 
-Cone Cone::negated() const {
-    Cone c = *this;
-    for (auto* list : {&c.rays_, &c.lineality_, &c.facets_, &c.equations_}) {
+Cone Cone::negated() const& { return Cone(*this).negated(); }
+
+Cone Cone::negated() && {
+    for (auto* list : {&rays_, &lineality_, &facets_, &equations_}) {
         for (ExactVector& v : *list) v = v.negated();
     }
-    return c;
+    return std::move(*this);
 }
 
-Cone Cone::signed_permuted(const Mat3& p) const {
-    Cone c = *this;
-    for (auto* list : {&c.rays_, &c.lineality_, &c.facets_, &c.equations_}) {
+Cone Cone::signed_permuted(const Mat3& p) const& { return Cone(*this).signed_permuted(p); }
+
+Cone Cone::signed_permuted(const Mat3& p) && {
+    for (auto* list : {&rays_, &lineality_, &facets_, &equations_}) {
         for (ExactVector& v : *list) v = v.signed_permuted(p);
     }
-    return c;
+    return std::move(*this);
 }
 
 Cone Cone::linear_image(const Mat3& m) const {

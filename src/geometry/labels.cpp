@@ -150,9 +150,11 @@ Labels::Labels(Cone forces)
     : forces_(std::move(forces)),
       dual_(forces_.dual()),
       points_(dual_.signed_permuted(functionals_to_points())) {
-    const Cone upper = Cone::half_space(Vec3::UnitZ());
-    plus_ = sheet(intersection(points_, upper));
-    minus_ = sheet(intersection(points_.negated(), upper));
+    plus_ = sheet(intersection(points_, Cone::half_space(Vec3::UnitZ())));
+    // -K n {s >= 0} = -(K n {s <= 0}): a pointed K is cut first, so that only the cut is
+    // negated (the same lists; with lines, a line's direction would come out negated).
+    minus_ = sheet(points_.is_pointed() ? intersection(points_, Cone::half_space(-Vec3::UnitZ())).negated()
+                                        : intersection(points_.negated(), Cone::half_space(Vec3::UnitZ())));
 }
 
 namespace {

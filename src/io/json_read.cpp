@@ -33,6 +33,13 @@ V checked(const V& v, const std::string& path) {
     return v;
 }
 
+// What coordinate() accepts, decided without the path that only names an error.
+bool plain_coordinate(const json& v) {
+    if (!v.is_number()) return false;
+    const double x = v.get<double>();
+    return std::isfinite(x) && std::abs(x) <= kLargestMagnitude;
+}
+
 }  // namespace
 
 double number(const json& v, const std::string& path) {
@@ -51,6 +58,7 @@ double nonnegative(const json& v, const std::string& path, const char* what) {
 
 Vec2 vec2(const json& v, const std::string& path) {
     if (!v.is_array() || v.size() != 2) throw InputError(path, "expected [x, y]");
+    if (plain_coordinate(v[0]) && plain_coordinate(v[1])) return checked(Vec2(v[0].get<double>(), v[1].get<double>()), path);
     return checked(Vec2(coordinate(v[0], path + "[0]"), coordinate(v[1], path + "[1]")), path);
 }
 
@@ -135,7 +143,11 @@ void for_each_number(std::string_view text, F f) {
         if (c == '"') {
             in_string = true;
         } else if (c == '-' || (c >= '0' && c <= '9')) {
-            const std::size_t end = std::min(text.find_first_not_of("0123456789+-.eE", i), text.size());
+            std::size_t end = i + 1;
+            const auto in_number = [](char d) {
+                return (d >= '0' && d <= '9') || d == '+' || d == '-' || d == '.' || d == 'e' || d == 'E';
+            };
+            while (end < text.size() && in_number(text[end])) ++end;
             f(text.substr(i, end - i));
             i = end - 1;
         }
@@ -143,7 +155,11 @@ void for_each_number(std::string_view text, F f) {
 }
 
 bool underflows(std::string_view token) {
-    return std::strtod(std::string(token).c_str(), nullptr) == 0.0 && nonzero_digits(token);
+    if (!nonzero_digits(token)) return false;
+    // Without an exponent, a number below the smallest double (about 4.9e-324) needs over 300
+    // digits: the usual coordinate is decided without converting it.
+    if (token.find_first_of("eEpP") == std::string_view::npos && token.size() < 300) return false;
+    return std::strtod(std::string(token).c_str(), nullptr) == 0.0;
 }
 
 // For each number of the text, in order: whether it underflows. Empty when none does, the
@@ -207,16 +223,26 @@ private:
     bool open(bool is_array) {
         element();
         stack_.push_back(Frame{is_array, 0, {}, {}});
+        if (!spare_keys_.empty()) {  // a closed object's list, kept for its capacity
+            stack_.back().keys = std::move(spare_keys_.back());
+            spare_keys_.pop_back();
+        }
         return true;
     }
     bool close() {
-        if (!stack_.empty()) stack_.pop_back();
+        if (stack_.empty()) return true;
+        if (stack_.back().keys.capacity() != 0) {
+            stack_.back().keys.clear();
+            spare_keys_.push_back(std::move(stack_.back().keys));
+        }
+        stack_.pop_back();
         return true;
     }
 
     nlohmann::detail::json_sax_dom_parser<json> dom_;
     const std::vector<bool>& underflow_;
     std::vector<Frame> stack_;
+    std::vector<std::vector<std::string>> spare_keys_;
     std::size_t numbers_ = 0;
 };
 

@@ -148,6 +148,23 @@ TEST(Cli, AnalyzeJsonHasEveryModeWithItsCones) {
     }
 }
 
+// The streamed document is laid out as nlohmann's dump(2) lays it out (keys sorted, two spaces),
+// on every bundled scene.
+TEST(Cli, AnalyzeJsonIsLaidOutAsDump) {
+    int scenes = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(kExamples)) {
+        if (entry.path().extension() != ".json") continue;
+        std::ifstream in(entry.path());
+        const nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
+        if (doc.is_discarded() || !doc.is_object() || !doc.contains("contacts")) continue;
+        const Result r = run("analyze " + entry.path().string() + " --json");
+        ASSERT_EQ(r.status, 0) << entry.path();
+        EXPECT_EQ(r.out, nlohmann::json::parse(r.out).dump(2) + "\n") << entry.path();
+        ++scenes;
+    }
+    EXPECT_GE(scenes, 5);
+}
+
 TEST(Cli, SceneErrorsNameTheField) {
     std::ofstream("/tmp/momentlab_bad_scene.json") << R"({"body": {"mass": -1, "com": [0, 0], "inertia": 1},
         "contacts": [{"point": [0, 0], "normal": [0, 1]}]})";

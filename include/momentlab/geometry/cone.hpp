@@ -125,15 +125,18 @@ public:
     [[nodiscard]] std::string kind() const;
 
     /// The dual cone C* = {v : v . w >= 0 for all w in C}. Exact (swaps the representations).
-    [[nodiscard]] Cone dual() const;
+    [[nodiscard]] Cone dual() const&;
+    [[nodiscard]] Cone dual() &&;  ///< the same, made from this cone's own lists (no copy)
     /// -C. Exact.
-    [[nodiscard]] Cone negated() const;
+    [[nodiscard]] Cone negated() const&;
+    [[nodiscard]] Cone negated() &&;  ///< the same, in place (no copy)
     /// The image M C under an invertible matrix, exact (the images of the generators are exact
     /// vectors). Throws std::invalid_argument for a singular (or non-finite) matrix.
     [[nodiscard]] Cone linear_image(const Mat3& m) const;
     [[nodiscard]] Cone linear_image(const ExactMatrix& m) const;
     /// The image P C under a signed permutation matrix (exact, keeps every representation).
-    [[nodiscard]] Cone signed_permuted(const Mat3& p) const;
+    [[nodiscard]] Cone signed_permuted(const Mat3& p) const&;
+    [[nodiscard]] Cone signed_permuted(const Mat3& p) &&;  ///< the same, in place (no copy)
 
     /// Exact membership of w, with a certificate.
     [[nodiscard]] Membership contains(const Vec3& w) const;
