@@ -279,7 +279,31 @@ std::vector<Vec3> Cone::halfspace_values() const {
     return out;
 }
 
+namespace {
+
+// big + small for a pointed 3-dimensional `big` and a `small` of at most kFew generators, as the
+// dual of big* cut by each generator's half-space (ConeBuilder::cut, O(m) each for m facets):
+// a mode's applied wrenches E = F + (-T) add the one or two rays of F to a contact cone of up to
+// 2n rays. Nothing when a cut leaves the pointed 3-dimensional cones (then the general sum).
+std::optional<Cone> sum_by_cuts(const Cone& big, const Cone& small) {
+    constexpr std::size_t kFew = 4;
+    if (big.dimension() != 3 || !big.is_pointed() || big.rays().size() <= kFew) return std::nullopt;
+    const std::vector<ExactVector> gens = small.generators();
+    if (gens.size() > kFew) return std::nullopt;
+    Cone d = big.dual();
+    for (const ExactVector& v : gens) {
+        std::optional<Cone> cut = ConeBuilder::cut(d, v);
+        if (!cut) return std::nullopt;
+        d = std::move(*cut);
+    }
+    return std::move(d).dual();
+}
+
+}  // namespace
+
 Cone sum(const Cone& f, const Cone& g) {
+    if (std::optional<Cone> s = sum_by_cuts(f, g)) return std::move(*s);
+    if (std::optional<Cone> s = sum_by_cuts(g, f)) return std::move(*s);
     std::vector<ExactVector> gens = f.generators();
     const std::vector<ExactVector> more = g.generators();
     gens.insert(gens.end(), more.begin(), more.end());

@@ -13,6 +13,7 @@ struct ConePathStats {
     long by_pivot = 0;   ///< decided from the angular order around a pivot (O(n log n))
     long retries = 0;    ///< extra pivot analyses (face retries, second guesses)
     long dual_clip = 0;  ///< fell back to the exact dual clip (O(n m))
+    long cuts = 0;       ///< cones cut by a half-space along their facet cycle (ConeBuilder::cut, O(m))
 };
 
 /// Builds the minimal double description of cone(generators) (private to the geometry layer).

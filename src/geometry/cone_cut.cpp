@@ -8,8 +8,9 @@
 // exact sign per ray of f gives the cycle, and the cone is assembled as
 // Cone::from_generators assembles a cycle it found: starting at the generator given first,
 // facet t = c_t x c_t+1. Those facets are f's own rays wherever two facets of f stay
-// neighbours, and the construction shares them (ExactVector::cross with `same`): the cut of a
-// cone of 10^5 rays keeps no new exact vector but the two where h cuts.
+// neighbours: there the cut keeps f's ray itself (the same ray, up to a positive factor, that
+// the cone of all half-spaces constructs), so the cut of a cone of 10^5 rays makes no new exact
+// vector but the two where h cuts, and no exact arithmetic for the others.
 #include <algorithm>
 #include <cstdlib>
 #include <vector>
@@ -63,7 +64,7 @@ std::optional<Cone> ConeBuilder::cut(const Cone& f, const ExactVector& h) {
         for (std::size_t i = 0; i < m; ++i) reversed[i] = between[(2 * m - 1 - i) % m];
         between.swap(reversed);
     }
-    // Which side of h each ray lies on; h along a facet (parallel) would tie with it in the cycle.
+    // Which side of h each ray lies on.
     std::vector<Sign> side(m);
     bool any_in = false, any_out = false;
     for (std::size_t r = 0; r < m; ++r) {
@@ -72,14 +73,14 @@ std::optional<Cone> ConeBuilder::cut(const Cone& f, const ExactVector& h) {
         any_out = any_out || side[r] == Sign::Negative;
     }
     if (!any_in) return std::nullopt;
-    for (const ExactVector& g : facets) {
-        if (parallel(g, h)) return std::nullopt;
-    }
+    // h parallel to a facet g (h = c g) would tie with g in the cycle; but c < 0 leaves no ray
+    // inside (returned above) and c > 0 none outside, where h joins no cycle and the cut is f
+    // (labels' K of a set with a pure moment has the facet s = 0).
     // The cycle of the cut cone's facets: index t < m is facets[t], m is h.
     const auto side_of = [&](int r) { return side[static_cast<std::size_t>(r)]; };
-    const auto kept = [&](std::size_t i) {  // facet order[i] keeps a 2-D piece
+    const auto kept = [&](std::size_t i) {  // facet order[i] keeps a 2-D piece (all, when h cuts nothing)
         const int before = between[(i + m - 1) % m], after = between[i];
-        return side_of(before) == Sign::Positive || side_of(after) == Sign::Positive;
+        return !any_out || side_of(before) == Sign::Positive || side_of(after) == Sign::Positive;
     };
     std::vector<int> cycle;
     std::vector<int> shared;  // shared[k]: f's ray between cycle[k] and cycle[k + 1], or -1
@@ -117,10 +118,14 @@ std::optional<Cone> ConeBuilder::cut(const Cone& f, const ExactVector& h) {
         const ExactVector& b = normal(cycle[(t + 1) % k]);
         generators.push_back(a);
         const int r = shared[t];
-        edges.push_back(r >= 0 ? ExactVector::cross(a, b, 1, rays[static_cast<std::size_t>(r)]) : ExactVector::cross(a, b, 1));
+        // Where two facets of f stay neighbours the ray between them is f's own (a x b is a
+        // positive multiple of it: both lie on the two planes, in the pointed cut); only the
+        // rays where h crosses the cycle are constructed.
+        edges.push_back(r >= 0 ? rays[static_cast<std::size_t>(r)] : ExactVector::cross(a, b, 1));
         const int a_i = static_cast<int>(t), b_i = static_cast<int>((t + 1) % k);
         incidence.add_row({std::min(a_i, b_i), std::max(a_i, b_i)});
     }
+    ++stats().cuts;
     // (Assembled as that cone's dual directly: Cone::dual would copy every vector once more.)
     Incidence dual_incidence = incidence.transposed(k);
     return assemble(std::move(edges), {}, std::move(generators), {}, std::move(dual_incidence), Representation::Halfspaces);

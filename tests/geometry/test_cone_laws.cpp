@@ -280,17 +280,24 @@ TEST(ConeLaws, ConeHoldsAgreesWithBruteForceMembership) {
 }
 
 // The same cone, vector for vector: exact coordinates, printed values, order and incidence.
-std::string identical(const Cone& a, const Cone& b) {
-    const auto same_list = [](const std::vector<ExactVector>& x, const std::vector<ExactVector>& y) {
+// The same lists in the same order, vector for vector; rays up to a positive factor when
+// `rays_up_to_scale` (exact: x X y = 0 and x . y > 0 in rationals).
+std::string identical(const Cone& a, const Cone& b, bool rays_up_to_scale = false) {
+    const auto same_list = [](const std::vector<ExactVector>& x, const std::vector<ExactVector>& y, bool up_to_scale) {
         if (x.size() != y.size()) return false;
         for (std::size_t i = 0; i < x.size(); ++i) {
-            if (reference::to_q(x[i]) != reference::to_q(y[i]) || x[i].value() != y[i].value()) return false;
+            const reference::QVec p = reference::to_q(x[i]), q = reference::to_q(y[i]);
+            if (up_to_scale) {
+                if (reference::cross(p, q) != reference::QVec{0, 0, 0} || reference::sign(reference::dot(p, q)) <= 0) return false;
+            } else if (p != q || x[i].value() != y[i].value()) {
+                return false;
+            }
         }
         return true;
     };
-    if (!same_list(a.rays(), b.rays())) return "rays differ";
-    if (!same_list(a.facets(), b.facets())) return "facets differ";
-    if (!same_list(a.lineality(), b.lineality()) || !same_list(a.equations(), b.equations())) return "spans differ";
+    if (!same_list(a.rays(), b.rays(), rays_up_to_scale)) return "rays differ";
+    if (!same_list(a.facets(), b.facets(), false)) return "facets differ";
+    if (!same_list(a.lineality(), b.lineality(), false) || !same_list(a.equations(), b.equations(), false)) return "spans differ";
     if (a.facet_rays().size() != b.facet_rays().size()) return "incidence differs";
     for (std::size_t j = 0; j < a.facet_rays().size(); ++j) {
         const auto x = a.facet_rays().row(j), y = b.facet_rays().row(j);
@@ -301,12 +308,13 @@ std::string identical(const Cone& a, const Cone& b) {
 
 // intersection(F, half-space) cuts a pointed F's cycle of facets (ConeBuilder::cut) instead of
 // building the cone of all half-spaces again: against cddlib (exact, from the raw generators and
-// h), and vector for vector against the cone of all the half-spaces. Cones of stored doubles and
+// h), and vector for vector against the cone of all the half-spaces (its rays up to a positive
+// factor: the cut keeps F's own rays). Cones of stored doubles and
 // of exact constructions (u x v: the shared rays), negated and signed-permuted as labels use them;
 // h random, an axis, through rays of F (exactly on the boundary), and +-a facet of F.
 TEST(ConeLaws, CutByHalfSpaceIsTheConeOfAllHalfSpaces) {
     testing::Random rnd(20261126);
-    int cut = 0, other = 0, through_rays = 0;
+    int cut = 0, other = 0, through_rays = 0, through_facets = 0;
     Mat3 rotation;
     rotation << 0, -1, 0, 1, 0, 0, 0, 0, 1;  // labels' points -> functionals, a signed permutation
     for (int i = 0; i < testing::sized(3000); ++i) {
@@ -362,16 +370,87 @@ TEST(ConeLaws, CutByHalfSpaceIsTheConeOfAllHalfSpaces) {
             hs.push_back(reference::q(h));
             const std::string why = testing::compare_with_oracle(ours, oracle::from_halfspaces(hs));
             ASSERT_TRUE(why.empty()) << why << ", set " << i << ", h = " << h.transpose();
-            if (ConeBuilder::stats().dual_clip == clips) {  // (the clip may start the cycle elsewhere)
-                const std::string diff = identical(ours, general);
+            // h along a facet of F (F itself): the cone of all half-spaces, given that facet twice,
+            // may start its cycle at another facet; cddlib above decides.
+            bool along_facet = false;
+            for (const ExactVector& g : f.facets()) along_facet = along_facet || parallel(g, ExactVector::input(h));
+            through_facets += along_facet && took_cut;
+            if (ConeBuilder::stats().dual_clip == clips && !along_facet) {  // (the clip may start the cycle elsewhere)
+                const std::string diff = identical(ours, general, true);
                 ASSERT_TRUE(diff.empty()) << diff << ", set " << i << ", h = " << h.transpose() << ", " << f.kind();
             }
         }
     }
     std::cout << "[ConeLaws] cut by a half-space: " << cut << " cut, " << other << " built from all half-spaces; "
-              << through_rays << " through two rays\n";
+              << through_rays << " through two rays, " << through_facets << " along a facet\n";
     EXPECT_GE(cut, testing::sized(3000));
     EXPECT_GE(through_rays, testing::sized(100));
+    EXPECT_GE(through_facets, testing::sized(100));
+}
+
+// A pointed cone of many generators plus a few (a mode's E = F + (-T): F's one or two rays added
+// to a contact cone of up to 2n) is the dual of its dual cut by each one's half-space: against
+// cddlib from the raw generators of both, with the few random, opposite to a ray of F, along a
+// ray or a facet of F, inside F, or a line.
+TEST(ConeLaws, SumOfAConeAndAFewGeneratorsAgreesWithExactOracle) {
+    testing::Random rnd(20261125);
+    int sums = 0, eligible = 0, via_cuts = 0;
+    for (int i = 0; i < testing::sized(2000); ++i) {
+        std::vector<ExactVector> g;
+        std::vector<reference::QVec> raw;
+        const int n = rnd.integer(5, 40);
+        const bool constructed = i % 3 == 2;
+        std::vector<Vec3> doubles = testing::random_generators(rnd, family_of(i), n);
+        if (i % 2 == 0) {  // every other one pointed: integer points above the plane z = 0
+            for (Vec3& d : doubles) d = Vec3(rnd.integer(-20, 20), rnd.integer(-20, 20), rnd.integer(1, 20));
+        }
+        for (const Vec3& d : doubles) {
+            if (constructed) {
+                const Vec3 v(rnd.integer(-3, 3), rnd.integer(-3, 3), rnd.integer(1, 3));
+                g.push_back(ExactVector::cross(ExactVector::input(d), ExactVector::input(v)));
+                raw.push_back(reference::cross(reference::q(d), reference::q(v)));
+            } else {
+                g.push_back(ExactVector::input(d));
+                raw.push_back(reference::q(d));
+            }
+        }
+        const Cone f = Cone::from_generators(g);
+        std::vector<Vec3> few, lines;
+        const int k = rnd.integer(1, 3);
+        for (int j = 0; j < k; ++j) {
+            const int what = rnd.integer(0, 5);
+            const Vec3 random(rnd.integer(-9, 9), rnd.integer(-9, 9), rnd.integer(-9, 9));
+            const bool plain_rays = !f.rays().empty() && !f.rays()[0].is_constructed();
+            const bool plain_facets = !f.facets().empty() && !f.facets()[0].is_constructed();
+            Vec3 v = random;
+            if (what == 1 && plain_rays) v = -f.rays()[0].value();
+            if (what == 2 && plain_rays) v = f.rays()[0].value() * 2.0;
+            if (what == 3 && plain_facets) v = f.facets()[0].value();
+            if (what == 4 && plain_rays && f.rays().size() >= 2) v = f.rays()[0].value() + f.rays()[1].value();
+            if (v.isZero()) continue;
+            (what == 5 ? lines : few).push_back(v);
+        }
+        const Cone small = Cone::from_generators(few, lines);
+        const long cuts_before = ConeBuilder::stats().cuts;
+        const Cone ours = sum(f, small);
+        eligible += f.dimension() == 3 && f.is_pointed() && f.rays().size() > 4;
+        via_cuts += ConeBuilder::stats().cuts > cuts_before;
+        const Cone reversed = sum(small, f);
+        for (const Vec3& v : few) raw.push_back(reference::q(v));
+        for (const Vec3& v : lines) {
+            raw.push_back(reference::q(v));
+            raw.push_back(reference::q(Vec3(-v)));
+        }
+        const auto oracle_cone = oracle::from_generators(raw);
+        const std::string why = testing::compare_with_oracle(ours, oracle_cone);
+        ASSERT_TRUE(why.empty()) << why << ", set " << i << ", " << f.kind() << " + " << small.kind();
+        const std::string why_reversed = testing::compare_with_oracle(reversed, oracle_cone);
+        ASSERT_TRUE(why_reversed.empty()) << why_reversed << ", set " << i << " (reversed)";
+        ++sums;
+    }
+    std::cout << "[ConeLaws] a cone plus a few generators: " << sums << " sums, " << eligible
+              << " of a pointed 3-dimensional cone, " << via_cuts << " of them through cuts\n";
+    EXPECT_GE(via_cuts, eligible / 2);
 }
 
 }  // namespace
