@@ -2,6 +2,8 @@
 
 #include <array>
 #include <charconv>
+#include <exception>
+#include <stdexcept>
 #include <nlohmann/json.hpp>
 
 #include "momentlab/io/input_error.hpp"
@@ -13,9 +15,14 @@ constexpr std::size_t kFlushAt = std::size_t{1} << 20;
 
 }  // namespace
 
-JsonWriter::JsonWriter(std::ostream& out, int indent) : out_(out), indent_(indent) { buffer_.reserve(kFlushAt + 4096); }
+JsonWriter::JsonWriter(std::ostream& out, int indent)
+    : out_(out), indent_(indent), exceptions_(std::uncaught_exceptions()) {
+    buffer_.reserve(kFlushAt + 4096);
+}
 
 JsonWriter::~JsonWriter() {
+    // Left by an exception (a value that cannot be written): the part written is not passed on.
+    if (std::uncaught_exceptions() > exceptions_) return;
     try {
         flush();
     } catch (...) {  // a destructor does not throw; the stream's state tells
@@ -37,38 +44,45 @@ void JsonWriter::separate() {
         after_key_ = false;
         return;
     }
-    if (empty_.empty()) return;  // the top-level value
-    if (!empty_.back()) buffer_.push_back(',');
-    empty_.back() = false;
-    newline(empty_.size());
+    if (open_.empty()) {  // the top-level value: one only
+        if (top_written_) throw std::logic_error("JsonWriter: a second top-level value");
+        top_written_ = true;
+        return;
+    }
+    if (open_.back().is_object) throw std::logic_error("JsonWriter: a value in an object needs its key first");
+    if (!open_.back().empty) buffer_.push_back(',');
+    open_.back().empty = false;
+    newline(open_.size());
     if (buffer_.size() >= kFlushAt) flush();
 }
 
-void JsonWriter::begin_object() {
+void JsonWriter::open(bool is_object) {
     separate();
-    buffer_.push_back('{');
-    empty_.push_back(true);
+    buffer_.push_back(is_object ? '{' : '[');
+    open_.push_back({is_object, true});
 }
 
-void JsonWriter::close(char bracket) {
-    const bool was_empty = empty_.back();
-    empty_.pop_back();
-    if (!was_empty) newline(empty_.size());
-    buffer_.push_back(bracket);
+void JsonWriter::close(bool is_object) {
+    if (open_.empty() || open_.back().is_object != is_object || after_key_) {
+        throw std::logic_error(is_object ? "JsonWriter: end_object without its object" : "JsonWriter: end_array without its array");
+    }
+    const bool was_empty = open_.back().empty;
+    open_.pop_back();
+    if (!was_empty) newline(open_.size());
+    buffer_.push_back(is_object ? '}' : ']');
 }
 
-void JsonWriter::end_object() { close('}'); }
-
-void JsonWriter::begin_array() {
-    separate();
-    buffer_.push_back('[');
-    empty_.push_back(true);
-}
-
-void JsonWriter::end_array() { close(']'); }
+void JsonWriter::begin_object() { open(true); }
+void JsonWriter::end_object() { close(true); }
+void JsonWriter::begin_array() { open(false); }
+void JsonWriter::end_array() { close(false); }
 
 void JsonWriter::key(std::string_view name) {
-    value(name);
+    if (open_.empty() || !open_.back().is_object || after_key_) throw std::logic_error("JsonWriter: a key outside an object");
+    if (!open_.back().empty) buffer_.push_back(',');
+    open_.back().empty = false;
+    newline(open_.size());
+    write_string(name);
     buffer_.append(": ");
     after_key_ = true;
 }
@@ -89,6 +103,10 @@ void JsonWriter::value(long long n) {
 
 void JsonWriter::value(std::string_view s) {
     separate();
+    write_string(s);
+}
+
+void JsonWriter::write_string(std::string_view s) {
     buffer_.push_back('"');
     for (const char c : s) {
         switch (c) {

@@ -77,6 +77,38 @@ TEST(JsonWriter, NonFiniteValuesAreRefusedNotWritten) {
     EXPECT_THROW(w.value(std::nan("")), UnrepresentableError);
 }
 
+TEST(JsonWriter, WritesNothingWhenAnExceptionLeavesIt) {
+    std::ostringstream out;
+    try {
+        JsonWriter w(out);
+        w.begin_array();
+        w.value(1.0);
+        w.value(std::numeric_limits<double>::infinity());
+    } catch (const UnrepresentableError&) {
+    }
+    EXPECT_EQ(out.str(), "");
+}
+
+TEST(JsonWriter, MisuseIsALogicError) {
+    std::ostringstream out;
+    JsonWriter w(out);
+    EXPECT_THROW(w.end_object(), std::logic_error);
+    EXPECT_THROW(w.key("k"), std::logic_error);
+    w.begin_object();
+    EXPECT_THROW(w.value(1.0), std::logic_error);  // no key
+    EXPECT_THROW(w.end_array(), std::logic_error);
+    w.key("k");
+    EXPECT_THROW(w.key("again"), std::logic_error);
+    EXPECT_THROW(w.end_object(), std::logic_error);  // the key's value is missing
+    w.begin_array();
+    EXPECT_THROW(w.key("in an array"), std::logic_error);
+    w.end_array();
+    w.end_object();
+    EXPECT_THROW(w.value(2.0), std::logic_error);  // a second top-level value
+    w.flush();
+    EXPECT_EQ(out.str(), "{\n  \"k\": []\n}");
+}
+
 TEST(JsonWriter, IndentedValueContinuesTheDocumentAroundIt) {
     const std::vector<Vec3> g = {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
     const Cone c = Cone::from_generators(g);

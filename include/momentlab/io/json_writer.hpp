@@ -17,7 +17,11 @@ namespace momentlab {
 
 /// Writes one JSON value to `out`, indented by two spaces per level as dump(2) indents it.
 /// Objects' keys are written in the order given: give them sorted, as a document would hold
-/// them. Buffered: the text reaches `out` in pieces of about a megabyte and at flush().
+/// them. Buffered: the text reaches `out` in pieces of about a megabyte and at flush() and
+/// destruction (not when an exception is leaving: a value that cannot be written stops the text
+/// where it is, and less than a megabyte of it is not passed on). Misuse (a key outside an
+/// object, a value without its key, an end without its begin, two top-level values) throws
+/// std::logic_error.
 class JsonWriter {
 public:
     /// Every line after the first starts with `indent` spaces (for a value inside a document
@@ -48,15 +52,23 @@ public:
     void flush();
 
 private:
+    struct Level {
+        bool is_object;
+        bool empty;  // nothing written in it yet
+    };
     void separate();  // before a value: the comma and new line of its container
     void newline(std::size_t depth);
-    void close(char bracket);  // the end of the innermost container
+    void open(bool is_object);
+    void close(bool is_object);  // the end of the innermost container
+    void write_string(std::string_view s);
 
     std::ostream& out_;
     std::string buffer_;
     int indent_;
-    std::vector<bool> empty_;  // per open container: nothing written in it yet
+    int exceptions_;  // std::uncaught_exceptions() when made: the destructor flushes only when no new one is in flight
+    std::vector<Level> open_;
     bool after_key_ = false;
+    bool top_written_ = false;
 };
 
 /// The documents of json_output.hpp (to_json of a Cone, Region or Labels), written to `w`.
