@@ -87,7 +87,17 @@ std::string Cone::kind() const {
     }
 }
 
-Cone Cone::dual() const& { return Cone(*this).dual(); }
+Cone Cone::dual() const& {
+    Cone d;
+    d.rays_ = facets_;
+    d.lineality_ = equations_;
+    d.facets_ = rays_;
+    d.equations_ = lineality_;
+    d.exact_ = exact_ == Representation::Generators ? Representation::Halfspaces
+                                                    : Representation::Generators;
+    d.facet_rays_ = facet_rays_.transposed(rays_.size());  // as below
+    return d;
+}
 
 Cone Cone::dual() && {
     Cone d;
@@ -281,13 +291,16 @@ std::vector<Vec3> Cone::halfspace_values() const {
 
 namespace {
 
-// big + small for a pointed 3-dimensional `big` and a `small` of at most kFew generators, as the
-// dual of big* cut by each generator's half-space (ConeBuilder::cut, O(m) each for m facets):
-// a mode's applied wrenches E = F + (-T) add the one or two rays of F to a contact cone of up to
-// 2n rays. Nothing when a cut leaves the pointed 3-dimensional cones (then the general sum).
+// big + small for a pointed 3-dimensional `big` of kBig rays or more and a `small` of at most
+// kFew generators, as the dual of big* cut by each generator's half-space (ConeBuilder::cut,
+// O(m) each for m facets): a mode's applied wrenches E = F + (-T) add the one or two rays of F
+// to a contact cone of up to 2n rays. Nothing when a cut leaves the pointed 3-dimensional cones
+// (then the general sum).
 std::optional<Cone> sum_by_cuts(const Cone& big, const Cone& small) {
     constexpr std::size_t kFew = 4;
-    if (big.dimension() != 3 || !big.is_pointed() || big.rays().size() <= kFew) return std::nullopt;
+    // Below some 64 rays a new hull (on a stack buffer) is cheaper than the cut's lists.
+    constexpr std::size_t kBig = 64;
+    if (big.dimension() != 3 || !big.is_pointed() || big.rays().size() < kBig) return std::nullopt;
     const std::vector<ExactVector> gens = small.generators();
     if (gens.size() > kFew) return std::nullopt;
     Cone d = big.dual();
