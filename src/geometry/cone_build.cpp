@@ -24,7 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <memory_resource>
+#include <new>
 #include <numeric>
 #include <optional>
 #include <random>
@@ -138,11 +138,43 @@ struct Item {
 
 // The working vectors of one angular analysis (items, their ties, groups, the scan's stack) come
 // from a buffer on the stack while they fit, so a cone of a few generators makes no allocation
-// beyond its own representation; bigger ones spill to the heap.
+// beyond its own representation; bigger ones spill to the heap. A monotonic arena, written
+// here: the WebAssembly build's standard library has no <memory_resource>.
 struct Scratch {
     alignas(std::max_align_t) std::byte buffer[6144];
-    std::pmr::monotonic_buffer_resource memory{buffer, sizeof buffer};
+    std::size_t used = 0;
+
+    void* allocate(std::size_t bytes, std::size_t align) {
+        const std::size_t start = (used + align - 1) / align * align;
+        if (align <= alignof(std::max_align_t) && start + bytes <= sizeof buffer) {
+            used = start + bytes;
+            return buffer + start;
+        }
+        return ::operator new(bytes, std::align_val_t(align));
+    }
+    void deallocate(void* p, std::size_t align) {
+        const auto* b = static_cast<const std::byte*>(p);
+        if (b >= buffer && b < buffer + sizeof buffer) return;  // freed with the buffer
+        ::operator delete(p, std::align_val_t(align));
+    }
 };
+
+// A standard allocator over a Scratch (implicit from Scratch*, so a vector is made from one).
+template <class T>
+struct ScratchAllocator {
+    using value_type = T;
+    Scratch* scratch;
+    ScratchAllocator(Scratch* s) : scratch(s) {}  // NOLINT(google-explicit-constructor)
+    template <class U>
+    ScratchAllocator(const ScratchAllocator<U>& other) : scratch(other.scratch) {}  // NOLINT
+    T* allocate(std::size_t n) { return static_cast<T*>(scratch->allocate(n * sizeof(T), alignof(T))); }
+    void deallocate(T* p, std::size_t) { scratch->deallocate(p, alignof(T)); }
+    template <class U>
+    bool operator==(const ScratchAllocator<U>& other) const { return scratch == other.scratch; }
+};
+
+template <class T>
+using ScratchVector = std::vector<T, ScratchAllocator<T>>;
 
 // A pseudo-angle, increasing with the angle inside one open half-plane, from coordinates
 // (a, b) along and across the reference direction (b > 0 in half 1, b < 0 in half 3), in
@@ -157,7 +189,7 @@ inline double pseudo_angle(double a, double b, int half) {
 // Groups of items of exactly equal angle: [begin, end) ranges, stored as 32-bit starts.
 class Groups {
 public:
-    explicit Groups(std::pmr::memory_resource* memory) : starts_(memory) {}
+    explicit Groups(Scratch* memory) : starts_(memory) {}
     void add(std::size_t begin) { starts_.push_back(static_cast<std::uint32_t>(begin)); }
     void close(std::size_t end) { end_ = end; }
     [[nodiscard]] std::size_t size() const { return starts_.size(); }
@@ -166,7 +198,7 @@ public:
     }
 
 private:
-    std::pmr::vector<std::uint32_t> starts_;
+    ScratchVector<std::uint32_t> starts_;
     std::size_t end_ = 0;
 };
 
@@ -177,7 +209,7 @@ private:
 // the order exact in O(n + inversions), and runs of exactly equal angle are sorted by the
 // exact tie-break. Correct for any keys; fast when they are close to the truth.
 template <class G, class TieOrder>
-Groups angular_sort(std::pmr::vector<Item<G>>& items, const AngularOrder<G>& ord, TieOrder tie_order) {
+Groups angular_sort(ScratchVector<Item<G>>& items, const AngularOrder<G>& ord, TieOrder tie_order) {
     using Item = momentlab::Item<G>;
     std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) {
         return a.key < b.key;  // the halves first (pseudo_angle)
@@ -195,7 +227,7 @@ Groups angular_sort(std::pmr::vector<Item<G>>& items, const AngularOrder<G>& ord
     // `same[i]`: items i-1 and i share an angle.
     // While nothing has moved, the comparison that stopped item i is its final relation to item
     // i-1, so `same` is filled on the way; after a move it is filled again.
-    std::pmr::vector<char> same(items.size(), 0, items.get_allocator());
+    ScratchVector<char> same(items.size(), 0, items.get_allocator());
     std::size_t moves = 0;
     const std::size_t budget = 8 * items.size() + 1024;
     bool sorted = true;
@@ -219,7 +251,7 @@ Groups angular_sort(std::pmr::vector<Item<G>>& items, const AngularOrder<G>& ord
     if (moves > 0) {
         for (std::size_t i = 1; i < items.size(); ++i) same[i] = compare(items[i - 1], items[i]) == Sign::Zero;
     }
-    Groups groups(items.get_allocator().resource());
+    Groups groups(items.get_allocator().scratch);
     std::size_t start = 0;
     for (std::size_t i = 1; i <= items.size(); ++i) {
         if (i < items.size() && same[i]) continue;
@@ -254,7 +286,7 @@ Parts build_planar(std::span<const G> g, const G& a, const G& b) {
     parts.equations.push_back(ExactVector::cross(a, b, 1));
     AngularOrder<G> ord{AngularOrder<G>::Mode::PlaneAxis, nonzero_cross_axis(a, b), G{}, a, G{}};
     Scratch scratch;
-    std::pmr::vector<Item<G>> items(&scratch.memory);
+    ScratchVector<Item<G>> items(&scratch);
     items.reserve(g.size());
     // Keys in the coordinate plane across the axis, where the exact orientation is the
     // sign of (u x v)[axis]: the same sense, so the keys increase with the exact order.
@@ -363,7 +395,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     const Vec3 e1 = (approx(r) - approx(r).dot(ph) * ph).normalized();
     const Vec3 e2 = ph.cross(e1);
     Scratch scratch;
-    std::pmr::vector<Item<G>> items(&scratch.memory);
+    ScratchVector<Item<G>> items(&scratch);
     items.reserve(g.size() - reference);
     // Each generator's half around p from one determinant det(p, r, x); only where it is zero
     // is x tested for being parallel to p (dropped) or told from -r by the witness.
@@ -450,7 +482,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     }
     // Graham's scan: p, then the groups from just after the gap to just before it.
     // The stack holds positions in `items` (-1 for p), which the scan visits in order.
-    std::pmr::vector<std::int64_t> stack({-1}, &scratch.memory);
+    ScratchVector<std::int64_t> stack({-1}, &scratch);
     auto at = [&](std::int64_t k) -> const G& { return k < 0 ? p : items[static_cast<std::size_t>(k)].v; };
     auto push = [&](std::size_t k) {
         const G& x = items[k].v;
@@ -467,7 +499,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
         stack.pop_back();
     }
     assert(stack.size() >= 3);
-    std::pmr::vector<int> hull(&scratch.memory);
+    ScratchVector<int> hull(&scratch);
     hull.reserve(stack.size());
     for (std::int64_t k : stack) hull.push_back(k < 0 ? static_cast<int>(pivot) : items[static_cast<std::size_t>(k)].index);
     // The cycle starts at the extreme generator given first, whichever pivot found it.
