@@ -205,17 +205,6 @@ ExactVector ExactVector::cross(const ExactVector& u, const ExactVector& v, int s
     return from_exact(sign >= 0 ? c : -c);
 }
 
-ExactVector ExactVector::cross(const ExactVector& u, const ExactVector& v, int sign, const ExactVector& same) {
-    if (u.kind_ == Kind::Input && v.kind_ == Kind::Input) return cross(u.value_, v.value_, sign);
-    Exact3 c = momentlab::cross(u.exact(), v.exact());
-    if (sign < 0) c = -c;
-    // from_exact(c) makes an input of c when it fits doubles, a computed vector otherwise; `same`
-    // is that vector when it is of the same kind with the same coordinates.
-    const bool fits = c[0].fits_double() && c[1].fits_double() && c[2].fits_double();
-    if (same.kind_ == (fits ? Kind::Input : Kind::Computed) && same.exact() == c) return same;
-    return fits ? input(to_double(c)) : computed(std::move(c));
-}
-
 ExactVector ExactVector::from_exact(const Exact3& e) {
     if (e[0].fits_double() && e[1].fits_double() && e[2].fits_double()) return input(to_double(e));
     return computed(e);

@@ -95,7 +95,7 @@ Cone Cone::dual() const& {
     d.equations_ = lineality_;
     d.exact_ = exact_ == Representation::Generators ? Representation::Halfspaces
                                                     : Representation::Generators;
-    d.facet_rays_ = facet_rays_.transposed(rays_.size());  // as below
+    d.facet_rays_ = facet_rays_.transposed(rays_.size());  // see dual() &&
     return d;
 }
 

@@ -24,11 +24,11 @@ struct ConeBuilder {
                          std::vector<ExactVector> facets, std::vector<ExactVector> equations, Incidence facet_rays,
                          Representation exact = Representation::Generators);
     static ConePathStats& stats();
-    /// f n {h . x >= 0} for a pointed full-dimensional f, the same cone (rays, facets, their
-    /// order and incidence) as intersection(f, half-space of h) builds from all the half-spaces,
-    /// found by cutting f's cycle of facets in O(m) for m facets; empty when f is another kind of
-    /// cone, the cut leaves less than a full-dimensional cone, or h is along one of f's facets
-    /// (cone_cut.cpp).
+    /// f n {h . x >= 0} for a pointed full-dimensional f, found by cutting f's cycle of facets
+    /// in O(m) for m facets: the facets, their order and incidence that the cone of all the
+    /// half-spaces has, with f's own rays where they stay (the same rays up to a positive
+    /// factor); empty when f is another kind of cone or the cut leaves less than a
+    /// full-dimensional cone (cone_cut.cpp).
     static std::optional<Cone> cut(const Cone& f, const ExactVector& h);
 };
 

@@ -69,10 +69,6 @@ public:
     static ExactVector cross(const Vec3& u, const Vec3& v, int sign);
     /// sign * (u x v) for any exact u, v.
     static ExactVector cross(const ExactVector& u, const ExactVector& v, int sign = 1);
-    /// The same vector as cross(u, v, sign), in every value and predicate, sharing the storage of
-    /// `same` when `same` is exactly that construction (a ray of a cone being cut usually is:
-    /// no new exact vector is kept then).
-    static ExactVector cross(const ExactVector& u, const ExactVector& v, int sign, const ExactVector& same);
     /// The exact vector e (an input when every coordinate is a double).
     static ExactVector from_exact(const Exact3& e);
 
