@@ -1,6 +1,8 @@
-// Fuzz target: the scene reader. Any text is either rejected with an InputError or accepted;
-// an accepted scene (of at most 6 contacts, to keep runs short) must go through mode
-// enumeration, analysis and queries without any exception, and survive a JSON round trip.
+// Fuzz target: the scene reader. The plain JSON reader either declines a text or reads the
+// document the JSON library reads from it, number for number. Any text is either rejected
+// with an InputError or accepted; an accepted scene (of at most 6 contacts, to keep runs
+// short) must go through mode enumeration, analysis and queries without any exception, and
+// survive a JSON round trip.
 // Scenes of up to three contacts are checked independently: their modes against the
 // brute-force exact LP oracle (reference/mode_oracle.hpp) on the raw numbers.
 #include <cstddef>
@@ -9,6 +11,7 @@
 #include <string>
 
 #include "fuzz_check.hpp"
+#include "io/json_read.hpp"
 #include "mode_oracle.hpp"
 #include "momentlab/io/scene_json.hpp"
 #include "momentlab/mechanics/query_index.hpp"
@@ -17,6 +20,17 @@ using namespace momentlab;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
+    if (const std::optional<nlohmann::json> plain = json_read::parse_plain(text)) {
+        nlohmann::json library;
+        try {
+            library = json_read::parse_by_library(text);
+        } catch (const InputError&) {
+            FUZZ_REQUIRE(false);  // the plain reader accepted a text the library rejects
+        }
+        // dump() writes each double in the fewest digits that read back to it, and 1.0 apart
+        // from 1: equal texts are equal documents.
+        FUZZ_REQUIRE(plain->dump() == library.dump());
+    }
     Scene scene;
     InputWarnings warnings;
     try {

@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 #include <initializer_list>
+#include <optional>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -34,5 +36,11 @@ void known_fields(const json& obj, const std::string& path, std::initializer_lis
 std::string at(const std::string& path, std::size_t i);
 /// Parses text; malformed JSON is an InputError at "$".
 json parse(const std::string& text);
+/// The document of a text in the plain JSON that programs write (ASCII strings without
+/// escapes, numbers that convert without underflow or overflow, no repeated key, depth at
+/// most 64), exactly as parse_by_library gives it; nullopt for any other text.
+std::optional<json> parse_plain(std::string_view text);
+/// parse by the JSON library alone, with the checks of parse (repeated keys, underflow).
+json parse_by_library(const std::string& text);
 
 }  // namespace momentlab::json_read

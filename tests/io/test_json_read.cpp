@@ -1,0 +1,222 @@
+// The plain reader (json_read::parse_plain) against the JSON library's own reader, the
+// oracle: on every text, the plain reader either declines or gives the library's document,
+// value for value and type for type (an integer stays an integer, unsigned unless negative; a
+// double is the same bits). Texts come from random documents written with random spacing and
+// number spellings, and from damaging them one character at a time.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "io/json_read.hpp"
+
+namespace momentlab {
+namespace {
+
+using nlohmann::json;
+
+// Whether a and b are the same document: same types at every place, doubles bit for bit.
+bool same(const json& a, const json& b) {
+    if (a.type() != b.type()) return false;
+    switch (a.type()) {
+        case json::value_t::object: {
+            if (a.size() != b.size()) return false;
+            for (auto i = a.begin(), j = b.begin(); i != a.end(); ++i, ++j) {
+                if (i.key() != j.key() || !same(*i, *j)) return false;
+            }
+            return true;
+        }
+        case json::value_t::array: {
+            if (a.size() != b.size()) return false;
+            for (std::size_t k = 0; k < a.size(); ++k) {
+                if (!same(a[k], b[k])) return false;
+            }
+            return true;
+        }
+        case json::value_t::number_float:
+            return std::bit_cast<std::uint64_t>(a.get<double>()) == std::bit_cast<std::uint64_t>(b.get<double>());
+        default:
+            return a == b;
+    }
+}
+
+std::optional<json> by_library(const std::string& text) {
+    try {
+        return json_read::parse_by_library(text);
+    } catch (const InputError&) {
+        return std::nullopt;
+    }
+}
+
+// Writes random JSON texts: nested objects and arrays, strings (sometimes with escapes or
+// non-ASCII bytes), and numbers spelt as people and programs spell them, including ones too
+// big for 64 bits, too small or too large for a double, and leading zeros.
+class TextMaker {
+public:
+    explicit TextMaker(unsigned seed) : rng_(seed) {}
+
+    std::string document() {
+        std::string out;
+        value(out, 0);
+        space(out);
+        return out;
+    }
+
+private:
+    int below(int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng_); }
+
+    void space(std::string& out) {
+        static const char* const kSpaces[] = {"", "", "", " ", "\n  ", "\t", "\r\n"};
+        out += kSpaces[below(7)];
+    }
+
+    void value(std::string& out, int depth) {
+        space(out);
+        const int kind = depth > 4 ? 2 + below(4) : below(6);
+        if (kind == 0) {
+            out += '{';
+            const int n = below(5);
+            for (int k = 0; k < n; ++k) {
+                if (k > 0) out += ',';
+                space(out);
+                string(out, below(8) == 0);  // short keys: some repeat
+                space(out);
+                out += ':';
+                value(out, depth + 1);
+            }
+            space(out);
+            out += '}';
+        } else if (kind == 1) {
+            out += '[';
+            const int n = below(6);
+            for (int k = 0; k < n; ++k) {
+                if (k > 0) out += ',';
+                value(out, depth + 1);
+            }
+            space(out);
+            out += ']';
+        } else if (kind == 2) {
+            string(out, true);
+        } else if (kind == 3) {
+            static const char* const kWords[] = {"true", "false", "null"};
+            out += kWords[below(3)];
+        } else {
+            number(out);
+        }
+    }
+
+    void string(std::string& out, bool long_one) {
+        static const char* const kPieces[] = {"a", "b", "mu", "x", " ", "\\n", "\\\"", "\\u00e9", "\xc3\xa9", "~", "\x7f"};
+        out += '"';
+        const int n = long_one ? below(6) : 1;
+        for (int k = 0; k < n; ++k) out += kPieces[below(8) == 0 ? 5 + below(6) : below(5)];
+        out += '"';
+    }
+
+    void number(std::string& out) {
+        static const char* const kSpecial[] = {"0",     "-0",    "-0.0",   "0.0",  "1e-400", "1e400",  "-1e-400", "4.9e-324",
+                                               "1e-310", "1e308", "1.8e308", "01",   "1.",     ".5",     "-",       "1e",
+                                               "1E+05", "2e-05", "+1",     "0x10", "1.5e-60", "1e60",  "1e-61",   "-1e61"};
+        const int kind = below(6);
+        if (kind == 0) {
+            out += kSpecial[below(static_cast<int>(std::size(kSpecial)))];
+            return;
+        }
+        if (below(3) == 0) out += '-';
+        if (kind == 1) {  // an integer of up to 22 digits: past 2^64 too
+            const int digits = 1 + below(22);
+            out += static_cast<char>('1' + below(9));
+            for (int k = 1; k < digits; ++k) out += static_cast<char>('0' + below(10));
+            return;
+        }
+        const int int_digits = 1 + below(3);
+        out += static_cast<char>(int_digits == 1 ? '0' + below(10) : '1' + below(9));
+        for (int k = 1; k < int_digits; ++k) out += static_cast<char>('0' + below(10));
+        if (kind != 2) {
+            out += '.';
+            const int frac = 1 + below(20);
+            for (int k = 0; k < frac; ++k) out += static_cast<char>('0' + below(10));
+        }
+        if (kind != 3) {
+            out += below(2) == 0 ? 'e' : 'E';
+            if (below(2) == 0) out += below(2) == 0 ? '-' : '+';
+            out += std::to_string(below(330));
+        }
+    }
+
+    std::mt19937 rng_;
+};
+
+TEST(JsonRead, PlainReaderGivesTheLibrarysDocumentOrDeclines) {
+    TextMaker maker(20261125);
+    std::mt19937 rng(7);
+    int accepted = 0;
+    int damaged_accepted = 0;
+    constexpr int kTexts = 20000;
+    for (int t = 0; t < kTexts; ++t) {
+        std::string text = maker.document();
+        for (int damaged = 0; damaged < 2; ++damaged) {
+            const std::optional<json> plain = json_read::parse_plain(text);
+            const std::optional<json> library = by_library(text);
+            if (plain) {
+                ASSERT_TRUE(library.has_value()) << "the plain reader accepted a text the library rejects: " << text;
+                ASSERT_TRUE(same(*plain, *library)) << text << "\nplain:   " << plain->dump() << "\nlibrary: " << library->dump();
+                (damaged ? damaged_accepted : accepted) += 1;
+            }
+            if (text.empty()) break;
+            // One character replaced, deleted or doubled.
+            const std::size_t at = std::uniform_int_distribution<std::size_t>(0, text.size() - 1)(rng);
+            static const char kChars[] = "{}[]\",:0123456789.eE+- \\atfnul";
+            switch (rng() % 3) {
+                case 0: text[at] = kChars[rng() % (sizeof kChars - 1)]; break;
+                case 1: text.erase(at, 1); break;
+                default: text.insert(at, 1, text[at]); break;
+            }
+        }
+    }
+    // The reader is used: most texts are plain (the rest have escapes, non-ASCII, repeated
+    // keys or numbers that do not convert cleanly, which it leaves to the library).
+    EXPECT_GT(accepted, kTexts / 4);
+    EXPECT_GT(damaged_accepted, 0);
+}
+
+TEST(JsonRead, PlainReaderDeclinesWhatTheLibraryMustReport) {
+    for (const char* text : {R"({"mu": 0.3, "mu": 0.4})", "[1e-400]", "[1e400]", "[0.3,]", "[01]", "[1.]", R"(["a\n"])",
+                             "\xef\xbb\xbf[1]", "[1] x", "", " ", "[true false]", "{\"a\" 1}", "[nul]"}) {
+        EXPECT_FALSE(json_read::parse_plain(text).has_value()) << text;
+    }
+    // A repeated key is named by the library path; an underflowing number is an error.
+    EXPECT_THROW(json_read::parse(R"({"contacts": [{"mu": 0.3, "mu": 0.4}]})"), InputError);
+    try {
+        json_read::parse(R"({"contacts": [{"mu": 0.3, "mu": 0.4}]})");
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("$.contacts[0].mu"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(json_read::parse("[1e-400]"), InputError);
+    // Deeply nested: declined past 64 levels, read by the library.
+    const std::string deep = std::string(200, '[') + std::string(200, ']');
+    EXPECT_FALSE(json_read::parse_plain(deep).has_value());
+    EXPECT_EQ(json_read::parse(deep).dump(), by_library(deep)->dump());
+}
+
+TEST(JsonRead, EveryExampleIsPlain) {
+    int files = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(MOMENTLAB_EXAMPLES)) {
+        if (entry.path().extension() != ".json") continue;
+        std::ifstream in(entry.path());
+        std::ostringstream s;
+        s << in.rdbuf();
+        const std::optional<json> plain = json_read::parse_plain(s.str());
+        ASSERT_TRUE(plain.has_value()) << entry.path();
+        EXPECT_TRUE(same(*plain, *by_library(s.str()))) << entry.path();
+        ++files;
+    }
+    EXPECT_GT(files, 10);
+}
+
+}  // namespace
+}  // namespace momentlab
