@@ -60,8 +60,12 @@ double nonnegative(const json& v, const std::string& path, const char* what) {
 
 Vec2 vec2(const json& v, const std::string& path) {
     if (!v.is_array() || v.size() != 2) throw InputError(path, "expected [x, y]");
-    if (plain_coordinate(v[0]) && plain_coordinate(v[1])) return checked(Vec2(v[0].get<double>(), v[1].get<double>()), path);
-    return checked(Vec2(coordinate(v[0], path + "[0]"), coordinate(v[1], path + "[1]")), path);
+    return vec2(v[0], v[1], path);
+}
+
+Vec2 vec2(const json& x, const json& y, const std::string& path) {
+    if (plain_coordinate(x) && plain_coordinate(y)) return checked(Vec2(x.get<double>(), y.get<double>()), path);
+    return checked(Vec2(coordinate(x, path + "[0]"), coordinate(y, path + "[1]")), path);
 }
 
 Vec3 vec3(const json& v, const std::string& path) {
@@ -78,8 +82,11 @@ std::vector<Vec3> vec3_list(const json& v, const std::string& path) {
 
 Vec2 nonzero2(const json& obj, const std::string& path, const char* name) {
     const std::string p = path + "." + name;
-    const Vec2 v = vec2(field(obj, path, name), p);
-    if (v.x() == 0.0 && v.y() == 0.0) throw InputError(p, "expected a non-zero vector");
+    return nonzero(vec2(field(obj, path, name), p), p);
+}
+
+Vec2 nonzero(const Vec2& v, const std::string& path) {
+    if (v.x() == 0.0 && v.y() == 0.0) throw InputError(path, "expected a non-zero vector");
     return v;
 }
 
@@ -256,7 +263,9 @@ private:
 // library then reads and reports.
 class PlainReader {
 public:
-    explicit PlainReader(std::string_view text) : p_(text.data()), end_(text.data() + text.size()) {}
+    // contacts: where a top-level "contacts" list of plain contacts goes, or nullptr.
+    PlainReader(std::string_view text, std::vector<PlainContact>* contacts)
+        : p_(text.data()), end_(text.data() + text.size()), contacts_(contacts) {}
 
     std::optional<json> document() {
         json out;
@@ -312,10 +321,59 @@ private:
             skip_space();
             std::string key;
             if (p_ == end_ || *p_ != '"' || !string(key) || !next_is(':')) return false;
+            const bool contacts = depth == 0 && contacts_ != nullptr && key == "contacts";
             const auto [member, inserted] = members.emplace(std::move(key), json());
-            if (!inserted || !value(member->second, depth + 1)) return false;  // a repeated key: the library names its path
+            if (!inserted) return false;  // a repeated key: the library names its path
+            if (contacts && contact_list()) continue;  // the member stays null
+            if (!value(member->second, depth + 1)) return false;
         } while (next_is(','));
         return next_is('}');
+    }
+
+    // A non-empty list of contacts, each an object of "point" and "normal" (two numbers each)
+    // and optionally "mu", "mu_kinetic" (numbers) and "name" (a string), into contacts_. On
+    // anything else, false with the position and the list as they were.
+    bool contact_list() {
+        const char* const start = p_;
+        if (next_is('[')) {
+            do {
+                if (!next_is('{') || !contact(contacts_->emplace_back())) break;
+                if (next_is(']')) return true;
+            } while (next_is(','));
+        }
+        p_ = start;
+        contacts_->clear();
+        return false;
+    }
+
+    bool contact(PlainContact& c) {
+        static constexpr std::string_view kFields[] = {"point", "normal", "mu", "mu_kinetic", "name"};
+        unsigned seen = 0;
+        do {
+            skip_space();
+            std::string key;
+            if (p_ == end_ || *p_ != '"' || !string(key) || !next_is(':')) return false;
+            const auto field = static_cast<unsigned>(std::find(std::begin(kFields), std::end(kFields), key) - std::begin(kFields));
+            if (field == std::size(kFields) || (seen & (1u << field)) != 0) return false;
+            seen |= 1u << field;
+            bool read = false;
+            if (field <= 1) {
+                auto& xy = field == 0 ? c.point : c.normal;
+                read = next_is('[') && scalar_number(xy[0]) && next_is(',') && scalar_number(xy[1]) && next_is(']');
+            } else if (field <= 3) {
+                read = scalar_number((field == 2 ? c.mu : c.mu_kinetic).emplace());
+            } else {
+                skip_space();
+                read = p_ != end_ && *p_ == '"' && string(c.name.emplace());
+            }
+            if (!read) return false;
+        } while (next_is(','));
+        return (seen & 3u) == 3u && next_is('}');
+    }
+
+    bool scalar_number(json& out) {
+        skip_space();
+        return p_ != end_ && (*p_ == '-' || digit(*p_)) && number(out);
     }
 
     bool array(json& out, int depth) {
@@ -408,11 +466,20 @@ private:
 
     const char* p_;
     const char* end_;
+    std::vector<PlainContact>* contacts_;
 };
 
 }  // namespace
 
-std::optional<json> parse_plain(std::string_view text) { return PlainReader(text).document(); }
+std::optional<json> parse_plain(std::string_view text) { return PlainReader(text, nullptr).document(); }
+
+std::optional<PlainScene> parse_plain_scene(std::string_view text) {
+    PlainScene out;
+    std::optional<json> doc = PlainReader(text, &out.contacts).document();
+    if (!doc) return std::nullopt;
+    out.doc = std::move(*doc);
+    return out;
+}
 
 json parse(const std::string& text) {
     if (std::optional<json> doc = parse_plain(text)) return std::move(*doc);

@@ -3,6 +3,7 @@
 // Typed access to JSON fields; every failure is an InputError naming the field's path.
 
 #include <nlohmann/json.hpp>
+#include <array>
 #include <initializer_list>
 #include <optional>
 #include <string_view>
@@ -24,11 +25,15 @@ double nonnegative(const json& v, const std::string& path, const char* what);
 /// A vector of finite coordinates of magnitude at most kLargestMagnitude, zero or with its
 /// largest coordinate at least kSmallestMagnitude (a direction like [1e-300, 1] is fine).
 Vec2 vec2(const json& v, const std::string& path);
+/// The vector [x, y] of two values read apart, checked as vec2 checks it.
+Vec2 vec2(const json& x, const json& y, const std::string& path);
 Vec3 vec3(const json& v, const std::string& path);
 std::vector<Vec3> vec3_list(const json& v, const std::string& path);
 std::vector<Vec2> vec2_list(const json& v, const std::string& path);
 /// A non-zero [x, y] in field `name` of `obj`.
 Vec2 nonzero2(const json& obj, const std::string& path, const char* name);
+/// v, unless it is zero (an InputError at path).
+Vec2 nonzero(const Vec2& v, const std::string& path);
 /// Adds a warning for each field of `obj` not in `known` (when `warnings` is given).
 void known_fields(const json& obj, const std::string& path, std::initializer_list<const char*> known,
                   InputWarnings* warnings);
@@ -42,5 +47,22 @@ json parse(const std::string& text);
 std::optional<json> parse_plain(std::string_view text);
 /// parse by the JSON library alone, with the checks of parse (repeated keys, underflow).
 json parse_by_library(const std::string& text);
+
+/// A contact of a scene as written, before any check: the coordinates of "point" and "normal"
+/// and the optional fields, as the JSON library would store them.
+struct PlainContact {
+    std::array<json, 2> point, normal;
+    std::optional<json> mu, mu_kinetic;
+    std::optional<std::string> name;
+};
+/// A plain text (as parse_plain) read for a scene: when its top-level "contacts" is a
+/// non-empty list of objects with exactly the fields of a contact, "point" and "normal" among
+/// them as two numbers each, its contacts are in `contacts` and doc["contacts"] is null (no
+/// document of 10^5 small objects); otherwise `contacts` is empty and doc is parse_plain's.
+struct PlainScene {
+    json doc;
+    std::vector<PlainContact> contacts;
+};
+std::optional<PlainScene> parse_plain_scene(std::string_view text);
 
 }  // namespace momentlab::json_read

@@ -49,30 +49,37 @@ Body read_body(const json& b, const std::string& path, InputWarnings* w) {
     return body;
 }
 
+// A contact from its checked point and normal and its other fields as written (nullptr: absent).
+Contact read_contact(const Vec2& point, const Vec2& normal, const json* mu, const json* mu_kinetic, const json* name,
+                     const std::string& path) {
+    const double friction = mu ? nonnegative(*mu, path + ".mu", "mu") : 0.0;
+    std::optional<double> kinetic;
+    if (mu_kinetic) kinetic = nonnegative(*mu_kinetic, path + ".mu_kinetic", "mu_kinetic");
+    if (name && !name->is_string()) throw InputError(path + ".name", "expected a string");
+    return Contact::make(point, normal, friction, kinetic, name ? name->get_ref<const std::string&>() : std::string());
+}
+
 Contact read_contact(const json& c, const std::string& path, InputWarnings* w) {
     if (!c.is_object()) throw InputError(path, "expected an object with \"point\" and \"normal\"");
     known_fields(c, path, {"point", "normal", "mu", "mu_kinetic", "name"}, w);
     const Vec2 point = vec2(field(c, path, "point"), path + ".point");
     const Vec2 normal = nonzero2(c, path, "normal");
-    double mu = 0.0;
-    if (c.contains("mu")) {
-        mu = nonnegative(c.at("mu"), path + ".mu", "mu");
-    }
-    std::optional<double> mu_kinetic;
-    if (c.contains("mu_kinetic")) {
-        mu_kinetic = nonnegative(c.at("mu_kinetic"), path + ".mu_kinetic", "mu_kinetic");
-    }
-    std::string name;
-    if (c.contains("name")) {
-        if (!c.at("name").is_string()) throw InputError(path + ".name", "expected a string");
-        name = c.at("name").get<std::string>();
-    }
-    return Contact::make(point, normal, mu, mu_kinetic, name);
+    const auto given = [&](const char* name) { return c.contains(name) ? &c.at(name) : nullptr; };
+    return read_contact(point, normal, given("mu"), given("mu_kinetic"), given("name"), path);
 }
 
-}  // namespace
+// The same from a contact the plain reader took apart (it has exactly the known fields).
+Contact read_contact(const PlainContact& c, const std::string& path) {
+    const Vec2 point = vec2(c.point[0], c.point[1], path + ".point");
+    const Vec2 normal = nonzero(vec2(c.normal[0], c.normal[1], path + ".normal"), path + ".normal");
+    const json name = c.name ? json(*c.name) : json();
+    return read_contact(point, normal, c.mu ? &*c.mu : nullptr, c.mu_kinetic ? &*c.mu_kinetic : nullptr,
+                        c.name ? &name : nullptr, path);
+}
 
-Scene read_scene(const json& doc, InputWarnings* w) {
+// read_scene, with the contacts taken from `plain` when it holds any (doc["contacts"] is then
+// a placeholder).
+Scene read_scene(const json& doc, const std::vector<PlainContact>& plain, InputWarnings* w) {
     if (!doc.is_object()) throw InputError("$", "expected a scene object with \"body\" and \"contacts\"");
     known_fields(doc, "$", {"body", "contacts", "obstacles", "contact_distance", "mu"}, w);
     Scene scene;
@@ -94,8 +101,9 @@ Scene read_scene(const json& doc, InputWarnings* w) {
     }
     if (doc.contains("contacts")) {
         const json& contacts = doc.at("contacts");
-        if (!contacts.is_array()) throw InputError("$.contacts", "expected a list of contacts");
-        if (contacts.empty()) {
+        if (plain.empty() && !contacts.is_array()) throw InputError("$.contacts", "expected a list of contacts");
+        const std::size_t count = plain.empty() ? contacts.size() : plain.size();
+        if (count == 0) {
             throw InputError("$.contacts", "expected at least one contact (omit the field to find them from the polygons)");
         }
         // A contact must be on the body's outline when the outline is given: its edges indexed
@@ -103,9 +111,10 @@ Scene read_scene(const json& doc, InputWarnings* w) {
         const Polygon* outline = scene.body && !scene.body->polygon.empty() ? &scene.body->polygon : nullptr;
         const std::optional<EdgeGrid> edges = outline ? std::optional<EdgeGrid>(std::in_place, *outline, options.distance)
                                                       : std::nullopt;
-        for (std::size_t i = 0; i < contacts.size(); ++i) {
+        scene.contacts.reserve(count);
+        for (std::size_t i = 0; i < count; ++i) {
             const std::string p = at("$.contacts", i);
-            scene.contacts.push_back(read_contact(contacts[i], p, w));
+            scene.contacts.push_back(plain.empty() ? read_contact(contacts[i], p, w) : read_contact(plain[i], p));
             if (outline) {
                 const Vec2& point = scene.contacts.back().point;
                 const auto near = edges->near(point);
@@ -149,7 +158,14 @@ Scene read_scene(const json& doc, InputWarnings* w) {
     return scene;
 }
 
-Scene read_scene_text(const std::string& text, InputWarnings* warnings) { return read_scene(parse(text), warnings); }
+}  // namespace
+
+Scene read_scene(const json& doc, InputWarnings* w) { return read_scene(doc, {}, w); }
+
+Scene read_scene_text(const std::string& text, InputWarnings* warnings) {
+    if (const std::optional<PlainScene> plain = parse_plain_scene(text)) return read_scene(plain->doc, plain->contacts, warnings);
+    return read_scene(parse_by_library(text), {}, warnings);
+}
 
 json to_json(const Scene& scene) {
     auto xy = [](const Vec2& v) { return json::array({v.x(), v.y()}); };

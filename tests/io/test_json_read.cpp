@@ -2,17 +2,21 @@
 // oracle: on every text, the plain reader either declines or gives the library's document,
 // value for value and type for type (an integer stays an integer, unsigned unless negative; a
 // double is the same bits). Texts come from random documents written with random spacing and
-// number spellings, and from damaging them one character at a time.
+// number spellings, and from damaging them one character at a time. The scene reader, which
+// takes a plain text's contacts without a document, against reading the library's document:
+// the same scene, or the same error, and the same warnings.
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <random>
 #include <sstream>
 
 #include "io/json_read.hpp"
+#include "momentlab/io/scene_json.hpp"
 
 namespace momentlab {
 namespace {
@@ -216,6 +220,85 @@ TEST(JsonRead, EveryExampleIsPlain) {
         ++files;
     }
     EXPECT_GT(files, 10);
+}
+
+// Scene texts: a few contacts with their fields in random order, some optional ones left out,
+// now and then a value of the wrong kind or out of range, an unknown or repeated field, and a
+// body whose outline the contacts may miss.
+std::string scene_text(std::mt19937& rng) {
+    const auto below = [&](int n) { return static_cast<int>(rng() % static_cast<unsigned>(n)); };
+    const auto number = [&]() -> std::string {
+        static const char* const kOdd[] = {"-0.3", "0", "1e-70", "1e70", "\"1\"", "null", "[1]", "3", "-1"};
+        if (below(12) == 0) return kOdd[below(9)];
+        return std::to_string(below(2001) - 1000) + "e-3";
+    };
+    std::string text = "{";
+    const bool outline = below(3) == 0;
+    if (below(6) != 0) {
+        text += R"("body": {"mass": 1, "com": [0, 0], "inertia": 0.5)";
+        if (outline) text += R"(, "polygon": [[-1, -1], [1, -1], [1, 1], [-1, 1]])";
+        text += "}, ";
+    }
+    text += R"("contacts": [)";
+    const int contacts = below(5);
+    for (int k = 0; k < contacts; ++k) {
+        std::vector<std::string> fields;
+        const std::string x = outline ? std::to_string(below(3) - 1) : number();
+        if (below(15) != 0) fields.push_back(R"("point": [)" + x + ", " + (outline ? "-1" : number()) + "]");
+        if (below(15) != 0) fields.push_back(R"("normal": [)" + number() + ", " + (below(8) == 0 ? "0" : number()) + "]");
+        if (below(2) == 0) fields.push_back(R"("mu": )" + number());
+        if (below(4) == 0) fields.push_back(R"("mu_kinetic": )" + number());
+        if (below(4) == 0) fields.push_back(below(6) == 0 ? R"("name": 3)" : R"("name": "c)" + std::to_string(k) + "\"");
+        if (below(20) == 0) fields.push_back(R"("colour": "red")");
+        if (below(20) == 0) fields.push_back(R"("mu": 0.1)");
+        if (below(20) == 0) fields.push_back(R"("point": [1, 2, 3])");
+        std::shuffle(fields.begin(), fields.end(), rng);
+        text += k > 0 ? ", {" : "{";
+        for (std::size_t f = 0; f < fields.size(); ++f) text += (f > 0 ? ", " : "") + fields[f];
+        text += "}";
+    }
+    text += "]";
+    if (below(8) == 0) text += R"(, "mu": 0.2)";
+    if (below(8) == 0) text += R"(, "contact_distance": 0.01)";
+    return text + "}";
+}
+
+// What reading gives: the scene written back and the warnings, or the error.
+std::string outcome(const std::function<Scene(InputWarnings*)>& read) {
+    InputWarnings warnings;
+    try {
+        const Scene scene = read(&warnings);
+        std::string out = to_json(scene).dump();
+        for (const std::string& w : warnings) out += "\nwarning: " + w;
+        return out;
+    } catch (const InputError& e) {
+        return std::string("error: ") + e.what();
+    }
+}
+
+TEST(JsonRead, SceneReaderGivesWhatTheLibrarysDocumentGives) {
+    std::mt19937 rng(11);
+    int plain_scenes = 0, plain_errors = 0, scenes = 0;
+    for (int t = 0; t < 6000; ++t) {
+        std::string text = scene_text(rng);
+        for (int damaged = 0; damaged < 2; ++damaged) {
+            const std::string fast = outcome([&](InputWarnings* w) { return read_scene_text(text, w); });
+            const std::string slow = outcome([&](InputWarnings* w) {
+                return read_scene(json_read::parse_by_library(text), w);
+            });
+            ASSERT_EQ(fast, slow) << text;
+            const std::optional<json_read::PlainScene> plain = json_read::parse_plain_scene(text);
+            const bool read = fast.rfind("error", 0) != 0;
+            if (plain && !plain->contacts.empty()) (read ? plain_scenes : plain_errors) += 1;
+            if (read) ++scenes;
+            const std::size_t at = rng() % text.size();
+            text[at] = "{}[]\",:0-. e"[rng() % 13];
+        }
+    }
+    // Both paths are exercised, and the contacts taken apart give scenes and errors.
+    EXPECT_GT(plain_scenes, 500);
+    EXPECT_GT(plain_errors, 500);
+    EXPECT_GT(scenes, 800);
 }
 
 }  // namespace
