@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <set>
 
 namespace momentlab::json_read {
 
@@ -115,12 +116,26 @@ std::string at(const std::string& path, std::size_t i) { return path + "[" + std
 namespace {
 
 // The containers open while parsing, to name the path of a repeated key. Each holds the keys
-// seen so far (objects are small: a linear search) and how the container sits in its parent.
+// seen so far and how the container sits in its parent.
 struct Frame {
+    static constexpr std::size_t kFewKeys = 16;
+
     bool is_array = false;
-    std::size_t count = 0;          // elements seen (arrays)
-    std::string key;                // the last key read (objects)
-    std::vector<std::string> keys;  // keys seen (objects)
+    std::size_t count = 0;                   // elements seen (arrays)
+    std::string key;                         // the last key read (objects)
+    std::vector<std::string> keys;           // the first kFewKeys keys seen (a linear search)
+    std::set<std::string, std::less<>> many;  // all the keys seen, once there are more
+
+    // Records key; false when it was seen before.
+    bool add(const std::string& k) {
+        if (keys.size() < kFewKeys) {
+            if (std::find(keys.begin(), keys.end(), k) != keys.end()) return false;
+            keys.push_back(k);
+            return true;
+        }
+        if (many.empty()) many.insert(keys.begin(), keys.end());
+        return many.insert(k).second;
+    }
 };
 
 // The path of the element being read: each open container's place in its parent, then the
@@ -205,10 +220,7 @@ public:
     bool key(json::string_t& k) {
         Frame& f = stack_.back();
         f.key = k;
-        if (std::find(f.keys.begin(), f.keys.end(), f.key) != f.keys.end()) {
-            throw InputError(path_of(stack_), "duplicate key (each key may appear once in an object)");
-        }
-        f.keys.push_back(f.key);
+        if (!f.add(k)) throw InputError(path_of(stack_), "duplicate key (each key may appear once in an object)");
         return dom_.key(k);
     }
     template <class Exception>
@@ -231,7 +243,7 @@ private:
     }
     bool open(bool is_array) {
         element();
-        stack_.push_back(Frame{is_array, 0, {}, {}});
+        stack_.push_back(Frame{is_array, 0, {}, {}, {}});
         if (!spare_keys_.empty()) {  // a closed object's list, kept for its capacity
             stack_.back().keys = std::move(spare_keys_.back());
             spare_keys_.pop_back();

@@ -207,6 +207,22 @@ TEST(JsonRead, PlainReaderDeclinesWhatTheLibraryMustReport) {
     EXPECT_EQ(json_read::parse(deep).dump(), by_library(deep)->dump());
 }
 
+TEST(JsonRead, RepeatedKeyOfABigObjectIsFound) {
+    // An escape sends the text to the library's reader, whose check of repeated keys goes from
+    // a list to a set past 16 keys: found in either, at the key's place.
+    for (const int keys : {5, 16, 17, 50000}) {
+        std::string text = R"({"a\n": 1)";
+        for (int k = 0; k < keys; ++k) text += ", \"k" + std::to_string(k) + "\": " + std::to_string(k);
+        EXPECT_EQ(json_read::parse(text + "}").size(), static_cast<std::size_t>(keys) + 1);
+        try {
+            json_read::parse(text + ", \"k" + std::to_string(keys - 1) + "\": 0}");
+            ADD_FAILURE() << "a repeated key among " << keys << " was not reported";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("$.k" + std::to_string(keys - 1) + ": duplicate key"), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(JsonRead, EveryExampleIsPlain) {
     int files = 0;
     for (const auto& entry : std::filesystem::recursive_directory_iterator(MOMENTLAB_EXAMPLES)) {
