@@ -48,22 +48,37 @@ constexpr std::size_t kTwoThreadContacts = 20;
 // Each contact's friction edges, built once for all the modes (exact constructions; copies
 // share them): the static cone's two edges, and the kinetic ones n + mu_k t, n - mu_k t.
 struct FrictionEdges {
-    std::vector<std::array<ExactVector, 2>> statics, kinetics;
-    std::vector<char> kinetic_is_static;  // mu_k = mu: the kinetic edges are the static ones
+    std::vector<std::array<ExactVector, 2>> statics;
+    // The kinetic edges of the contacts whose mu_k differs from mu, in order; kinetic_at[j] is
+    // contact j's place among them, or -1 when mu_k = mu (its kinetic edges are the static ones:
+    // not stored twice, 192 bytes a contact).
+    std::vector<std::array<ExactVector, 2>> kinetics;
+    std::vector<int> kinetic_at;
 
     // Exact constructions, a few microseconds each: two halves on two threads for large scenes
     // (unless the caller has the other thread busy).
     explicit FrictionEdges(const std::vector<Contact>& contacts, bool two_threads = true)
-        : statics(contacts.size()), kinetics(contacts.size()), kinetic_is_static(contacts.size()) {
+        : statics(contacts.size()), kinetic_at(contacts.size(), -1) {
         const std::size_t n = contacts.size();
+        int distinct = 0;
+        for (std::size_t j = 0; j < n; ++j) {
+            if (contacts[j].mu_kinetic != contacts[j].mu) kinetic_at[j] = distinct++;
+        }
+        kinetics.resize(static_cast<std::size_t>(distinct));
         detail::for_each_index(2, two_threads && n >= kTwoThreadContacts, [&](std::size_t half) {
             for (std::size_t j = n * half / 2; j < n * (half + 1) / 2; ++j) {
                 const Contact& c = contacts[j];
                 statics[j] = friction_cone_edges(c.point, c.normal, c.mu);
-                kinetic_is_static[j] = c.mu_kinetic == c.mu;
-                kinetics[j] = kinetic_is_static[j] ? statics[j] : friction_cone_edges(c.point, c.normal, c.mu_kinetic);
+                if (kinetic_at[j] >= 0) {
+                    kinetics[static_cast<std::size_t>(kinetic_at[j])] = friction_cone_edges(c.point, c.normal, c.mu_kinetic);
+                }
             }
         });
+    }
+
+    // Contact j's kinetic edges (n + mu_k t, n - mu_k t).
+    [[nodiscard]] const std::array<ExactVector, 2>& kinetic(std::size_t j) const {
+        return kinetic_at[j] < 0 ? statics[j] : kinetics[static_cast<std::size_t>(kinetic_at[j])];
     }
 
     // A name for each edge, so that modes can tell whether they share one: 0, 1 the static
@@ -71,7 +86,7 @@ struct FrictionEdges {
     // with letter 'r' or 'l':
     [[nodiscard]] int sliding_slot(std::size_t j, char letter) const {
         const int side = letter == 'r' ? 1 : 0;
-        return kinetic_is_static[j] ? side : side + 2;
+        return kinetic_at[j] < 0 ? side : side + 2;
     }
 
     // Calls f(edge, slot) for each generator contact j adds to the contact cone T of a mode in
@@ -81,8 +96,8 @@ struct FrictionEdges {
     bool for_contact(std::size_t j, char letter, F f) const {
         switch (letter) {
             case 'f': return f(statics[j][0], 0) && f(statics[j][1], 1);
-            case 'r': return f(kinetics[j][1], sliding_slot(j, letter));
-            case 'l': return f(kinetics[j][0], sliding_slot(j, letter));
+            case 'r': return f(kinetic(j)[1], sliding_slot(j, letter));
+            case 'l': return f(kinetic(j)[0], sliding_slot(j, letter));
             default: return true;
         }
     }
