@@ -31,7 +31,11 @@ int finish(int status) {
     std::cout.flush();
     const bool failed = std::fflush(stdout) != 0 || std::ferror(stdout) != 0 || !std::cout;
     if (failed) {
-        const int error = errno;
+        int error = errno;
+        // A stream that failed while the command wrote (analyze --json writes as it goes) writes
+        // nothing more, so no errno is left to tell why: one byte more, to a stream already
+        // incomplete, asks the system again.
+        if (error == 0 && ::write(STDOUT_FILENO, "\n", 1) < 0) error = errno;
         return fail(std::string("cannot write the answer to standard output (") +
                     (error != 0 ? std::strerror(error) : "write error") + ")");
     }
