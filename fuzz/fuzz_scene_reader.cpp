@@ -1,5 +1,6 @@
 // Fuzz target: the scene reader. The plain JSON reader either declines a text or reads the
-// document the JSON library reads from it, number for number. Any text is either rejected
+// document the JSON library reads from it, number for number, and the scene read from the text
+// is the one read from the library's document (or the same error). Any text is either rejected
 // with an InputError or accepted; an accepted scene (of at most 6 contacts, to keep runs
 // short) must go through mode enumeration, analysis and queries without any exception, and
 // survive a JSON round trip.
@@ -33,11 +34,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     Scene scene;
     InputWarnings warnings;
+    std::string error;
     try {
         scene = read_scene_text(text, &warnings);
-    } catch (const InputError&) {
-        return 0;
+    } catch (const InputError& e) {
+        error = e.what();
     }
+    // The scene reader (which takes a plain text's lists apart) against the library's document.
+    {
+        Scene slow;
+        InputWarnings slow_warnings;
+        std::string slow_error;
+        try {
+            slow = read_scene(json_read::parse_by_library(text), &slow_warnings);
+        } catch (const InputError& e) {
+            slow_error = e.what();
+        }
+        FUZZ_REQUIRE(error == slow_error);
+        FUZZ_REQUIRE(warnings == slow_warnings);
+        if (error.empty()) FUZZ_REQUIRE(to_json(scene).dump() == to_json(slow).dump());
+    }
+    if (!error.empty()) return 0;
     FUZZ_REQUIRE(!scene.contacts.empty());
     if (scene.contacts.size() > 6) return 0;
     const ModeSet modes = enumerate_modes(scene.contacts);

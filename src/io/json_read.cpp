@@ -65,8 +65,15 @@ Vec2 vec2(const json& v, const std::string& path) {
 }
 
 Vec2 vec2(const json& x, const json& y, const std::string& path) {
-    if (plain_coordinate(x) && plain_coordinate(y)) return checked(Vec2(x.get<double>(), y.get<double>()), path);
+    if (const std::optional<Vec2> v = accepted_vec2(x, y)) return *v;
     return checked(Vec2(coordinate(x, path + "[0]"), coordinate(y, path + "[1]")), path);
+}
+
+std::optional<Vec2> accepted_vec2(const json& x, const json& y) {
+    if (!plain_coordinate(x) || !plain_coordinate(y)) return std::nullopt;
+    const Vec2 v(x.get<double>(), y.get<double>());
+    if (!magnitude_in_range(v.cwiseAbs().maxCoeff())) return std::nullopt;
+    return v;
 }
 
 Vec3 vec3(const json& v, const std::string& path) {
@@ -94,7 +101,13 @@ Vec2 nonzero(const Vec2& v, const std::string& path) {
 std::vector<Vec2> vec2_list(const json& v, const std::string& path) {
     if (!v.is_array()) throw InputError(path, "expected a list of [x, y]");
     std::vector<Vec2> out;
-    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(vec2(v[i], at(path, i)));
+    out.reserve(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        // The element's path only for an error (10^6 vertices make 10^6 path strings).
+        const json& e = v[i];
+        const std::optional<Vec2> fast = e.is_array() && e.size() == 2 ? accepted_vec2(e[0], e[1]) : std::nullopt;
+        out.push_back(fast ? *fast : vec2(e, at(path, i)));
+    }
     return out;
 }
 
@@ -275,13 +288,13 @@ private:
 // copies each token), and gives up on anything else, which the library then reads and reports.
 class PlainReader {
 public:
-    // contacts: where a top-level "contacts" list of plain contacts goes, or nullptr.
-    PlainReader(std::string_view text, std::vector<PlainContact>* contacts)
-        : p_(text.data()), end_(text.data() + text.size()), contacts_(contacts) {}
+    // scene: where a scene's contacts and polygons go when they are plain (PlainScene), or
+    // nullptr to read any document.
+    PlainReader(std::string_view text, PlainScene* scene) : p_(text.data()), end_(text.data() + text.size()), scene_(scene) {}
 
     std::optional<json> document() {
         json out;
-        if (!value(out, 0)) return std::nullopt;
+        if (!value(out, 0, scene_ ? Place::Scene : Place::Other)) return std::nullopt;
         skip_space();
         if (p_ != end_) return std::nullopt;
         return out;
@@ -289,6 +302,9 @@ public:
 
 private:
     static constexpr int kMaxDepth = 64;
+
+    // Where a value sits in a scene: the places whose lists the scene reader takes apart.
+    enum class Place { Other, Scene, Body, Obstacles, Obstacle };
 
     static bool digit(char c) { return c >= '0' && c <= '9'; }
 
@@ -304,12 +320,12 @@ private:
         return true;
     }
 
-    bool value(json& out, int depth) {
+    bool value(json& out, int depth, Place place = Place::Other) {
         skip_space();
         if (p_ == end_) return false;
         switch (*p_) {
-            case '{': return object(out, depth);
-            case '[': return array(out, depth);
+            case '{': return object(out, depth, place);
+            case '[': return array(out, depth, place);
             case '"': {
                 std::string s;
                 if (!string(s)) return false;
@@ -323,7 +339,7 @@ private:
         }
     }
 
-    bool object(json& out, int depth) {
+    bool object(json& out, int depth, Place place) {
         if (depth == kMaxDepth) return false;
         ++p_;
         out = json::object();
@@ -332,28 +348,60 @@ private:
         do {
             std::string key;
             if (!member_key(key)) return false;
-            const bool contacts = depth == 0 && contacts_ != nullptr && key == "contacts";
+            // The member's place, and where its list goes if it is taken apart.
+            Place inner = Place::Other;
+            std::optional<std::vector<PlainPoint>>* polygon = nullptr;
+            bool contacts = false;
+            if (place == Place::Scene) {
+                contacts = key == "contacts";
+                inner = key == "body" ? Place::Body : key == "obstacles" ? Place::Obstacles : Place::Other;
+            } else if (key == "polygon" && place == Place::Body) {
+                polygon = &scene_->body_polygon;
+            } else if (key == "polygon" && place == Place::Obstacle) {
+                if (scene_->obstacle_polygons.size() <= obstacle_) scene_->obstacle_polygons.resize(obstacle_ + 1);
+                polygon = &scene_->obstacle_polygons[obstacle_];
+            }
             const auto [member, inserted] = members.emplace(std::move(key), json());
             if (!inserted) return false;  // a repeated key: the library names its path
-            if (contacts && contact_list()) continue;  // the member stays null
-            if (!value(member->second, depth + 1)) return false;
+            // A list taken apart leaves the member null.
+            if ((contacts && contact_list()) || (polygon && point_list(*polygon))) continue;
+            if (!value(member->second, depth + 1, inner)) return false;
         } while (next_is(','));
         return next_is('}');
     }
 
+    // A non-empty list of [x, y] (numbers), into points. On anything else, false with the
+    // position and points as they were.
+    bool point_list(std::optional<std::vector<PlainPoint>>& points) {
+        const char* const start = p_;
+        std::vector<PlainPoint> list;
+        if (next_is('[')) {
+            do {
+                PlainPoint& xy = list.emplace_back();
+                if (!(next_is('[') && scalar_number(xy[0]) && next_is(',') && scalar_number(xy[1]) && next_is(']'))) break;
+                if (next_is(']')) {
+                    points = std::move(list);
+                    return true;
+                }
+            } while (next_is(','));
+        }
+        p_ = start;
+        return false;
+    }
+
     // A non-empty list of contacts, each an object of "point" and "normal" (two numbers each)
-    // and optionally "mu", "mu_kinetic" (numbers) and "name" (a string), into contacts_. On
+    // and optionally "mu", "mu_kinetic" (numbers) and "name" (a string), into the scene. On
     // anything else, false with the position and the list as they were.
     bool contact_list() {
         const char* const start = p_;
         if (next_is('[')) {
             do {
-                if (!next_is('{') || !contact(contacts_->emplace_back())) break;
+                if (!next_is('{') || !contact(scene_->contacts.emplace_back())) break;
                 if (next_is(']')) return true;
             } while (next_is(','));
         }
         p_ = start;
-        contacts_->clear();
+        scene_->contacts.clear();
         return false;
     }
 
@@ -386,15 +434,16 @@ private:
         return p_ != end_ && (*p_ == '-' || digit(*p_)) && number(out);
     }
 
-    bool array(json& out, int depth) {
+    bool array(json& out, int depth, Place place) {
         if (depth == kMaxDepth) return false;
         ++p_;
         out = json::array();
         auto& elements = out.get_ref<json::array_t&>();
         if (next_is(']')) return true;
         do {
+            if (place == Place::Obstacles) obstacle_ = elements.size();
             elements.emplace_back();
-            if (!value(elements.back(), depth + 1)) return false;
+            if (!value(elements.back(), depth + 1, place == Place::Obstacles ? Place::Obstacle : Place::Other)) return false;
         } while (next_is(','));
         return next_is(']');
     }
@@ -482,7 +531,8 @@ private:
 
     const char* p_;
     const char* end_;
-    std::vector<PlainContact>* contacts_;
+    PlainScene* scene_;
+    std::size_t obstacle_ = 0;  // the index of the obstacle being read
 };
 
 }  // namespace
@@ -491,7 +541,7 @@ std::optional<json> parse_plain(std::string_view text) { return PlainReader(text
 
 std::optional<PlainScene> parse_plain_scene(std::string_view text) {
     PlainScene out;
-    std::optional<json> doc = PlainReader(text, &out.contacts).document();
+    std::optional<json> doc = PlainReader(text, &out).document();
     if (!doc) return std::nullopt;
     out.doc = std::move(*doc);
     return out;

@@ -27,6 +27,9 @@ double nonnegative(const json& v, const std::string& path, const char* what);
 Vec2 vec2(const json& v, const std::string& path);
 /// The vector [x, y] of two values read apart, checked as vec2 checks it.
 Vec2 vec2(const json& x, const json& y, const std::string& path);
+/// The vector vec2(x, y, path) returns when it returns one without an error; nullopt where
+/// it would throw (no path is needed to decide).
+std::optional<Vec2> accepted_vec2(const json& x, const json& y);
 Vec3 vec3(const json& v, const std::string& path);
 std::vector<Vec3> vec3_list(const json& v, const std::string& path);
 std::vector<Vec2> vec2_list(const json& v, const std::string& path);
@@ -48,20 +51,27 @@ std::optional<json> parse_plain(std::string_view text);
 /// parse by the JSON library alone, with the checks of parse (repeated keys, underflow).
 json parse_by_library(const std::string& text);
 
+/// A point [x, y] as written, before any check: its coordinates as the JSON library stores them.
+using PlainPoint = std::array<json, 2>;
 /// A contact of a scene as written, before any check: the coordinates of "point" and "normal"
 /// and the optional fields, as the JSON library would store them.
 struct PlainContact {
-    std::array<json, 2> point, normal;
+    PlainPoint point, normal;
     std::optional<json> mu, mu_kinetic;
     std::optional<std::string> name;
 };
-/// A plain text (as parse_plain) read for a scene: when its top-level "contacts" is a
-/// non-empty list of objects with exactly the fields of a contact, "point" and "normal" among
-/// them as two numbers each, its contacts are in `contacts` and doc["contacts"] is null (no
-/// document of 10^5 small objects); otherwise `contacts` is empty and doc is parse_plain's.
+/// A plain text (as parse_plain) read for a scene, with its long lists taken apart instead of
+/// made into documents of small arrays and objects (their members in doc are null):
+///  * `contacts`: the top-level "contacts" when it is a non-empty list of objects with exactly
+///    the fields of a contact, "point" and "normal" among them as two numbers each;
+///  * `body_polygon`, `obstacle_polygons[i]`: "polygon" of the top-level "body" and of
+///    "obstacles"[i] when it is a non-empty list of [x, y] (numbers).
+/// What is not so (empty contacts, absent polygons) is in doc as parse_plain has it.
 struct PlainScene {
     json doc;
     std::vector<PlainContact> contacts;
+    std::optional<std::vector<PlainPoint>> body_polygon;
+    std::vector<std::optional<std::vector<PlainPoint>>> obstacle_polygons;  // may be shorter than "obstacles"
 };
 std::optional<PlainScene> parse_plain_scene(std::string_view text);
 

@@ -20,14 +20,32 @@ double positive(const json& obj, const std::string& path, const char* name) {
     return x;
 }
 
-Polygon polygon(const json& v, const std::string& path) {
-    Polygon p = vec2_list(v, path);
+Polygon checked_polygon(Polygon p, const std::string& path) {
     const std::string problem = polygon_problem(p);
     if (!problem.empty()) throw InputError(path, problem);
     return p;
 }
 
-Body read_body(const json& b, const std::string& path, InputWarnings* w) {
+Polygon polygon(const json& v, const std::string& path) { return checked_polygon(vec2_list(v, path), path); }
+
+// The same from a list the plain reader took apart.
+Polygon polygon(const std::vector<PlainPoint>& points, const std::string& path) {
+    Polygon p;
+    p.reserve(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const std::optional<Vec2> fast = accepted_vec2(points[i][0], points[i][1]);
+        p.push_back(fast ? *fast : vec2(points[i][0], points[i][1], at(path, i)));
+    }
+    return checked_polygon(std::move(p), path);
+}
+
+// The polygon in field "polygon" of obj (known to be there), or the plain reader's list of it.
+Polygon polygon_field(const json& obj, const std::optional<std::vector<PlainPoint>>* plain, const std::string& path) {
+    return plain && *plain ? polygon(**plain, path) : polygon(obj.at("polygon"), path);
+}
+
+Body read_body(const json& b, const std::optional<std::vector<PlainPoint>>* plain_polygon, const std::string& path,
+               InputWarnings* w) {
     if (!b.is_object()) throw InputError(path, "expected an object with \"mass\", \"com\" and \"inertia\"");
     known_fields(b, path, {"mass", "com", "inertia", "radius_of_gyration", "polygon"}, w);
     Body body;
@@ -45,7 +63,7 @@ Body read_body(const json& b, const std::string& path, InputWarnings* w) {
     } else {
         throw InputError(path, "missing field \"inertia\" (or \"radius_of_gyration\")");
     }
-    if (b.contains("polygon")) body.polygon = polygon(b.at("polygon"), path + ".polygon");
+    if (b.contains("polygon")) body.polygon = polygon_field(b, plain_polygon, path + ".polygon");
     return body;
 }
 
@@ -77,13 +95,16 @@ Contact read_contact(const PlainContact& c, const std::string& path) {
                         c.name ? &name : nullptr, path);
 }
 
-// read_scene, with the contacts taken from `plain` when it holds any (doc["contacts"] is then
-// a placeholder).
-Scene read_scene(const json& doc, const std::vector<PlainContact>& plain, InputWarnings* w) {
+// read_scene, with the lists the plain reader took apart from `plain` (nullptr: none).
+Scene read_scene(const json& doc, const PlainScene* plain_scene, InputWarnings* w) {
+    const std::vector<PlainContact> none;
+    const std::vector<PlainContact>& plain = plain_scene ? plain_scene->contacts : none;
     if (!doc.is_object()) throw InputError("$", "expected a scene object with \"body\" and \"contacts\"");
     known_fields(doc, "$", {"body", "contacts", "obstacles", "contact_distance", "mu"}, w);
     Scene scene;
-    if (doc.contains("body")) scene.body = read_body(doc.at("body"), "$.body", w);
+    if (doc.contains("body")) {
+        scene.body = read_body(doc.at("body"), plain_scene ? &plain_scene->body_polygon : nullptr, "$.body", w);
+    }
     if (doc.contains("obstacles")) {
         const json& obstacles = doc.at("obstacles");
         if (!obstacles.is_array()) throw InputError("$.obstacles", "expected a list of obstacles");
@@ -91,7 +112,10 @@ Scene read_scene(const json& doc, const std::vector<PlainContact>& plain, InputW
             const std::string p = at("$.obstacles", i);
             if (!obstacles[i].is_object()) throw InputError(p, "expected an object with \"polygon\"");
             known_fields(obstacles[i], p, {"polygon"}, w);
-            scene.obstacles.push_back(polygon(field(obstacles[i], p, "polygon"), p + ".polygon"));
+            field(obstacles[i], p, "polygon");  // there, or an error
+            const bool plain_polygon = plain_scene && i < plain_scene->obstacle_polygons.size();
+            scene.obstacles.push_back(
+                polygon_field(obstacles[i], plain_polygon ? &plain_scene->obstacle_polygons[i] : nullptr, p + ".polygon"));
         }
     }
     ContactFinding options;
@@ -160,11 +184,11 @@ Scene read_scene(const json& doc, const std::vector<PlainContact>& plain, InputW
 
 }  // namespace
 
-Scene read_scene(const json& doc, InputWarnings* w) { return read_scene(doc, {}, w); }
+Scene read_scene(const json& doc, InputWarnings* w) { return read_scene(doc, nullptr, w); }
 
 Scene read_scene_text(const std::string& text, InputWarnings* warnings) {
-    if (const std::optional<PlainScene> plain = parse_plain_scene(text)) return read_scene(plain->doc, plain->contacts, warnings);
-    return read_scene(parse_by_library(text), {}, warnings);
+    if (const std::optional<PlainScene> plain = parse_plain_scene(text)) return read_scene(plain->doc, &*plain, warnings);
+    return read_scene(parse_by_library(text), nullptr, warnings);
 }
 
 json to_json(const Scene& scene) {

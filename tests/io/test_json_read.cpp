@@ -7,6 +7,7 @@
 // the same scene, or the same error, and the same warnings.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <filesystem>
@@ -249,11 +250,34 @@ std::string scene_text(std::mt19937& rng) {
         return std::to_string(below(2001) - 1000) + "e-3";
     };
     std::string text = "{";
+    // An outline: the square around the origin, now and then with a vertex off it, of the
+    // wrong kind or of three coordinates, or not a list of vertices at all.
+    const auto outline_text = [&](double half) {
+        static const char* const kOdd[] = {"[]", "3", "[[0, 0], [1, 1]]", "[[-1, -1], [1, -1], [1, 1, 1], [-1, 1]]",
+                                           R"([[-1, -1], [1, -1], ["1", 1], [-1, 1]])", "[[-1, -1], [1, -1], [1, 1], [-1, 1e-400]]",
+                                           "[[-1, -1], [1, 1], [1, -1], [-1, 1]]", "[[-1, -1], [1, -1], [1, 1], [-1, 1e70]]"};
+        if (below(6) == 0) return std::string(kOdd[below(8)]);
+        const std::string h = std::to_string(half), m = std::to_string(-half);
+        return "[[" + m + ", " + m + "], [" + h + ", " + m + "], [" + h + ", " + h + "], [" + m + ", " + h + "]]";
+    };
     const bool outline = below(3) == 0;
     if (below(6) != 0) {
         text += R"("body": {"mass": 1, "com": [0, 0], "inertia": 0.5)";
-        if (outline) text += R"(, "polygon": [[-1, -1], [1, -1], [1, 1], [-1, 1]])";
+        if (outline) text += R"(, "polygon": )" + outline_text(1);
         text += "}, ";
+    }
+    if (below(4) == 0) {  // obstacles, some not objects or without a polygon
+        text += R"("obstacles": [)";
+        for (int k = below(3); k >= 0; --k) {
+            const int kind = below(8);
+            text += kind == 0 ? "3" : kind == 1 ? "{}" : R"({"polygon": )" + outline_text(2 + k) + "}";
+            if (k > 0) text += ", ";
+        }
+        text += "], ";
+    }
+    if (below(10) == 0) {  // no contacts: they are found from the polygons, if any
+        text += R"("mu": 0.25})";
+        return text;
     }
     text += R"("contacts": [)";
     const int contacts = below(5);
@@ -294,7 +318,7 @@ std::string outcome(const std::function<Scene(InputWarnings*)>& read) {
 
 TEST(JsonRead, SceneReaderGivesWhatTheLibrarysDocumentGives) {
     std::mt19937 rng(11);
-    int plain_scenes = 0, plain_errors = 0, scenes = 0;
+    int plain_scenes = 0, plain_errors = 0, polygon_scenes = 0, polygon_errors = 0, scenes = 0;
     for (int t = 0; t < 6000; ++t) {
         std::string text = scene_text(rng);
         for (int damaged = 0; damaged < 2; ++damaged) {
@@ -306,15 +330,21 @@ TEST(JsonRead, SceneReaderGivesWhatTheLibrarysDocumentGives) {
             const std::optional<json_read::PlainScene> plain = json_read::parse_plain_scene(text);
             const bool read = fast.rfind("error", 0) != 0;
             if (plain && !plain->contacts.empty()) (read ? plain_scenes : plain_errors) += 1;
+            const bool plain_polygon = plain && (plain->body_polygon || std::any_of(plain->obstacle_polygons.begin(),
+                                                                                   plain->obstacle_polygons.end(),
+                                                                                   [](const auto& p) { return p.has_value(); }));
+            if (plain_polygon) (read ? polygon_scenes : polygon_errors) += 1;
             if (read) ++scenes;
             const std::size_t at = rng() % text.size();
             text[at] = "{}[]\",:0-. e"[rng() % 13];
         }
     }
-    // Both paths are exercised, and the contacts taken apart give scenes and errors.
+    // Both paths are exercised, and the contacts and polygons taken apart give scenes and errors.
     EXPECT_GT(plain_scenes, 500);
+    EXPECT_GT(polygon_scenes, 100);
+    EXPECT_GT(polygon_errors, 100);
     EXPECT_GT(plain_errors, 500);
-    EXPECT_GT(scenes, 800);
+    EXPECT_GT(scenes, 600);
 }
 
 }  // namespace
