@@ -66,7 +66,9 @@ Vec2 vec2(const json& v, const std::string& path) {
 
 Vec2 vec2(const json& x, const json& y, const std::string& path) {
     if (const std::optional<Vec2> v = accepted_vec2(x, y)) return *v;
-    return checked(Vec2(coordinate(x, path + "[0]"), coordinate(y, path + "[1]")), path);
+    const double a = coordinate(x, path + "[0]");  // in order: an error names the first bad coordinate
+    const double b = coordinate(y, path + "[1]");
+    return checked(Vec2(a, b), path);
 }
 
 std::optional<Vec2> accepted_vec2(const json& x, const json& y) {
@@ -78,7 +80,10 @@ std::optional<Vec2> accepted_vec2(const json& x, const json& y) {
 
 Vec3 vec3(const json& v, const std::string& path) {
     if (!v.is_array() || v.size() != 3) throw InputError(path, "expected [a, b, c]");
-    return checked(Vec3(coordinate(v[0], path + "[0]"), coordinate(v[1], path + "[1]"), coordinate(v[2], path + "[2]")), path);
+    const double a = coordinate(v[0], path + "[0]");  // in order, as in vec2
+    const double b = coordinate(v[1], path + "[1]");
+    const double c = coordinate(v[2], path + "[2]");
+    return checked(Vec3(a, b, c), path);
 }
 
 std::vector<Vec3> vec3_list(const json& v, const std::string& path) {

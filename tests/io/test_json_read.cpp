@@ -224,6 +224,19 @@ TEST(JsonRead, RepeatedKeyOfABigObjectIsFound) {
     }
 }
 
+TEST(JsonRead, AVectorsFirstBadCoordinateIsNamed) {
+    // Both coordinates bad: the error is the first one's, whichever reader took the text.
+    for (const char* text : {R"({"contacts": [{"point": ["a", "b"], "normal": [0, 1]}]})",
+                             R"({"contacts": [{"point": ["a", "b"], "normal": [0, 1], "x\n": 1}]})"}) {
+        try {
+            (void)read_scene_text(text);
+            ADD_FAILURE() << text;
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind("$.contacts[0].point[0]: expected a number", 0), 0U) << e.what();
+        }
+    }
+}
+
 TEST(JsonRead, EveryExampleIsPlain) {
     int files = 0;
     for (const auto& entry : std::filesystem::recursive_directory_iterator(MOMENTLAB_EXAMPLES)) {
