@@ -43,6 +43,15 @@ bool plain_coordinate(const json& v) {
     return std::isfinite(x) && std::abs(x) <= kLargestMagnitude;
 }
 
+// The vector vec2(x, y, path) returns when it returns one without an error; nullopt where it
+// would throw (no path is needed to decide).
+std::optional<Vec2> accepted_vec2(const json& x, const json& y) {
+    if (!plain_coordinate(x) || !plain_coordinate(y)) return std::nullopt;
+    const Vec2 v(x.get<double>(), y.get<double>());
+    if (!magnitude_in_range(v.cwiseAbs().maxCoeff())) return std::nullopt;
+    return v;
+}
+
 }  // namespace
 
 double number(const json& v, const std::string& path) {
@@ -71,12 +80,6 @@ Vec2 vec2(const json& x, const json& y, const std::string& path) {
     return checked(Vec2(a, b), path);
 }
 
-std::optional<Vec2> accepted_vec2(const json& x, const json& y) {
-    if (!plain_coordinate(x) || !plain_coordinate(y)) return std::nullopt;
-    const Vec2 v(x.get<double>(), y.get<double>());
-    if (!magnitude_in_range(v.cwiseAbs().maxCoeff())) return std::nullopt;
-    return v;
-}
 
 Vec3 vec3(const json& v, const std::string& path) {
     if (!v.is_array() || v.size() != 3) throw InputError(path, "expected [a, b, c]");
@@ -103,16 +106,32 @@ Vec2 nonzero(const Vec2& v, const std::string& path) {
     return v;
 }
 
+namespace {
+
+// vec2(x, y, at(path, i)), with the element's path made only for an error (10^6 vertices
+// would make 10^6 path strings).
+Vec2 element_vec2(const json& x, const json& y, const std::string& path, std::size_t i) {
+    const std::optional<Vec2> v = accepted_vec2(x, y);
+    return v ? *v : vec2(x, y, at(path, i));
+}
+
+}  // namespace
+
 std::vector<Vec2> vec2_list(const json& v, const std::string& path) {
     if (!v.is_array()) throw InputError(path, "expected a list of [x, y]");
     std::vector<Vec2> out;
     out.reserve(v.size());
     for (std::size_t i = 0; i < v.size(); ++i) {
-        // The element's path only for an error (10^6 vertices make 10^6 path strings).
         const json& e = v[i];
-        const std::optional<Vec2> fast = e.is_array() && e.size() == 2 ? accepted_vec2(e[0], e[1]) : std::nullopt;
-        out.push_back(fast ? *fast : vec2(e, at(path, i)));
+        out.push_back(e.is_array() && e.size() == 2 ? element_vec2(e[0], e[1], path, i) : vec2(e, at(path, i)));
     }
+    return out;
+}
+
+std::vector<Vec2> vec2_list(const std::vector<PlainPoint>& points, const std::string& path) {
+    std::vector<Vec2> out;
+    out.reserve(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) out.push_back(element_vec2(points[i][0], points[i][1], path, i));
     return out;
 }
 
@@ -378,36 +397,39 @@ private:
     // A non-empty list of [x, y] (numbers), into points. On anything else, false with the
     // position and points as they were.
     bool point_list(std::optional<std::vector<PlainPoint>>& points) {
-        const char* const start = p_;
         std::vector<PlainPoint> list;
-        if (next_is('[')) {
-            do {
-                PlainPoint& xy = list.emplace_back();
-                if (!(next_is('[') && scalar_number(xy[0]) && next_is(',') && scalar_number(xy[1]) && next_is(']'))) break;
-                if (next_is(']')) {
-                    points = std::move(list);
-                    return true;
-                }
-            } while (next_is(','));
-        }
-        p_ = start;
-        return false;
+        if (!list_of([&] { return pair(list.emplace_back()); })) return false;
+        points = std::move(list);
+        return true;
     }
 
     // A non-empty list of contacts, each an object of "point" and "normal" (two numbers each)
     // and optionally "mu", "mu_kinetic" (numbers) and "name" (a string), into the scene. On
     // anything else, false with the position and the list as they were.
     bool contact_list() {
+        if (list_of([&] { return next_is('{') && contact(scene_->contacts.emplace_back()); })) return true;
+        scene_->contacts.clear();
+        return false;
+    }
+
+    // A non-empty list whose every element item() reads; false, with the position as it was,
+    // at the first element it cannot read or anything else.
+    template <class Item>
+    bool list_of(Item item) {
         const char* const start = p_;
         if (next_is('[')) {
             do {
-                if (!next_is('{') || !contact(scene_->contacts.emplace_back())) break;
+                if (!item()) break;
                 if (next_is(']')) return true;
             } while (next_is(','));
         }
         p_ = start;
-        scene_->contacts.clear();
         return false;
+    }
+
+    // [x, y] of two numbers.
+    bool pair(PlainPoint& xy) {
+        return next_is('[') && scalar_number(xy[0]) && next_is(',') && scalar_number(xy[1]) && next_is(']');
     }
 
     bool contact(PlainContact& c) {
@@ -421,13 +443,14 @@ private:
             seen |= 1u << field;
             bool read = false;
             if (field <= 1) {
-                auto& xy = field == 0 ? c.point : c.normal;
-                read = next_is('[') && scalar_number(xy[0]) && next_is(',') && scalar_number(xy[1]) && next_is(']');
+                read = pair(field == 0 ? c.point : c.normal);
             } else if (field <= 3) {
                 read = scalar_number((field == 2 ? c.mu : c.mu_kinetic).emplace());
             } else {
                 skip_space();
-                read = p_ != end_ && *p_ == '"' && string(c.name.emplace());
+                std::string name;
+                read = p_ != end_ && *p_ == '"' && string(name);
+                c.name = std::move(name);
             }
             if (!read) return false;
         } while (next_is(','));

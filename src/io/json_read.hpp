@@ -27,12 +27,13 @@ double nonnegative(const json& v, const std::string& path, const char* what);
 Vec2 vec2(const json& v, const std::string& path);
 /// The vector [x, y] of two values read apart, checked as vec2 checks it.
 Vec2 vec2(const json& x, const json& y, const std::string& path);
-/// The vector vec2(x, y, path) returns when it returns one without an error; nullopt where
-/// it would throw (no path is needed to decide).
-std::optional<Vec2> accepted_vec2(const json& x, const json& y);
 Vec3 vec3(const json& v, const std::string& path);
 std::vector<Vec3> vec3_list(const json& v, const std::string& path);
 std::vector<Vec2> vec2_list(const json& v, const std::string& path);
+/// A point [x, y] as written, before any check: its coordinates as the JSON library stores them.
+using PlainPoint = std::array<json, 2>;
+/// vec2_list of a list the plain reader took apart.
+std::vector<Vec2> vec2_list(const std::vector<PlainPoint>& points, const std::string& path);
 /// A non-zero [x, y] in field `name` of `obj`.
 Vec2 nonzero2(const json& obj, const std::string& path, const char* name);
 /// v, unless it is zero (an InputError at path).
@@ -51,14 +52,11 @@ std::optional<json> parse_plain(std::string_view text);
 /// parse by the JSON library alone, with the checks of parse (repeated keys, underflow).
 json parse_by_library(const std::string& text);
 
-/// A point [x, y] as written, before any check: its coordinates as the JSON library stores them.
-using PlainPoint = std::array<json, 2>;
 /// A contact of a scene as written, before any check: the coordinates of "point" and "normal"
 /// and the optional fields, as the JSON library would store them.
 struct PlainContact {
     PlainPoint point, normal;
-    std::optional<json> mu, mu_kinetic;
-    std::optional<std::string> name;
+    std::optional<json> mu, mu_kinetic, name;
 };
 /// A plain text (as parse_plain) read for a scene, with its long lists taken apart instead of
 /// made into documents of small arrays and objects (their members in doc are null):

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <optional>
+#include <span>
 
 #include "json_read.hpp"
 #include "momentlab/geometry/polygon.hpp"
@@ -28,20 +29,9 @@ Polygon checked_polygon(Polygon p, const std::string& path) {
 
 Polygon polygon(const json& v, const std::string& path) { return checked_polygon(vec2_list(v, path), path); }
 
-// The same from a list the plain reader took apart.
-Polygon polygon(const std::vector<PlainPoint>& points, const std::string& path) {
-    Polygon p;
-    p.reserve(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const std::optional<Vec2> fast = accepted_vec2(points[i][0], points[i][1]);
-        p.push_back(fast ? *fast : vec2(points[i][0], points[i][1], at(path, i)));
-    }
-    return checked_polygon(std::move(p), path);
-}
-
-// The polygon in field "polygon" of obj (known to be there), or the plain reader's list of it.
-Polygon polygon_field(const json& obj, const std::optional<std::vector<PlainPoint>>* plain, const std::string& path) {
-    return plain && *plain ? polygon(**plain, path) : polygon(obj.at("polygon"), path);
+// A "polygon" field's value, or the plain reader's list of it when it took the list apart.
+Polygon polygon(const json& v, const std::optional<std::vector<PlainPoint>>* plain, const std::string& path) {
+    return plain && *plain ? checked_polygon(vec2_list(**plain, path), path) : polygon(v, path);
 }
 
 Body read_body(const json& b, const std::optional<std::vector<PlainPoint>>* plain_polygon, const std::string& path,
@@ -63,7 +53,7 @@ Body read_body(const json& b, const std::optional<std::vector<PlainPoint>>* plai
     } else {
         throw InputError(path, "missing field \"inertia\" (or \"radius_of_gyration\")");
     }
-    if (b.contains("polygon")) body.polygon = polygon_field(b, plain_polygon, path + ".polygon");
+    if (b.contains("polygon")) body.polygon = polygon(b.at("polygon"), plain_polygon, path + ".polygon");
     return body;
 }
 
@@ -90,15 +80,14 @@ Contact read_contact(const json& c, const std::string& path, InputWarnings* w) {
 Contact read_contact(const PlainContact& c, const std::string& path) {
     const Vec2 point = vec2(c.point[0], c.point[1], path + ".point");
     const Vec2 normal = nonzero(vec2(c.normal[0], c.normal[1], path + ".normal"), path + ".normal");
-    const json name = c.name ? json(*c.name) : json();
-    return read_contact(point, normal, c.mu ? &*c.mu : nullptr, c.mu_kinetic ? &*c.mu_kinetic : nullptr,
-                        c.name ? &name : nullptr, path);
+    const auto given = [](const std::optional<json>& v) { return v ? &*v : nullptr; };
+    return read_contact(point, normal, given(c.mu), given(c.mu_kinetic), given(c.name), path);
 }
 
 // read_scene, with the lists the plain reader took apart from `plain` (nullptr: none).
 Scene read_scene(const json& doc, const PlainScene* plain_scene, InputWarnings* w) {
-    const std::vector<PlainContact> none;
-    const std::vector<PlainContact>& plain = plain_scene ? plain_scene->contacts : none;
+    const std::span<const PlainContact> plain = plain_scene ? std::span<const PlainContact>(plain_scene->contacts)
+                                                            : std::span<const PlainContact>();
     if (!doc.is_object()) throw InputError("$", "expected a scene object with \"body\" and \"contacts\"");
     known_fields(doc, "$", {"body", "contacts", "obstacles", "contact_distance", "mu"}, w);
     Scene scene;
@@ -112,10 +101,9 @@ Scene read_scene(const json& doc, const PlainScene* plain_scene, InputWarnings* 
             const std::string p = at("$.obstacles", i);
             if (!obstacles[i].is_object()) throw InputError(p, "expected an object with \"polygon\"");
             known_fields(obstacles[i], p, {"polygon"}, w);
-            field(obstacles[i], p, "polygon");  // there, or an error
             const bool plain_polygon = plain_scene && i < plain_scene->obstacle_polygons.size();
-            scene.obstacles.push_back(
-                polygon_field(obstacles[i], plain_polygon ? &plain_scene->obstacle_polygons[i] : nullptr, p + ".polygon"));
+            scene.obstacles.push_back(polygon(field(obstacles[i], p, "polygon"),
+                                              plain_polygon ? &plain_scene->obstacle_polygons[i] : nullptr, p + ".polygon"));
         }
     }
     ContactFinding options;
