@@ -210,6 +210,23 @@ ExactVector ExactVector::from_exact(const Exact3& e) {
     return computed(e);
 }
 
+ExactVector ExactVector::wrench(const Vec2& p, const Vec2& d) {
+    Exact3 e = wrench_through(momentlab::exact(p), momentlab::exact(d));
+    if (e[2].fits_double()) return input(Vec3(d.x(), d.y(), e[2].to_double()));
+    // The value as computed() gives it; outside the readable range, computed() itself.
+    const Vec3 plain = to_double(e);
+    const double m = plain.cwiseAbs().maxCoeff();
+    if (!(plain.allFinite() && m > 0x1p-64 && m < 0x1p64)) return computed(std::move(e));
+    // (p.y, -p.x, 1) x (d.y, -d.x, 0) = (d.x, d.y, p.x d.y - p.y d.x): negations, products by
+    // 0 and 1, all exact.
+    ExactVector out;
+    out.kind_ = Kind::Cross;
+    out.u_ = Vec3(p.y(), -p.x(), 1.0);
+    out.v_ = Vec3(d.y(), -d.x(), 0.0);
+    out.value_ = readable(plain);
+    return out;
+}
+
 ExactVector ExactVector::computed(Exact3 e) {
     ExactVector out;
     out.kind_ = Kind::Computed;
@@ -234,7 +251,10 @@ Exact3 ExactVector::exact() const {
     switch (kind_) {
         case Kind::Input: return momentlab::exact(value_);
         case Kind::Cross: {
-            const Exact3 c = momentlab::cross(momentlab::exact(u_), momentlab::exact(v_));
+            // A wrench (wrench()): (a, b, 1) x (c, e, 0) = (-e, c, a e - b c), two products.
+            const Exact3 c = u_.z() == 1.0 && v_.z() == 0.0
+                                 ? Exact3{Dyadic(-v_.y()), Dyadic(v_.x()), Dyadic(u_.x()) * Dyadic(v_.y()) - Dyadic(u_.y()) * Dyadic(v_.x())}
+                                 : momentlab::cross(momentlab::exact(u_), momentlab::exact(v_));
             return sign_ > 0 ? c : -c;
         }
         case Kind::Computed: {

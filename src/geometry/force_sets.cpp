@@ -19,7 +19,7 @@ void require_nonzero(const Vec2& v, const char* what) {
 }  // namespace
 
 ExactVector force_wrench(const Vec2& point, const Vec2& direction) {
-    return ExactVector::from_exact(wrench_through(exact(point), exact(direction)));
+    return ExactVector::wrench(point, direction);
 }
 
 Exact2 friction_edge(const Exact2& n, double mu, bool left) {

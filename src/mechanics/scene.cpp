@@ -23,9 +23,9 @@ Contact Contact::make(const Vec2& point, const Vec2& normal, double mu,
     return c;
 }
 
-ExactVector Contact::normal_wrench() const { return ExactVector::from_exact(wrench_through(exact(point), exact(normal))); }
+ExactVector Contact::normal_wrench() const { return ExactVector::wrench(point, normal); }
 
-ExactVector Contact::tangent_wrench() const { return ExactVector::from_exact(wrench_through(exact(point), exact(tangent()))); }
+ExactVector Contact::tangent_wrench() const { return ExactVector::wrench(point, tangent()); }
 
 ExactMatrix inertia_at_origin(const Body& body) {
     const Dyadic m(body.mass), cx(body.com.x()), cy(body.com.y());

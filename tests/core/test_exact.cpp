@@ -139,6 +139,42 @@ TEST(ExactVector, PredicatesAgreeWithGmpOnHardCases) {
     EXPECT_GT(exact_stats().exact, 5000);
 }
 
+// ExactVector::wrench keeps a force's wrench as a cross product of two stored vectors: its exact
+// value, its predicates and its filter against the raw formula (d, p x d) in GMP, for points and
+// directions of every magnitude (integers, denormals, far exponents); its printed value is the
+// one from_exact gives the same vector.
+TEST(ExactVector, WrenchIsTheForcesWrenchExactly) {
+    testing::Random r(6);
+    int crosses = 0, inputs = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const int spread = i % 4 == 0 ? 1000 : 60;
+        const Vec2 p(random_double(r, spread, spread), random_double(r, spread, spread));
+        Vec2 d(random_double(r, spread, spread), random_double(r, spread, spread));
+        if (d.x() == 0.0 && d.y() == 0.0) d.x() = 1.0;
+        const ExactVector w = ExactVector::wrench(p, d);
+        const reference::QVec qw = to_q(w);
+        ASSERT_EQ(qw, reference::wrench(Q(p.x()), Q(p.y()), Q(d.x()), Q(d.y()))) << i;
+        const ExactVector same = ExactVector::from_exact(wrench_through(exact(p), exact(d)));
+        ASSERT_EQ(w.value(), same.value()) << i;
+        ASSERT_EQ(w.is_constructed(), same.is_constructed()) << i;
+        (w.is_constructed() ? crosses : inputs) += 1;
+        // Predicates with a second force through a nearby point and a third through the same.
+        const Vec2 p2(std::nextafter(p.x(), 1e300), p.y());
+        const Vec2 d2(random_double(r, 60, 60), 1.0), d3(1.0, random_double(r, 60, 60));
+        const ExactVector a = ExactVector::wrench(p2, d2), b = ExactVector::wrench(p, d3);
+        const reference::QVec qa = to_q(a), qb = to_q(b);
+        ASSERT_EQ(to_int(det_sign(w, a, b)), sgn(reference::det(qw, qa, qb))) << i;
+        ASSERT_EQ(to_int(dot_sign(w, a)), sgn(reference::dot(qw, qa))) << i;
+        ASSERT_EQ(to_int(minor_sign(w, b, 0, 2)), sgn(qw[0] * qb[2] - qw[2] * qb[0])) << i;
+        ASSERT_EQ(parallel(w, b), reference::is_zero(reference::cross(qw, qb))) << i;
+        const reference::QVec minus_w{-qw[0], -qw[1], -qw[2]};
+        ASSERT_EQ(to_q(w.negated()), minus_w);
+        ASSERT_EQ(to_q(ExactVector::cross(w, a)), reference::cross(qw, qa)) << i;
+    }
+    EXPECT_GT(crosses, 5000);
+    EXPECT_GT(inputs, 1000);
+}
+
 // The certified filter of QueryIndex: |v . w / 2^k - fl(approx . w)| <= bound max|w|.
 TEST(ExactVector, FilterBoundHolds) {
     testing::Random r(5);

@@ -373,7 +373,7 @@ TEST(ConeLaws, CutByHalfSpaceIsTheConeOfAllHalfSpaces) {
             // h along a facet of F (F itself): the cone of all half-spaces, given that facet twice,
             // may start its cycle at another facet; cddlib above decides.
             bool along_facet = false;
-            for (const ExactVector& g : f.facets()) along_facet = along_facet || parallel(g, ExactVector::input(h));
+            for (const ExactVector& facet : f.facets()) along_facet = along_facet || parallel(facet, ExactVector::input(h));
             through_facets += along_facet && took_cut;
             if (ConeBuilder::stats().dual_clip == clips && !along_facet) {  // (the clip may start the cycle elsewhere)
                 const std::string diff = identical(ours, general, true);

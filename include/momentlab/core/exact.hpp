@@ -71,6 +71,11 @@ public:
     static ExactVector cross(const ExactVector& u, const ExactVector& v, int sign = 1);
     /// The exact vector e (an input when every coordinate is a double).
     static ExactVector from_exact(const Exact3& e);
+    /// The wrench (d, p x d) of the force d acting through p: the same vector as
+    /// from_exact(wrench_through(exact(p), exact(d))), with the same value(), but kept as the
+    /// cross product (p.y, -p.x, 1) x (d.y, -d.x, 0) of two stored vectors, so it holds no
+    /// Dyadic numbers (a contact's normal and tangent wrenches, 10^5 of each in a big scene).
+    static ExactVector wrench(const Vec2& p, const Vec2& d);
 
     /// The rounded value, scaled by a power of two (or, for integers, divided by their gcd) to a
     /// readable magnitude: the same direction, always finite. Exact for inputs.
