@@ -294,6 +294,16 @@ ExactVector::Approximation ExactVector::approximation() const {
     return {};
 }
 
+bool ExactVector::same_construction(const ExactVector& other) const {
+    if (kind_ != other.kind_) return false;
+    switch (kind_) {
+        case Kind::Input: return value_ == other.value_ || value_ == -other.value_;
+        case Kind::Cross: return u_ == other.u_ && v_ == other.v_;
+        case Kind::Computed: return computed_ == other.computed_ && from_ == other.from_;
+    }
+    return false;
+}
+
 ExactVector::Filter ExactVector::filter() const {
     const Approximation a = approximation();
     if (!(a.err < kInf)) return {a.approx, kInf};
@@ -370,6 +380,7 @@ Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c) 
         ++g_stats.filtered;
         return s;
     }
+    if (a.same_construction(b) || b.same_construction(c) || a.same_construction(c)) return Sign::Zero;  // two parallel columns
     return exact_sign(det(a.exact(), b.exact(), c.exact()));
 }
 
@@ -380,6 +391,7 @@ Sign minor_sign(const ExactVector& a, const ExactVector& b, int i, int j) {
         ++g_stats.filtered;
         return s;
     }
+    if (a.same_construction(b)) return Sign::Zero;  // parallel
     const Exact3 x = a.exact(), y = b.exact();
     return exact_sign(x[static_cast<std::size_t>(i)] * y[static_cast<std::size_t>(j)] -
                       x[static_cast<std::size_t>(j)] * y[static_cast<std::size_t>(i)]);
@@ -395,6 +407,7 @@ bool parallel(const ExactVector& a, const ExactVector& b) {
             return false;
         }
     }
+    if (a.same_construction(b)) return true;
     ++g_stats.exact;
     return is_zero(cross(a.exact(), b.exact()));
 }

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "exact_scene.hpp"
 #include "momentlab/core/dyadic.hpp"
@@ -170,6 +171,17 @@ TEST(ExactVector, WrenchIsTheForcesWrenchExactly) {
         const reference::QVec minus_w{-qw[0], -qw[1], -qw[2]};
         ASSERT_EQ(to_q(w.negated()), minus_w);
         ASSERT_EQ(to_q(ExactVector::cross(w, a)), reference::cross(qw, qa)) << i;
+        // A vector against its copies and its negation (b shares w's point: the same first
+        // factor, another second one), for this kind and for a computed vector.
+        const ExactVector f = ExactVector::cross(w, a), f_copy = f, minus_f = f.negated();
+        const reference::QVec qf = to_q(f), minus_qf{-qf[0], -qf[1], -qf[2]};
+        for (const auto& [x, y, qx, qy] : {std::tuple{w, w.negated(), qw, minus_w}, std::tuple{f_copy, minus_f, qf, minus_qf},
+                                           std::tuple{w, b, qw, qb}, std::tuple{f, w, qf, qw}}) {
+            ASSERT_EQ(parallel(x, y), reference::is_zero(reference::cross(qx, qy))) << i;
+            ASSERT_EQ(to_int(det_sign(x, a, y)), sgn(reference::det(qx, qa, qy))) << i;
+            ASSERT_EQ(to_int(det_sign(y, x, a)), sgn(reference::det(qy, qx, qa))) << i;
+            ASSERT_EQ(to_int(minor_sign(x, y, 1, 2)), sgn(qx[1] * qy[2] - qx[2] * qy[1])) << i;
+        }
     }
     EXPECT_GT(crosses, 5000);
     EXPECT_GT(inputs, 1000);

@@ -104,6 +104,12 @@ public:
     };
     [[nodiscard]] Approximation approximation() const;
 
+    /// True when both store one construction (the same doubles, the same pair of factors or the
+    /// same shared Dyadic coordinates in the same places), so that they are equal or opposite:
+    /// the predicates' exact zeros for a vector and its copy (a contact's normal and A's facet
+    /// made from it) without Dyadic arithmetic. False says nothing.
+    [[nodiscard]] bool same_construction(const ExactVector& other) const;
+
     /// A rounded copy for a certified float filter of dot products (QueryIndex).
     struct Filter {
         Vec3 approx;   ///< the exact vector divided by a power of two, rounded
