@@ -168,27 +168,33 @@ private:
         std::vector<Sign> signs(closed_.size(), Sign::Zero);
         for (std::size_t t = 0; t < closed_.size(); ++t) {
             const ExactVector& tangent = tangents_[static_cast<std::size_t>(closed_[t])];
+            const Sign at_start = dot_sign(tangent, start_v);
+            const int position = static_cast<int>(t);
+            if (shape != Shape::Plane) {
+                // T_j vanishes on the face (u = 0) iff it does on both vectors that span it; u
+                // itself, a product in Dyadic numbers, is made only for a line that crosses.
+                const Sign at_finish = dot_sign(tangent, *finish_vector_);
+                if (at_start == Sign::Zero && at_finish == Sign::Zero) {
+                    ++vanishing;
+                    continue;
+                }
+                signs[t] = at_start != Sign::Zero ? at_start : at_finish;
+                const bool crosses = shape == Shape::Wedge ? at_start != Sign::Zero && at_finish == -at_start : at_start != Sign::Zero;
+                if (crosses) {
+                    const Q3 u = cross(e, tangent.exact());
+                    critical.push_back({at_start == Sign::Positive ? u : -u, position, 1});
+                }
+                continue;
+            }
             const Q3 u = cross(e, tangent.exact());
             if (is_zero(u)) {
                 ++vanishing;
                 continue;
             }
-            const Sign at_start = dot_sign(tangent, start_v);
-            if (shape != Shape::Plane) signs[t] = at_start != Sign::Zero ? at_start : dot_sign(tangent, *finish_vector_);
-            const int position = static_cast<int>(t);
-            if (shape == Shape::Wedge) {
-                const Sign at_finish = at_start == Sign::Zero ? signs[t] : dot_sign(tangent, *finish_vector_);
-                if (at_start == Sign::Positive && at_finish == Sign::Negative) critical.push_back({u, position, 1});
-                if (at_start == Sign::Negative && at_finish == Sign::Positive) critical.push_back({-u, position, 1});
-            } else if (shape == Shape::HalfPlane) {
-                if (at_start == Sign::Positive) critical.push_back({u, position, 1});
-                if (at_start == Sign::Negative) critical.push_back({-u, position, 1});
-            } else {
-                int half_u = at_start == Sign::Positive ? 1 : 3;
-                if (at_start == Sign::Zero) half_u = sign(dot(start, u)) > 0 ? 0 : 2;
-                critical.push_back({u, position, half_u});
-                critical.push_back({-u, position, (half_u + 2) % 4});
-            }
+            int half_u = at_start == Sign::Positive ? 1 : 3;
+            if (at_start == Sign::Zero) half_u = sign(dot(start, u)) > 0 ? 0 : 2;
+            critical.push_back({u, position, half_u});
+            critical.push_back({-u, position, (half_u + 2) % 4});
         }
         // Angular order counter-clockwise about e, from `start` (full turn for the plane).
         std::sort(critical.begin(), critical.end(), [&](const Critical& a, const Critical& b) {
