@@ -4,6 +4,8 @@
 // (unsigned __int128: GCC, Clang, and Clang for WebAssembly).
 #include "momentlab/core/dyadic.hpp"
 
+#include "power_of_two.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <cassert>
@@ -101,7 +103,7 @@ Dyadic::Dyadic(double x) : inline_{} {
     if (x == 0.0) return;
     int e = 0;
     const double f = std::frexp(std::fabs(x), &e);  // |x| = f 2^e, f in [0.5, 1)
-    inline_[0] = static_cast<Limb>(std::ldexp(f, 53));
+    inline_[0] = static_cast<Limb>(f * 0x1p53);
     size_ = 1;
     exponent_ = e - 53;
     sign_ = x > 0 ? 1 : -1;
@@ -299,7 +301,7 @@ double Dyadic::to_double_scaled(std::int64_t k) const {
     const std::int64_t bitlen = 64 * static_cast<std::int64_t>(size_) - lz;
     std::int64_t e = exponent_ + bitlen - 64 - k;
     e = std::clamp<std::int64_t>(e, -100000, 100000);
-    const double v = std::ldexp(static_cast<double>(t), static_cast<int>(e));
+    const double v = detail::times_power_of_two(static_cast<double>(t), e);
     return sign_ < 0 ? -v : v;
 }
 

@@ -11,6 +11,8 @@
 // products and 2x2 minors are bounded the same way.
 #include "momentlab/core/exact.hpp"
 
+#include "power_of_two.hpp"
+
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
@@ -32,7 +34,7 @@ Vec3 scaled_by_power_of_two(const Vec3& v) {
     if (m == 0.0 || !std::isfinite(m)) return v;
     int e = 0;
     std::frexp(m, &e);
-    return Vec3(std::ldexp(v.x(), 1 - e), std::ldexp(v.y(), 1 - e), std::ldexp(v.z(), 1 - e));
+    return Vec3(detail::times_power_of_two(v.x(), 1 - e), detail::times_power_of_two(v.y(), 1 - e), detail::times_power_of_two(v.z(), 1 - e));
 }
 
 // For display: integer vectors are divided by the gcd of their coordinates (exact), others are
@@ -104,8 +106,8 @@ ExactVector::Approximation input_approximation(const Vec3& v) {
     std::frexp(m, &e);
     ExactVector::Approximation out{Vec3::Zero(), 0.0};
     for (int i = 0; i < 3; ++i) {
-        out.approx[i] = std::ldexp(v[i], 1 - e);
-        if (std::ldexp(out.approx[i], e - 1) != v[i]) out.err = kUnderflow;  // a tiny coordinate lost bits
+        out.approx[i] = detail::times_power_of_two(v[i], 1 - e);
+        if (detail::times_power_of_two(out.approx[i], e - 1) != v[i]) out.err = kUnderflow;  // a tiny coordinate lost bits
     }
     return out;
 }
@@ -287,7 +289,7 @@ ExactVector::Approximation ExactVector::approximation() const {
             int e = 0;
             std::frexp(b, &e);
             const Vec3 raw = p.cross(q) * static_cast<double>(sign_);
-            return {Vec3(std::ldexp(raw.x(), 1 - e), std::ldexp(raw.y(), 1 - e), std::ldexp(raw.z(), 1 - e)), 0x1p-50};
+            return {Vec3(detail::times_power_of_two(raw.x(), 1 - e), detail::times_power_of_two(raw.y(), 1 - e), detail::times_power_of_two(raw.z(), 1 - e)), 0x1p-50};
         }
         case Kind::Computed: return {sign_ > 0 ? u_ : Vec3(-u_), v_.x()};
     }

@@ -6,11 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <tuple>
 
 #include "exact_scene.hpp"
 #include "momentlab/core/dyadic.hpp"
+#include "core/power_of_two.hpp"
 #include "momentlab/core/exact.hpp"
 #include "random_inputs.hpp"
 
@@ -99,6 +101,24 @@ TEST(Dyadic, LongProductsAndFarExponents) {
         copy = moved;  // reuse of a moved-from object
         ASSERT_EQ(to_q(copy), q);
     }
+}
+
+// The scalings of the approximations: x 2^k by one multiplication where 2^k is normal, bit for
+// bit what the C library's ldexp gives, for every kind of double (zero, integers, denormals,
+// far exponents) and every k from far below the denormals to past overflow.
+TEST(Dyadic, PowerOfTwoScalingIsLdexp) {
+    testing::Random r(7);
+    int subnormal = 0, infinite = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const double x = random_double(r, 1074, 1023);
+        const int k = r.integer(-2200, 2200);
+        const double ours = detail::times_power_of_two(x, k), libm = std::ldexp(x, k);
+        ASSERT_EQ(std::memcmp(&ours, &libm, sizeof ours), 0) << x << " * 2^" << k;
+        subnormal += libm != 0.0 && std::fabs(libm) < 0x1p-1022;
+        infinite += std::isinf(libm);
+    }
+    EXPECT_GT(subnormal, 100);
+    EXPECT_GT(infinite, 100);
 }
 
 // Exact vectors: the filtered predicates on constructions (contact wrenches, friction edges,
