@@ -75,7 +75,7 @@ public:
     [[nodiscard]] std::string to_string() const;
 
 private:
-    static constexpr std::uint32_t kInline = 4;
+    static constexpr std::uint32_t kInline = 6;  // limbs in the object (docs/robustness.md)
 
     [[nodiscard]] Limb* data() { return capacity_ > kInline ? heap_ : inline_; }
     [[nodiscard]] const Limb* data() const { return capacity_ > kInline ? heap_ : inline_; }
