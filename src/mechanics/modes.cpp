@@ -172,14 +172,17 @@ private:
             const int position = static_cast<int>(t);
             if (shape != Shape::Plane) {
                 // T_j vanishes on the face (u = 0) iff it does on both vectors that span it; u
-                // itself, a product in Dyadic numbers, is made only for a line that crosses.
-                const Sign at_finish = dot_sign(tangent, *finish_vector_);
+                // itself, a product in Dyadic numbers, is made only for a line that crosses. (A
+                // half-plane needs T_j at its ray only where T_j . start = 0.)
+                const Sign at_finish = shape == Shape::Wedge || at_start == Sign::Zero
+                                           ? dot_sign(tangent, *finish_vector_)
+                                           : Sign::Zero;
                 if (at_start == Sign::Zero && at_finish == Sign::Zero) {
                     ++vanishing;
                     continue;
                 }
                 signs[t] = at_start != Sign::Zero ? at_start : at_finish;
-                const bool crosses = shape == Shape::Wedge ? at_start != Sign::Zero && at_finish == -at_start : at_start != Sign::Zero;
+                const bool crosses = at_start != Sign::Zero && (shape == Shape::HalfPlane || at_finish == -at_start);
                 if (crosses) {
                     const Q3 u = cross(e, tangent.exact());
                     critical.push_back({at_start == Sign::Positive ? u : -u, position, 1});
