@@ -299,9 +299,7 @@ double Dyadic::to_double_scaled(std::int64_t k) const {
     Limb t = top << lz;
     if (lz != 0 && size_ >= 2) t |= p[size_ - 2] >> (64 - lz);
     const std::int64_t bitlen = 64 * static_cast<std::int64_t>(size_) - lz;
-    std::int64_t e = exponent_ + bitlen - 64 - k;
-    e = std::clamp<std::int64_t>(e, -100000, 100000);
-    const double v = detail::times_power_of_two(static_cast<double>(t), e);
+    const double v = detail::times_power_of_two(static_cast<double>(t), exponent_ + bitlen - 64 - k);
     return sign_ < 0 ? -v : v;
 }
 

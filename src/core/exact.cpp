@@ -28,13 +28,19 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 thread_local ExactStats g_stats;
 
+// v 2^k, coordinate by coordinate.
+Vec3 times_power_of_two(const Vec3& v, int k) {
+    return Vec3(detail::times_power_of_two(v.x(), k), detail::times_power_of_two(v.y(), k),
+                detail::times_power_of_two(v.z(), k));
+}
+
 // v scaled by a power of two so that its largest coordinate lies in [1, 2).
 Vec3 scaled_by_power_of_two(const Vec3& v) {
     const double m = v.cwiseAbs().maxCoeff();
     if (m == 0.0 || !std::isfinite(m)) return v;
     int e = 0;
     std::frexp(m, &e);
-    return Vec3(detail::times_power_of_two(v.x(), 1 - e), detail::times_power_of_two(v.y(), 1 - e), detail::times_power_of_two(v.z(), 1 - e));
+    return times_power_of_two(v, 1 - e);
 }
 
 // For display: integer vectors are divided by the gcd of their coordinates (exact), others are
@@ -254,9 +260,11 @@ Exact3 ExactVector::exact() const {
         case Kind::Input: return momentlab::exact(value_);
         case Kind::Cross: {
             // A wrench (wrench()): (a, b, 1) x (c, e, 0) = (-e, c, a e - b c), two products.
-            const Exact3 c = u_.z() == 1.0 && v_.z() == 0.0
-                                 ? Exact3{Dyadic(-v_.y()), Dyadic(v_.x()), Dyadic(u_.x()) * Dyadic(v_.y()) - Dyadic(u_.y()) * Dyadic(v_.x())}
-                                 : momentlab::cross(momentlab::exact(u_), momentlab::exact(v_));
+            const Exact3 c =
+                u_.z() == 1.0 && v_.z() == 0.0
+                    ? Exact3{Dyadic(-v_.y()), Dyadic(v_.x()),
+                             Dyadic(u_.x()) * Dyadic(v_.y()) - Dyadic(u_.y()) * Dyadic(v_.x())}
+                    : momentlab::cross(momentlab::exact(u_), momentlab::exact(v_));
             return sign_ > 0 ? c : -c;
         }
         case Kind::Computed: {
@@ -289,7 +297,7 @@ ExactVector::Approximation ExactVector::approximation() const {
             int e = 0;
             std::frexp(b, &e);
             const Vec3 raw = p.cross(q) * static_cast<double>(sign_);
-            return {Vec3(detail::times_power_of_two(raw.x(), 1 - e), detail::times_power_of_two(raw.y(), 1 - e), detail::times_power_of_two(raw.z(), 1 - e)), 0x1p-50};
+            return {times_power_of_two(raw, 1 - e), 0x1p-50};
         }
         case Kind::Computed: return {sign_ > 0 ? u_ : Vec3(-u_), v_.x()};
     }

@@ -17,6 +17,7 @@ namespace momentlab::detail {
         std::memcpy(&p, &bits, sizeof p);
         return x * p;
     }
+    // Far outside the range every result is 0 or infinite: clamped to fit ldexp's int.
     return std::ldexp(x, static_cast<int>(k < -100000 ? -100000 : (k > 100000 ? 100000 : k)));
 }
 

@@ -80,7 +80,6 @@ Vec2 vec2(const json& x, const json& y, const std::string& path) {
     return checked(Vec2(a, b), path);
 }
 
-
 Vec3 vec3(const json& v, const std::string& path) {
     if (!v.is_array() || v.size() != 3) throw InputError(path, "expected [a, b, c]");
     const double a = coordinate(v[0], path + "[0]");  // in order, as in vec2
