@@ -6,6 +6,8 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <span>
+#include <vector>
 
 #include "common.hpp"
 
@@ -95,13 +97,19 @@ constexpr double kAnalysedLetters = 1e8;
 // lines before a bad one have been answered). With --margin the scene is analysed first (the
 // margins need every mode's set). Otherwise the wrenches are answered by the walk, as --wrench
 // is (SceneQuestions), as long as walking for the questions left costs less than an analysis,
-// which then answers each for next to nothing. After each answer, the walk's work (cells
-// walked and generators tested) is weighed against an analysis on two threads (a cone per
-// mode, of about its closed contacts' generators, the modes shared out): for a file, the work
-// per answer so far times the questions left; for a pipe, whose length is unknown, the work so
-// far (rent or buy: at most about twice the better of the two). When the analysis wins, it is
-// made at the next wrench (if its letters stay under kAnalysedLetters) and answers the rest
-// from its index. The answers are the same either way.
+// which then answers each for next to nothing. After each walk, its work (cells walked and
+// generators tested) is weighed against an analysis on two threads (a cone per mode, of about
+// its closed contacts' generators, the modes shared out): for a file, the work per answer so far
+// times the questions left; for a pipe, whose length is unknown, the work so far (rent or buy: at
+// most about twice the better of the two). When the analysis wins, it is made at the next wrench
+// (if its letters stay under kAnalysedLetters) and answers the rest from its index. From a
+// regular file the first wrench is answered alone (it prices a walk) and the next ones in
+// batches of up to kBatch, each from one walk of the cells (SceneQuestions::answer of a span),
+// which the first answer's price overestimates; when the scene has so many modes that an
+// analysis is ruled out anyway (SceneQuestions::modes_at_least), the first batch starts at the
+// first wrench. From a pipe, one at a time as they come. The answers are the same either way.
+constexpr std::size_t kBatch = 256;
+
 void answer_file(const QueryOptions& o) {
     const Scene scene = read_scene_file(o.file);
     TerminalProgress progress;
@@ -123,47 +131,80 @@ void answer_file(const QueryOptions& o) {
     double walked = 0.0;  // cells walked and generators tested so far
     std::size_t walks = 0;
     const std::optional<std::size_t> questions = questions_in(o.wrenches);
+    // A scene whose modes' letters surely pass kAnalysedLetters is never analysed: no price is
+    // needed, and a file's wrenches go in batches from the first.
+    const bool never_analysed = walk && static_cast<double>(walk->modes_at_least()) *
+                                                static_cast<double>(scene.contacts.size()) > kAnalysedLetters;
+    std::size_t batch = questions && never_analysed ? kBatch : 1;
     bool analyse_next = false;
+    std::vector<nlohmann::json> asked;  // the wrenches of the batch, as read
+    std::vector<Vec3> pending;
+    const auto by_index = [&](const nlohmann::json& w, const Vec3& e) {
+        const QueryResult r = index->query(e);
+        nlohmann::json out = answer_json(p.analysis, r);
+        if (o.margin) out["margins"] = margins_json(p, r, e);
+        out["wrench"] = w;
+        std::cout << out.dump() << "\n";
+    };
+    const auto answer_pending = [&] {
+        if (pending.empty()) return;
+        std::size_t k = 0;
+        SceneAnswer a;  // the last; the scene's counts are the same in every answer
+        walk->answer(std::span<const Vec3>(pending), [&](SceneAnswer&& answer) {
+            nlohmann::json out = answer_json(answer);
+            out["wrench"] = asked[k++];
+            std::cout << out.dump() << "\n";
+            walked += static_cast<double>(answer.tested_generators);
+            a.mode_count = answer.mode_count;
+            a.closed_letters = answer.closed_letters;
+        });
+        walked += static_cast<double>(a.mode_count);
+        walks += pending.size();
+        pending.clear();
+        asked.clear();
+        if (questions) batch = kBatch;
+        const double analysis = static_cast<double>(a.mode_count + a.closed_letters) / 2.0;  // on two threads
+        const double to_walk = questions ? walked / static_cast<double>(walks) *
+                                               static_cast<double>(*questions > walks ? *questions - walks : 0)
+                                         : walked;
+        const double letters = static_cast<double>(a.mode_count) * static_cast<double>(scene.contacts.size());
+        analyse_next = to_walk >= analysis && letters <= kAnalysedLetters;
+    };
     LineReader in(o.wrenches, "--wrenches");
     std::string line;
     while (in.next(line)) {
         if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
         const std::string where = o.wrenches + ":" + std::to_string(in.number());
         nlohmann::json w;
+        Vec3 e;
         try {
-            w = nlohmann::json::parse(line);
-        } catch (const nlohmann::json::exception&) {  // malformed, or a number like 1e999
-            throw InputError(where, "expected [fx, fy, tau] of finite numbers");
+            try {
+                w = nlohmann::json::parse(line);
+            } catch (const nlohmann::json::exception&) {  // malformed, or a number like 1e999
+                throw InputError(where, "expected [fx, fy, tau] of finite numbers");
+            }
+            if (const std::optional<std::string> tiny = underflowing_number(line)) {
+                throw InputError(where, "\"" + printable(*tiny) + "\" is too small for a double: it would be taken as 0 "
+                                        "(expected 0 or a magnitude 1e-60 .. 1e60)");
+            }
+            if (!w.is_array() || w.size() != 3 || !w[0].is_number() || !w[1].is_number() || !w[2].is_number()) {
+                throw InputError(where, "expected [fx, fy, tau]");
+            }
+            e = checked_wrench(w[0].get<double>(), w[1].get<double>(), w[2].get<double>(), where);
+        } catch (const InputError&) {
+            answer_pending();  // the lines before the bad one are answered
+            throw;
         }
-        if (const std::optional<std::string> tiny = underflowing_number(line)) {
-            throw InputError(where, "\"" + printable(*tiny) + "\" is too small for a double: it would be taken as 0 "
-                                    "(expected 0 or a magnitude 1e-60 .. 1e60)");
-        }
-        if (!w.is_array() || w.size() != 3 || !w[0].is_number() || !w[1].is_number() || !w[2].is_number()) {
-            throw InputError(where, "expected [fx, fy, tau]");
-        }
-        const Vec3 e = checked_wrench(w[0].get<double>(), w[1].get<double>(), w[2].get<double>(), where);
         if (analyse_next && !index) analyse();
-        nlohmann::json out;
         if (index) {
-            const QueryResult r = index->query(e);
-            out = answer_json(p.analysis, r);
-            if (o.margin) out["margins"] = margins_json(p, r, e);
-        } else {
-            const SceneAnswer a = walk->answer(e);
-            out = answer_json(a);
-            walked += static_cast<double>(a.mode_count + a.tested_generators);
-            ++walks;
-            const double analysis = static_cast<double>(a.mode_count + a.closed_letters) / 2.0;  // on two threads
-            const double to_walk = questions ? walked / static_cast<double>(walks) *
-                                                   static_cast<double>(*questions > walks ? *questions - walks : 0)
-                                             : walked;
-            const double letters = static_cast<double>(a.mode_count) * static_cast<double>(scene.contacts.size());
-            analyse_next = to_walk >= analysis && letters <= kAnalysedLetters;
+            by_index(w, e);
+            continue;
         }
-        out["wrench"] = w;
-        std::cout << out.dump() << "\n";
+        asked.push_back(std::move(w));
+        pending.push_back(e);
+        if (pending.size() >= batch) answer_pending();
     }
+    answer_pending();
     progress.finish();
 }
 

@@ -7,6 +7,8 @@
 #include <atomic>
 #include <cassert>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -390,7 +392,7 @@ struct SceneQuestions::State {
     Progress progress;
     // After the first answer: the twists of the cells that join the all-f mode; from the second,
     // that mode's E (built once; every answer then tests e against it).
-    std::optional<std::vector<Exact3>> fixed_closure;
+    std::shared_ptr<const std::vector<Exact3>> fixed_closure;
     std::optional<Cone> fixed_cone;
 };
 
@@ -400,10 +402,24 @@ SceneQuestions::~SceneQuestions() = default;
 SceneQuestions::SceneQuestions(SceneQuestions&&) noexcept = default;
 SceneQuestions& SceneQuestions::operator=(SceneQuestions&&) noexcept = default;
 
-SceneAnswer SceneQuestions::answer(const Vec3& e) {
-    if (!e.allFinite()) throw std::invalid_argument("query_scene: the wrench must be finite");
+std::size_t SceneQuestions::modes_at_least() const { return state_->walk.modes_at_least(); }
+
+SceneAnswer SceneQuestions::answer(const Vec3& e) { return std::move(answer(std::span<const Vec3>(&e, 1)).front()); }
+
+std::vector<SceneAnswer> SceneQuestions::answer(std::span<const Vec3> wrenches) {
+    std::vector<SceneAnswer> answers;
+    answers.reserve(wrenches.size());
+    answer(wrenches, [&](SceneAnswer&& a) { answers.push_back(std::move(a)); });
+    return answers;
+}
+
+void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<void(SceneAnswer&&)>& take) {
+    for (const Vec3& e : wrenches) {
+        if (!e.allFinite()) throw std::invalid_argument("query_scene: the wrench must be finite");
+    }
     State& s = *state_;
     const std::size_t n = s.n;
+    const std::size_t q = wrenches.size();
     const detail::ModeWalk& walk = s.walk;
     const std::optional<ExactMatrix>& m = s.m;
     // The all-f mode (xi = 0 and the cells whose letters are all 'f') is decided apart, when its
@@ -411,61 +427,89 @@ SceneAnswer SceneQuestions::answer(const Vec3& e) {
     // fixed (2n generators): decided as one task, at the first answer first without the twists
     // of merged cells (a wrench in that smaller cone is in E whatever they are). The faces are
     // walked in two halves, each with its own certificates; the three tasks share two threads.
+    // Every wrench of the batch has its own deciders (their certificates are the wrench's) and
+    // sees every cell of the one walk.
     struct Member {
         std::size_t face, index;  // index within the face (0: the all-f mode)
         std::string letters;
-        std::vector<Exact3> closure;
+        std::shared_ptr<const std::vector<Exact3>> closure;  // one copy for the wrenches it holds
     };
     struct Half {
-        std::vector<Member> members;
+        std::vector<std::vector<Member>> members;  // per wrench
+        std::vector<std::size_t> built, tested;    // per wrench
         std::vector<Exact3> fixed_closure;
-        std::size_t built = 0, tested = 0, closed_letters = 0;
+        std::size_t closed_letters = 0;
     };
     std::array<Half, 2> halves;
     std::vector<std::size_t> counts(walk.faces());
     std::vector<int> everyone(n);
     std::iota(everyone.begin(), everyone.end(), 0);
     const std::vector<char> fixed(n, letter(ContactMode::Fixed));
-    Decider fixed_decider(walk.feasible_twists(), m, s.edges, e);
-    const auto fixed_member = [&](const std::vector<Exact3>& closure) {
+    std::vector<Decider> fixed_deciders;
+    fixed_deciders.reserve(q);
+    for (const Vec3& e : wrenches) fixed_deciders.emplace_back(walk.feasible_twists(), m, s.edges, e);
+    const auto fixed_member = [&](std::size_t k, const std::vector<Exact3>& closure) {
         detail::WalkCell cell;
         cell.closure = &closure;
         cell.closed = everyone;
         cell.letters = fixed;
-        return fixed_decider.member(cell);
+        return fixed_deciders[k].member(cell);
     };
-    bool fixed_holds = false;
+    std::vector<char> fixed_holds(q, 0);
+    std::optional<Cone> fixed_edges;  // a first batch's E of the all-f mode without the twists
     bool fixed_built = false;
     std::size_t fixed_tested = 0;
+    // The twists of the cells that join the all-f mode are the same at every answer: collected
+    // at the first only.
+    const bool closure_known = s.fixed_closure != nullptr;
     const std::thread::id caller = std::this_thread::get_id();
     detail::for_each_index(3, n >= kTwoThreadContacts, [&](std::size_t task) {
         if (task == 0) {
-            if (s.fixed_closure && n > 0) {  // a later answer: the mode's E, built once
+            if (closure_known && n > 0) {  // a later answer: the mode's E, built once
                 if (!s.fixed_cone) {
                     s.fixed_cone = fixed_applied(m, s.edges, *s.fixed_closure);
                     fixed_built = true;
                     fixed_tested = (m ? s.fixed_closure->size() : 0) + 2 * n;
                 }
-                fixed_holds = s.fixed_cone->has(e);
-            } else {
-                fixed_holds = fixed_member({});
+                for (std::size_t k = 0; k < q; ++k) fixed_holds[k] = s.fixed_cone->has(wrenches[k]);
+            } else if (q == 1 || n == 0) {
+                for (std::size_t k = 0; k < q; ++k) fixed_holds[k] = fixed_member(k, {});
+            } else {  // a first batch: the cone of the fixed edges alone, built once for all
+                fixed_edges.emplace(fixed_applied(m, s.edges, {}));
+                fixed_built = true;
+                fixed_tested = 2 * n;
+                for (std::size_t k = 0; k < q; ++k) fixed_holds[k] = fixed_edges->has(wrenches[k]);
             }
             return;
         }
         Half& half = halves[task - 1];
-        Decider decider(walk.feasible_twists(), m, s.edges, e);
+        std::vector<Decider> deciders;
+        deciders.reserve(q);
+        for (const Vec3& e : wrenches) deciders.emplace_back(walk.feasible_twists(), m, s.edges, e);
+        half.members.resize(q);
         const std::size_t begin = walk.faces() * (task - 1) / 2, end = walk.faces() * task / 2;
         const Progress progress = std::this_thread::get_id() == caller ? s.progress : Progress();
         walk.run_faces(begin, end, progress, counts, [&](const detail::WalkCell& cell) {
             if (cell.index == 0) {  // (its letters are counted once, as the all-f mode's)
-                half.fixed_closure.insert(half.fixed_closure.end(), cell.closure->begin(), cell.closure->end());
+                if (!closure_known) half.fixed_closure.insert(half.fixed_closure.end(), cell.closure->begin(), cell.closure->end());
                 return;
             }
             half.closed_letters += cell.closed.size();
-            if (decider.member(cell)) half.members.push_back({cell.face, cell.index, cell.all_letters(n), *cell.closure});
+            std::string letters;  // written once, for the first wrench the mode holds
+            std::shared_ptr<const std::vector<Exact3>> closure;
+            for (std::size_t k = 0; k < q; ++k) {
+                if (!deciders[k].member(cell)) continue;
+                if (!closure) {
+                    letters = cell.all_letters(n);
+                    closure = std::make_shared<const std::vector<Exact3>>(*cell.closure);
+                }
+                half.members[k].push_back({cell.face, cell.index, letters, closure});
+            }
         });
-        half.built = decider.built();
-        half.tested = decider.tested();
+        for (const Decider& decider : deciders) {
+            half.built.push_back(decider.built());
+            half.tested.push_back(decider.tested());
+        }
     });
     // Face i's modes come after those of the faces before it.
     std::vector<std::size_t> first_index(counts.size());
@@ -474,35 +518,61 @@ SceneAnswer SceneQuestions::answer(const Vec3& e) {
         first_index[i] = total;
         total += counts[i];
     }
-    SceneAnswer out;
-    out.mode_count = total;
-    std::vector<Exact3> fixed_closure = halves[0].fixed_closure;
-    fixed_closure.insert(fixed_closure.end(), halves[1].fixed_closure.begin(), halves[1].fixed_closure.end());
-    if (!s.fixed_closure) {
-        if (!fixed_holds && m && !fixed_closure.empty()) fixed_holds = fixed_member(fixed_closure);
-        s.fixed_closure = fixed_closure;
-    }
-    std::vector<Member> members;
-    if (fixed_holds) members.push_back({0, 0, std::string(n, letter(ContactMode::Fixed)), fixed_closure});
-    for (Half& half : halves) {
-        for (Member& member : half.members) {
-            member.index = first_index[member.face] + member.index - 1;
-            members.push_back(std::move(member));
+    if (!closure_known) {
+        std::vector<Exact3> fixed_closure = std::move(halves[0].fixed_closure);
+        fixed_closure.insert(fixed_closure.end(), halves[1].fixed_closure.begin(), halves[1].fixed_closure.end());
+        if (fixed_edges && (!m || fixed_closure.empty())) {
+            s.fixed_cone = std::move(fixed_edges);  // the whole E: no twist joins it
+        } else if (fixed_edges) {
+            const bool undecided = std::find(fixed_holds.begin(), fixed_holds.end(), 0) != fixed_holds.end();
+            if (undecided) {
+                s.fixed_cone = fixed_applied(m, s.edges, fixed_closure);
+                fixed_tested += fixed_closure.size() + 2 * n;
+                for (std::size_t k = 0; k < q; ++k) fixed_holds[k] = fixed_holds[k] || s.fixed_cone->has(wrenches[k]);
+            }
+        } else {
+            for (std::size_t k = 0; k < q; ++k) {
+                if (!fixed_holds[k] && m && !fixed_closure.empty()) fixed_holds[k] = fixed_member(k, fixed_closure);
+            }
         }
+        s.fixed_closure = std::make_shared<const std::vector<Exact3>>(std::move(fixed_closure));
     }
-    std::sort(members.begin(), members.end(), [](const Member& a, const Member& b) { return a.index < b.index; });
-    for (Member& member : members) {
-        std::vector<ExactVector> gens;
-        for (const Exact3& g : member.closure) gens.push_back(ExactVector::from_exact(g));
-        out.result.modes.push_back(member.index);
-        out.modes.push_back(Mode{std::move(member.letters), Cone::from_generators(gens)});
+    // A mode that several wrenches of the batch produce has its cone of twists built once (the
+    // copies share its exact coordinates).
+    std::map<std::size_t, Cone> twist_cones;
+    for (std::size_t k = 0; k < q; ++k) {
+        SceneAnswer out;
+        out.mode_count = total;
+        std::vector<Member> members;
+        if (fixed_holds[k]) members.push_back({0, 0, std::string(n, letter(ContactMode::Fixed)), s.fixed_closure});
+        for (Half& half : halves) {
+            for (Member& member : half.members[k]) {
+                member.index = first_index[member.face] + member.index - 1;
+                members.push_back(std::move(member));
+            }
+        }
+        std::sort(members.begin(), members.end(), [](const Member& a, const Member& b) { return a.index < b.index; });
+        for (Member& member : members) {
+            auto cone = twist_cones.find(member.index);
+            if (cone == twist_cones.end()) {
+                std::vector<ExactVector> gens;
+                gens.reserve(member.closure->size());
+                for (const Exact3& g : *member.closure) gens.push_back(ExactVector::from_exact(g));
+                cone = twist_cones.emplace(member.index, Cone::from_generators(gens)).first;
+            }
+            out.result.modes.push_back(member.index);
+            out.modes.push_back(Mode{std::move(member.letters), cone->second});
+        }
+        // The all-f mode's E counts once however many times its decider built it (and, built for
+        // the batch, with the batch's first answer).
+        const bool built_here = fixed_deciders[k].built() > 0 || (fixed_built && k == 0);
+        out.built = halves[0].built[k] + halves[1].built[k] + (built_here ? 1 : 0);
+        out.tested_generators = halves[0].tested[k] + halves[1].tested[k] + fixed_deciders[k].tested() +
+                                (k == 0 ? fixed_tested : 0);
+        out.closed_letters = n + halves[0].closed_letters + halves[1].closed_letters;
+        out.result.verdict = verdict_of(out.result.modes.size());
+        take(std::move(out));
     }
-    // The all-f mode's E counts once however many times its decider built it.
-    out.built = halves[0].built + halves[1].built + (fixed_decider.built() > 0 || fixed_built ? 1 : 0);
-    out.tested_generators = halves[0].tested + halves[1].tested + fixed_decider.tested() + fixed_tested;
-    out.closed_letters = n + halves[0].closed_letters + halves[1].closed_letters;
-    out.result.verdict = verdict_of(out.result.modes.size());
-    return out;
 }
 
 SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions& options) {

@@ -2,6 +2,7 @@
 // enumerate_modes writes out and query_scene decides, without a string of n letters per cell.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <span>
@@ -59,6 +60,12 @@ public:
     std::size_t run(const Progress& progress, const std::function<void(const WalkCell&)>& visit) const;
     /// The number of faces of A (the walk's units).
     [[nodiscard]] std::size_t faces() const { return faces_.size(); }
+    /// A lower bound on the number of modes, before any walk: the all-f mode, and one for each
+    /// 2-D face of A. Such a face holds a 2-D cell that is not all 'f': a contact closed on it
+    /// (N_j . xi = 0 on the face) slides on all of it but a line, as T_j is not a multiple of N_j.
+    [[nodiscard]] std::size_t modes_at_least() const {
+        return 1 + static_cast<std::size_t>(std::count_if(faces_.begin(), faces_.end(), [](const Face& f) { return f.dimension == 2; }));
+    }
     /// Walks faces begin .. end - 1 only, with each cell's index counted within its face (from 1;
     /// 0 still for the all-f cells); counts[i] becomes face i's number of modes. The modes of
     /// face i are numbered after those of the faces before it, so ranges walked apart (on two

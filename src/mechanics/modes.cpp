@@ -300,6 +300,8 @@ private:
 namespace detail {
 
 ModeWalk::ModeWalk(const std::vector<Contact>& contacts, Closed how) {
+    normals_.reserve(contacts.size());
+    tangents_.reserve(contacts.size());
     for (const Contact& c : contacts) {
         normals_.push_back(c.normal_wrench());
         tangents_.push_back(c.tangent_wrench());

@@ -603,14 +603,15 @@ TEST(Analysis, LargeScenesOnTwoThreadsAgreeWithExactLp) {
 }
 
 // One SceneQuestions asked many wrenches in a row (the first answer walks with no all-f cone, the
-// second builds it, the rest test against it; every answer reuses the walk): each answer, with
-// its indices, against the exact LP mode by mode. Exactly degenerate scenes (normals q - p),
+// second builds it, the rest test against it; every answer reuses the walk's set-up), then the same
+// wrenches in batches on fresh objects: each answer, with its indices, against the exact LP mode
+// by mode. Exactly degenerate scenes (normals q - p),
 // dynamic and quasi-static, 1-5 contacts and 24 (two threads); wrenches random, zero, on the
 // boundaries of the contacts' sets, and in the all-f mode's E (minus fixed generators of every
 // contact).
 TEST(Analysis, SceneQuestionsAnswersEveryWrenchOfASequenceAsTheExactLp) {
     testing::Random rnd(1913);
-    int questions = 0, members = 0, fixed_members = 0;
+    int questions = 0, members = 0, fixed_members = 0, batched = 0, bounded = 0;
     for (int s = 0; s < testing::sized(24); ++s) {
         const bool quasi_static = s % 3 == 2;
         const int n = s % 6 == 5 ? 24 : 1 + s % 5;
@@ -625,6 +626,16 @@ TEST(Analysis, SceneQuestionsAnswersEveryWrenchOfASequenceAsTheExactLp) {
         const ModeSet modes = enumerate_modes(scene.contacts);
         const testing::ExactContacts c(scene.contacts);
         SceneQuestions questions_of(scene, AnalysisOptions{quasi_static});
+        // The bound known before any answer, against the modes found by brute force with exact
+        // LPs (up to 3 contacts) and by the walk.
+        const std::size_t at_least = questions_of.modes_at_least();
+        EXPECT_LE(at_least, modes.modes.size()) << "scene " << s;
+        if (n <= 3) {
+            EXPECT_LE(at_least, testing::exact_modes(scene.contacts).size()) << "scene " << s;
+        }
+        bounded += at_least > 1;
+        std::vector<Vec3> asked;  // the questions, for the batches below
+        std::vector<std::vector<std::size_t>> answers;
         for (int w = 0; w < 8; ++w) {
             reference::QVec e = reference::q(rnd.vec3(10.0));
             if (w % 4 == 1) e = minus_contact_generators({0, 0, 0}, c, n, rnd, n > 8 ? 4 : 1);
@@ -658,10 +669,37 @@ TEST(Analysis, SceneQuestionsAnswersEveryWrenchOfASequenceAsTheExactLp) {
             EXPECT_EQ(a.result.verdict, verdict_of(expected.size()));
             members += static_cast<int>(expected.size());
             fixed_members += !expected.empty() && expected.front() == 0;
+            asked.push_back(ed);
+            answers.push_back(expected);
+        }
+        // The same questions in batches (one walk for several wrenches), on fresh objects: all at
+        // once (the all-f mode's E first without the twists, then with them) and, as the CLI
+        // asks a file, the first alone and the rest together.
+        if (asked.empty()) continue;
+        SceneQuestions all_at_once(scene, AnalysisOptions{quasi_static});
+        SceneQuestions first_then_rest(scene, AnalysisOptions{quasi_static});
+        const std::vector<SceneAnswer> together = all_at_once.answer(std::span<const Vec3>(asked));
+        std::vector<SceneAnswer> split = {first_then_rest.answer(asked.front())};
+        for (SceneAnswer& a : first_then_rest.answer(std::span<const Vec3>(asked).subspan(1))) split.push_back(std::move(a));
+        ASSERT_EQ(together.size(), asked.size());
+        ASSERT_EQ(split.size(), asked.size());
+        for (std::size_t k = 0; k < asked.size(); ++k) {
+            for (const SceneAnswer* a : std::array<const SceneAnswer*, 2>{&together[k], &split[k]}) {
+                EXPECT_EQ(a->result.modes, answers[k]) << "scene " << s << ", batch, wrench " << asked[k].transpose();
+                EXPECT_EQ(a->mode_count, modes.modes.size());
+                ASSERT_EQ(a->modes.size(), a->result.modes.size());
+                for (std::size_t i = 0; i < a->modes.size(); ++i) {
+                    EXPECT_EQ(a->modes[i].letters, modes.modes.at(a->result.modes[i]).letters);
+                }
+            }
+            ++batched;
         }
     }
     std::cout << "[Analysis] SceneQuestions: " << questions << " questions, " << members << " mode answers 'yes', "
-              << fixed_members << " with the all-f mode\n";
+              << fixed_members << " with the all-f mode; " << batched << " asked again in batches; "
+              << bounded << " scenes bounded above 1 mode before any answer\n";
+    EXPECT_EQ(batched, questions);
+    EXPECT_GE(bounded, testing::sized(24) / 2);  // the bound says more than the all-f mode
     EXPECT_GE(questions, testing::sized(24) * 6);
     EXPECT_GE(fixed_members, testing::sized(24) * 2);
 }

@@ -6,7 +6,9 @@
 /// docs/design.md, "Per-mode force sets"). For many questions about one analysis, QueryIndex
 /// (mechanics/query_index.hpp).
 
+#include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -101,8 +103,10 @@ struct SceneAnswer {
 /// Questions about one scene not analysed, asked one after another: each answer is
 /// query_scene's, but what does not depend on the wrench is done once: the cone of motions A, its
 /// faces and the contacts closed on each, the friction edges, and (built at the second answer) the
-/// all-f mode's E. Each answer still walks every cell, O(M + C + B k log k) in query_scene's terms,
-/// so for many questions about a scene small enough to analyse, analyze and QueryIndex answer
+/// all-f mode's E. Each call still walks every cell, O(M + C + B k log k) in query_scene's terms
+/// for one wrench (a batch of q wrenches walks once: the cells are made once and each wrench's
+/// certificates are checked at each cell, still O(q (M + C + B k log k)) but with less per
+/// wrench), so for many questions about a scene small enough to analyse, analyze and QueryIndex answer
 /// faster; this is for scenes whose analysis would be too big (every mode's letters). Keeps
 /// nothing of the scene. Not for two threads at once.
 class SceneQuestions {
@@ -115,6 +119,17 @@ public:
 
     /// query_scene(scene, e, options). Throws std::invalid_argument for a non-finite wrench.
     [[nodiscard]] SceneAnswer answer(const Vec3& e);
+    /// The answers to several wrenches, in their order, from one walk of the cells: each is what
+    /// answer(e) gives, and the walk itself (the cells and their letter changes) is paid once for
+    /// the batch; every wrench still has its own certificates and E's tested. Throws
+    /// std::invalid_argument, answering none, if any wrench is not finite.
+    [[nodiscard]] std::vector<SceneAnswer> answer(std::span<const Vec3> wrenches);
+    /// The same answers handed to `take` one by one, in order, as they are made: the batch's
+    /// answers need not all be held at once (a mode's cone of twists can be big).
+    void answer(std::span<const Vec3> wrenches, const std::function<void(SceneAnswer&&)>& take);
+    /// A lower bound on the scene's number of modes (SceneAnswer::mode_count), known before any
+    /// answer: 1 plus the 2-D faces of A, each of which holds a mode where a contact slides.
+    [[nodiscard]] std::size_t modes_at_least() const;
 
 private:
     struct State;
