@@ -103,6 +103,64 @@ TEST(Cli, QueryJsonAndJsonLines) {
     EXPECT_NE(stderr_text().find("momentlab_bad_wrenches.txt:1"), std::string::npos) << stderr_text();
 }
 
+// A scene with too many modes to analyse (a cradle of 12,000 contacts: more than 12,000 modes
+// of 12,000 letters, over the 10^8 letters `query --wrenches` would analyse): a file's wrenches
+// are answered in batches by one walk each. Every answer is the one `query --wrench` gives for
+// that wrench alone, in order; a bad line after five good ones still has the five answered
+// first, and exits 2 naming the line.
+TEST(Cli, WrenchFilesOnSceneTooBigToAnalyseAnswerAsOneByOne) {
+    std::ostringstream scene;
+    scene.precision(17);
+    scene << R"({"body": {"mass": 1, "com": [0, 0], "inertia": 0.5}, "contacts": [)";
+    const int n = 12000;
+    for (int j = 0; j < n; ++j) {
+        const double a = M_PI * (1.0 + (j + 0.5) / n), t = 0.2;
+        const double c = std::cos(a), s = std::sin(a);
+        scene << (j ? "," : "") << "{\"point\": [" << c << ", " << s << "], \"normal\": [" << -(c * std::cos(t) - s * std::sin(t))
+              << ", " << -(c * std::sin(t) + s * std::cos(t)) << "], \"mu\": 0.3}";
+    }
+    scene << "]}";
+    const std::string path = ::testing::TempDir() + "momentlab_cradle_12000.json";
+    std::ofstream(path) << scene.str();
+    const std::vector<std::string> wrenches = {"[0.1, 1, 0.2]", "[0.5, 2, 0.1]", "[2, 0.5, -0.4]", "[0.2, -1, 0.3]", "[0, 0, 1]"};
+    std::vector<nlohmann::json> alone;
+    for (const std::string& w : wrenches) {
+        const auto v = nlohmann::json::parse(w);
+        std::ostringstream args;
+        args << "query " << path << " --json --wrench " << v[0].get<double>() << " " << v[1].get<double>() << " "
+             << v[2].get<double>();
+        const Result r = run(args.str());
+        ASSERT_EQ(r.status, 0) << stderr_text();
+        nlohmann::json a = nlohmann::json::parse(r.out);
+        a["wrench"] = v;
+        alone.push_back(a);
+    }
+    int modes = 0;
+    for (const nlohmann::json& a : alone) modes += static_cast<int>(a["modes"].size());
+    EXPECT_GE(modes, 4);  // not every answer empty
+    const std::string file = ::testing::TempDir() + "momentlab_cradle_wrenches.txt";
+    for (const bool bad : {false, true}) {
+        {
+            std::ofstream out(file);
+            for (const std::string& w : wrenches) out << w << "\n\n";
+            if (bad) out << "[1, 2]\n[0, 0, 1]\n";
+        }
+        const Result r = run("query " + path + " --wrenches " + file);
+        EXPECT_EQ(r.status, bad ? 2 : 0) << stderr_text();
+        std::istringstream lines(r.out);
+        std::vector<nlohmann::json> answers;
+        for (std::string line; std::getline(lines, line);) answers.push_back(nlohmann::json::parse(line));
+        EXPECT_EQ(answers, alone) << (bad ? "with a bad line" : "");
+        if (bad) {
+            const std::string err = stderr_text();
+            EXPECT_NE(err.find("momentlab_cradle_wrenches.txt:11: expected [fx, fy, tau]"), std::string::npos) << err;
+            EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+        }
+    }
+    std::filesystem::remove(path);
+    std::filesystem::remove(file);
+}
+
 // A wrenches file of more than 1 MB: the command starts itself again with glibc's malloc
 // tunables (apps/momentlab/main.cpp), and --wrenches answers the first questions by the walk,
 // then from the analysis' index. Every one of the 60,000 answers is the block's known mode,
