@@ -374,9 +374,13 @@ Sign dot_sign(const ExactVector& a, const ExactVector& b) {
     return exact_sign(dot(a.exact(), b.exact()));
 }
 
-Sign dot_sign(const ExactVector& a, const Exact3& b) {
+Sign dot_sign(const ExactVector& a, const Exact3& b) { return dot_sign(a, b, exact_approximation(b)); }
+
+ExactVector::Approximation approximation(const Exact3& b) { return exact_approximation(b); }
+
+Sign dot_sign(const ExactVector& a, const Exact3& b, const ExactVector::Approximation& b_approximation) {
     Sign s = Sign::Zero;
-    if (dot_filter(a.approximation(), exact_approximation(b), s)) {
+    if (dot_filter(a.approximation(), b_approximation, s)) {
         ++g_stats.filtered;
         return s;
     }

@@ -169,6 +169,25 @@ Exact3 adjugate_times(const ExactMatrix& m, const Exact3& w) {
 //    holds e.
 // A cell no certificate decides has e tested against its E (cone_holds: its extreme rays, no
 // facets), which gives the next certificate.
+// A cell's twists rounded once (their certified approximations), for every plane and every
+// wrench of a batch that tests them: made at the first test in a cell, dropped at the next cell.
+class TwistFilters {
+public:
+    void next_cell() { ready_ = false; }
+    const std::vector<ExactVector::Approximation>& of(const std::vector<Exact3>& closure) {
+        if (!ready_) {
+            approximations_.clear();
+            for (const Exact3& g : closure) approximations_.push_back(approximation(g));
+            ready_ = true;
+        }
+        return approximations_;
+    }
+
+private:
+    bool ready_ = false;
+    std::vector<ExactVector::Approximation> approximations_;
+};
+
 class Decider {
 public:
     Decider(const Cone& a, const std::optional<ExactMatrix>& m, const FrictionEdges& edges, const Vec3& e)
@@ -177,8 +196,10 @@ public:
     [[nodiscard]] std::size_t built() const { return built_; }
     [[nodiscard]] std::size_t tested() const { return tested_; }
 
-    bool member(const detail::WalkCell& cell) {
+    // `filters`, if given, holds this cell's twists rounded (shared by the deciders of a batch).
+    bool member(const detail::WalkCell& cell, TwistFilters* filters = nullptr) {
         cell_ = &cell;
+        filters_ = filters;
         const bool answer = decide();
         last_face_ = cell.face;
         if (answer) current_valid_ = false;  // no plane holds a cone that holds e
@@ -206,8 +227,15 @@ private:
 
     bool holds_images(const Plane& p) const {
         if (!m_) return true;
-        return std::all_of(cell_->closure->begin(), cell_->closure->end(),
-                           [&](const Exact3& g) { return dot_sign(p.pulled, g) != Sign::Negative; });
+        const std::vector<Exact3>& closure = *cell_->closure;
+        if (!filters_) {
+            return std::all_of(closure.begin(), closure.end(), [&](const Exact3& g) { return dot_sign(p.pulled, g) != Sign::Negative; });
+        }
+        const std::vector<ExactVector::Approximation>& rounded = filters_->of(closure);
+        for (std::size_t i = 0; i < closure.size(); ++i) {
+            if (dot_sign(p.pulled, closure[i], rounded[i]) == Sign::Negative) return false;
+        }
+        return true;
     }
     // h holds the generators (-edge) that the contact at position t adds.
     bool holds_position(const ExactVector& h, std::size_t t) const {
@@ -339,6 +367,7 @@ private:
     Vec3 e_;
     ExactVector wrench_;
     const detail::WalkCell* cell_ = nullptr;
+    TwistFilters* filters_ = nullptr;
     std::optional<Plane> current_;
     bool current_valid_ = false;  // the current plane held every generator of the previous cell
     std::size_t last_face_ = static_cast<std::size_t>(-1);  // that cell's face
@@ -487,6 +516,7 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
         deciders.reserve(q);
         for (const Vec3& e : wrenches) deciders.emplace_back(walk.feasible_twists(), m, s.edges, e);
         half.members.resize(q);
+        TwistFilters filters;
         const std::size_t begin = walk.faces() * (task - 1) / 2, end = walk.faces() * task / 2;
         const Progress progress = std::this_thread::get_id() == caller ? s.progress : Progress();
         walk.run_faces(begin, end, progress, counts, [&](const detail::WalkCell& cell) {
@@ -495,10 +525,11 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
                 return;
             }
             half.closed_letters += cell.closed.size();
+            filters.next_cell();
             std::string letters;  // written once, for the first wrench the mode holds
             std::shared_ptr<const std::vector<Exact3>> closure;
             for (std::size_t k = 0; k < q; ++k) {
-                if (!deciders[k].member(cell)) continue;
+                if (!deciders[k].member(cell, &filters)) continue;
                 if (!closure) {
                     letters = cell.all_letters(n);
                     closure = std::make_shared<const std::vector<Exact3>>(*cell.closure);

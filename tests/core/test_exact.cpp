@@ -151,6 +151,8 @@ TEST(ExactVector, PredicatesAgreeWithGmpOnHardCases) {
         const ExactVector f = ExactVector::cross(a, b);  // a facet through two constructions
         ASSERT_EQ(to_int(f.dot_sign(c)), expected);
         ASSERT_EQ(to_int(dot_sign(f, w3)), expected);  // against c's Dyadic coordinates as they are
+        ASSERT_EQ(to_int(dot_sign(f, w3, approximation(w3))), expected);  // with their rounding kept
+        ASSERT_EQ(to_int(dot_sign(f, w2, approximation(w2))), sgn(reference::dot(reference::cross(qa, qb), qb)));
         ASSERT_EQ(to_int(dot_sign(f, ExactVector::cross(b, c))), sgn(reference::dot(reference::cross(qa, qb), reference::cross(qb, qc))));
         ASSERT_EQ(to_int(minor_sign(a, c, 0, 2)), sgn(qa[0] * qc[2] - qa[2] * qc[0]));
         ASSERT_EQ(parallel(a, c), reference::is_zero(reference::cross(qa, qc)));

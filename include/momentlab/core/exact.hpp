@@ -141,6 +141,11 @@ private:
 /// The exact sign of a . b for b given by its Dyadic coordinates (no ExactVector made of b: the
 /// filter rounds b on the spot).
 [[nodiscard]] Sign dot_sign(const ExactVector& a, const Exact3& b);
+/// The certified approximation of exact coordinates, as ExactVector::approximation() gives it
+/// for a vector made of them: kept beside b when b is tested many times.
+[[nodiscard]] ExactVector::Approximation approximation(const Exact3& b);
+/// dot_sign(a, b) with b's approximation(b) given, so that b is not rounded again.
+[[nodiscard]] Sign dot_sign(const ExactVector& a, const Exact3& b, const ExactVector::Approximation& b_approximation);
 /// The exact sign of det[a b c].
 [[nodiscard]] Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c);
 /// The exact sign of the minor a[i] b[j] - a[j] b[i].
