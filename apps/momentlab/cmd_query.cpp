@@ -172,12 +172,13 @@ void answer_file(const QueryOptions& o) {
     };
     LineReader in(o.wrenches, "--wrenches");
     std::string line;
-    while (in.next(line)) {
-        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        const std::string where = o.wrenches + ":" + std::to_string(in.number());
+    for (;;) {
         nlohmann::json w;
         Vec3 e;
-        try {
+        try {  // a bad line (or one too long to read) comes after the lines before it are answered
+            if (!in.next(line)) break;
+            if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+            const std::string where = o.wrenches + ":" + std::to_string(in.number());
             try {
                 w = nlohmann::json::parse(line);
             } catch (const nlohmann::json::exception&) {  // malformed, or a number like 1e999
@@ -192,7 +193,7 @@ void answer_file(const QueryOptions& o) {
             }
             e = checked_wrench(w[0].get<double>(), w[1].get<double>(), w[2].get<double>(), where);
         } catch (const InputError&) {
-            answer_pending();  // the lines before the bad one are answered
+            answer_pending();
             throw;
         }
         if (analyse_next && !index) analyse();

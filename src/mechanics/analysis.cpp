@@ -457,11 +457,17 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
     // of merged cells (a wrench in that smaller cone is in E whatever they are). The faces are
     // walked in two halves, each with its own certificates; the three tasks share two threads.
     // Every wrench of the batch has its own deciders (their certificates are the wrench's) and
-    // sees every cell of the one walk.
+    // sees every cell of the one walk. A mode that a wrench produces is kept as the walk gives it
+    // (its closed contacts and their letters, not n letters), once for all the wrenches that
+    // produce it: a batch holds its answers' letters only one answer at a time.
+    struct Kept {
+        std::vector<int> closed;
+        std::string letters;  // of the closed contacts
+        std::vector<Exact3> closure;
+    };
     struct Member {
-        std::size_t face, index;  // index within the face (0: the all-f mode)
-        std::string letters;
-        std::shared_ptr<const std::vector<Exact3>> closure;  // one copy for the wrenches it holds
+        std::size_t face, index;           // index within the face (0: the all-f mode)
+        std::shared_ptr<const Kept> mode;  // null for the all-f mode
     };
     struct Half {
         std::vector<std::vector<Member>> members;  // per wrench
@@ -526,15 +532,15 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
             }
             half.closed_letters += cell.closed.size();
             filters.next_cell();
-            std::string letters;  // written once, for the first wrench the mode holds
-            std::shared_ptr<const std::vector<Exact3>> closure;
+            std::shared_ptr<const Kept> kept;  // made for the first wrench the mode holds
             for (std::size_t k = 0; k < q; ++k) {
                 if (!deciders[k].member(cell, &filters)) continue;
-                if (!closure) {
-                    letters = cell.all_letters(n);
-                    closure = std::make_shared<const std::vector<Exact3>>(*cell.closure);
+                if (!kept) {
+                    kept = std::make_shared<const Kept>(Kept{{cell.closed.begin(), cell.closed.end()},
+                                                             {cell.letters.begin(), cell.letters.end()},
+                                                             *cell.closure});
                 }
-                half.members[k].push_back({cell.face, cell.index, letters, closure});
+                half.members[k].push_back({cell.face, cell.index, kept});
             }
         });
         for (const Decider& decider : deciders) {
@@ -568,31 +574,53 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
         }
         s.fixed_closure = std::make_shared<const std::vector<Exact3>>(std::move(fixed_closure));
     }
-    // A mode that several wrenches of the batch produce has its cone of twists built once (the
-    // copies share its exact coordinates).
+    // The modes' indices in enumerate_modes' order, and how many answers of the batch hold each:
+    // a mode's cone of twists is built once and kept only while a later answer still needs it
+    // (the copies share its exact coordinates).
+    std::map<std::size_t, std::size_t> uses;
+    for (std::size_t k = 0; k < q; ++k) uses[0] += fixed_holds[k] ? 1 : 0;
+    for (Half& half : halves) {
+        for (std::vector<Member>& list : half.members) {
+            for (Member& member : list) {
+                member.index = first_index[member.face] + member.index - 1;
+                ++uses[member.index];
+            }
+        }
+    }
     std::map<std::size_t, Cone> twist_cones;
+    const auto twists_of = [&](std::size_t index, const std::vector<Exact3>& closure) {
+        const std::size_t left = --uses[index];
+        const auto kept = twist_cones.find(index);
+        if (kept != twist_cones.end()) {
+            if (left > 0) return kept->second;
+            Cone cone = std::move(kept->second);
+            twist_cones.erase(kept);
+            return cone;
+        }
+        std::vector<ExactVector> gens;
+        gens.reserve(closure.size());
+        for (const Exact3& g : closure) gens.push_back(ExactVector::from_exact(g));
+        Cone cone = Cone::from_generators(gens);
+        if (left > 0) twist_cones.emplace(index, cone);
+        return cone;
+    };
     for (std::size_t k = 0; k < q; ++k) {
         SceneAnswer out;
         out.mode_count = total;
         std::vector<Member> members;
-        if (fixed_holds[k]) members.push_back({0, 0, std::string(n, letter(ContactMode::Fixed)), s.fixed_closure});
-        for (Half& half : halves) {
-            for (Member& member : half.members[k]) {
-                member.index = first_index[member.face] + member.index - 1;
-                members.push_back(std::move(member));
-            }
-        }
+        if (fixed_holds[k]) members.push_back({0, 0, nullptr});
+        for (Half& half : halves) members.insert(members.end(), half.members[k].begin(), half.members[k].end());
+        for (Half& half : halves) half.members[k] = {};
         std::sort(members.begin(), members.end(), [](const Member& a, const Member& b) { return a.index < b.index; });
-        for (Member& member : members) {
-            auto cone = twist_cones.find(member.index);
-            if (cone == twist_cones.end()) {
-                std::vector<ExactVector> gens;
-                gens.reserve(member.closure->size());
-                for (const Exact3& g : *member.closure) gens.push_back(ExactVector::from_exact(g));
-                cone = twist_cones.emplace(member.index, Cone::from_generators(gens)).first;
+        for (const Member& member : members) {
+            std::string letters(n, letter(member.mode ? ContactMode::Separating : ContactMode::Fixed));
+            if (member.mode) {
+                for (std::size_t t = 0; t < member.mode->closed.size(); ++t) {
+                    letters[static_cast<std::size_t>(member.mode->closed[t])] = member.mode->letters[t];
+                }
             }
             out.result.modes.push_back(member.index);
-            out.modes.push_back(Mode{std::move(member.letters), cone->second});
+            out.modes.push_back(Mode{std::move(letters), twists_of(member.index, member.mode ? member.mode->closure : *s.fixed_closure)});
         }
         // The all-f mode's E counts once however many times its decider built it (and, built for
         // the batch, with the batch's first answer).

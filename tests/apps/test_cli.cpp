@@ -106,8 +106,8 @@ TEST(Cli, QueryJsonAndJsonLines) {
 // A scene with too many modes to analyse (a cradle of 12,000 contacts: more than 12,000 modes
 // of 12,000 letters, over the 10^8 letters `query --wrenches` would analyse): a file's wrenches
 // are answered in batches by one walk each. Every answer is the one `query --wrench` gives for
-// that wrench alone, in order; a bad line after five good ones still has the five answered
-// first, and exits 2 naming the line.
+// that wrench alone, in order; a bad line, or one too long to read, after five good ones still
+// has the five answered first, and exits 2 naming the line.
 TEST(Cli, WrenchFilesOnSceneTooBigToAnalyseAnswerAsOneByOne) {
     std::ostringstream scene;
     scene.precision(17);
@@ -139,21 +139,24 @@ TEST(Cli, WrenchFilesOnSceneTooBigToAnalyseAnswerAsOneByOne) {
     for (const nlohmann::json& a : alone) modes += static_cast<int>(a["modes"].size());
     EXPECT_GE(modes, 4);  // not every answer empty
     const std::string file = ::testing::TempDir() + "momentlab_cradle_wrenches.txt";
-    for (const bool bad : {false, true}) {
+    // After the good lines: nothing, a wrench of two numbers, a line too long to read (2 MiB).
+    const std::string endings[] = {"", "[1, 2]\n[0, 0, 1]\n", "[" + std::string(2 << 20, ' ') + "0, 0, 1]\n"};
+    const std::string errors[] = {"", ":11: expected [fx, fy, tau]", ":11: a line longer than 1 MiB"};
+    for (int bad = 0; bad < 3; ++bad) {
         {
             std::ofstream out(file);
             for (const std::string& w : wrenches) out << w << "\n\n";
-            if (bad) out << "[1, 2]\n[0, 0, 1]\n";
+            out << endings[bad];
         }
         const Result r = run("query " + path + " --wrenches " + file);
         EXPECT_EQ(r.status, bad ? 2 : 0) << stderr_text();
         std::istringstream lines(r.out);
         std::vector<nlohmann::json> answers;
         for (std::string line; std::getline(lines, line);) answers.push_back(nlohmann::json::parse(line));
-        EXPECT_EQ(answers, alone) << (bad ? "with a bad line" : "");
+        EXPECT_EQ(answers, alone) << "ending " << bad;
         if (bad) {
             const std::string err = stderr_text();
-            EXPECT_NE(err.find("momentlab_cradle_wrenches.txt:11: expected [fx, fy, tau]"), std::string::npos) << err;
+            EXPECT_NE(err.find("momentlab_cradle_wrenches.txt" + errors[bad]), std::string::npos) << err;
             EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
         }
     }
