@@ -461,8 +461,9 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
     // (its closed contacts and their letters, not n letters), once for all the wrenches that
     // produce it: a batch holds its answers' letters only one answer at a time.
     struct Kept {
-        std::vector<int> closed;
-        std::string letters;  // of the closed contacts
+        bool whole;               // letters holds all n letters (no bigger than the closed ones)
+        std::vector<int> closed;  // else the closed contacts
+        std::string letters;      // and their letters
         std::vector<Exact3> closure;
     };
     struct Member {
@@ -535,8 +536,11 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
             std::shared_ptr<const Kept> kept;  // made for the first wrench the mode holds
             for (std::size_t k = 0; k < q; ++k) {
                 if (!deciders[k].member(cell, &filters)) continue;
-                if (!kept) {
-                    kept = std::make_shared<const Kept>(Kept{{cell.closed.begin(), cell.closed.end()},
+                if (!kept && cell.closed.size() * (sizeof(int) + 1) >= n) {  // (a face that closes most contacts)
+                    kept = std::make_shared<const Kept>(Kept{true, {}, cell.all_letters(n), *cell.closure});
+                } else if (!kept) {
+                    kept = std::make_shared<const Kept>(Kept{false,
+                                                             {cell.closed.begin(), cell.closed.end()},
                                                              {cell.letters.begin(), cell.letters.end()},
                                                              *cell.closure});
                 }
@@ -613,8 +617,13 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
         for (Half& half : halves) half.members[k] = {};
         std::sort(members.begin(), members.end(), [](const Member& a, const Member& b) { return a.index < b.index; });
         for (const Member& member : members) {
-            std::string letters(n, letter(member.mode ? ContactMode::Separating : ContactMode::Fixed));
-            if (member.mode) {
+            std::string letters;
+            if (!member.mode) {
+                letters.assign(n, letter(ContactMode::Fixed));
+            } else if (member.mode->whole) {
+                letters = member.mode->letters;
+            } else {
+                letters.assign(n, letter(ContactMode::Separating));
                 for (std::size_t t = 0; t < member.mode->closed.size(); ++t) {
                     letters[static_cast<std::size_t>(member.mode->closed[t])] = member.mode->letters[t];
                 }
