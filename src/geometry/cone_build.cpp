@@ -635,12 +635,18 @@ Parts build_by_dual_clip(std::span<const G> g, std::size_t i0, std::size_t i1, s
 // distance from d is convex there), up to rounding.
 template <class G>
 std::size_t farthest_from(std::span<const G> g, const Vec3& d) {
+    // By the chord |u/|u| - d/|d||, which grows with the angle as the cosine falls but keeps its
+    // precision for small angles: generators within 2^-27 rad of each other (the wrenches of a
+    // scene 2^40 long, all nearly along the torque axis) have cosines that round to 1 alike.
+    const double length = d.norm();
+    if (!(length > 0.0) || !std::isfinite(length)) return 0;
+    const Vec3 unit = d / length;
     std::size_t best = 0;
-    double best_cos = std::numeric_limits<double>::infinity();  // d need not be a unit vector
+    double best_chord = -1.0;
     for (std::size_t i = 0; i < g.size(); ++i) {
-        const double c = d.dot(approx(g[i])) / approx(g[i]).norm();
-        if (c < best_cos) {
-            best_cos = c;
+        const double chord = (approx(g[i]).normalized() - unit).squaredNorm();
+        if (chord > best_chord) {
+            best_chord = chord;
             best = i;
         }
     }

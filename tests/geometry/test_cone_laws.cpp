@@ -218,6 +218,34 @@ TEST(ConeLaws, ManyGeneratorsAgreeWithExactOracle) {
     EXPECT_GE(kinds["wedge x line"] + kinds["half-space"], testing::sized(20));
 }
 
+// Pointed cones all of whose generators lie within 2^-20 .. 2^-40 rad of one axis: the wrenches
+// of a scene far larger than 1 (a torque 2^40 times the force). The floating-point guess of an
+// extreme ray measures angles by chords, whose precision holds at small angles (cosines all
+// round to 1 there), so each cone is found from a pivot, never by the dual clip; and equals the
+// exact oracle's.
+TEST(ConeLaws, NarrowConesAreFoundFromAnExtremePivot) {
+    testing::Random rnd(2040);
+    int built = 0;
+    for (int i = 0; i < testing::sized(40); ++i) {
+        const double height = std::ldexp(1.0, rnd.integer(20, 40));
+        std::vector<Vec3> g;
+        const int n = rnd.integer(65, 140);
+        for (int j = 0; j < n; ++j) {
+            const double t = rnd.uniform(0, 6.283185307179586);
+            const double r = j % 3 == 0 ? rnd.uniform(0.1, 0.9) : 1.0;  // every third inside
+            g.emplace_back(r * std::cos(t), r * std::sin(t), height);
+        }
+        const long clips = ConeBuilder::stats().dual_clip;
+        const Cone f = Cone::from_generators(g);
+        EXPECT_EQ(ConeBuilder::stats().dual_clip, clips) << "cone " << i << ", height 2^" << std::ilogb(height);
+        const std::string why = testing::compare_with_oracle(f, oracle::from_generators(g));
+        EXPECT_TRUE(why.empty()) << why << " for cone " << i;
+        EXPECT_EQ(f.kind(), "pointed cone");
+        ++built;
+    }
+    EXPECT_EQ(built, testing::sized(40));
+}
+
 // cone_holds (no facets built for a pointed full-dimensional cone) against brute-force exact
 // membership (reference/cone_membership.hpp, Caratheodory over every subset) on the random and
 // degenerate families, with generators as stored doubles and as exact constructions u x v of
