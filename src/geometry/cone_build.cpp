@@ -635,13 +635,23 @@ Parts build_by_dual_clip(std::span<const G> g, std::size_t i0, std::size_t i1, s
 // distance from d is convex there), up to rounding.
 template <class G>
 std::size_t farthest_from(std::span<const G> g, const Vec3& d) {
-    // By the chord |u/|u| - d/|d||, which grows with the angle as the cosine falls but keeps its
-    // precision for small angles: generators within 2^-27 rad of each other (the wrenches of a
-    // scene 2^40 long, all nearly along the torque axis) have cosines that round to 1 alike.
-    const double length = d.norm();
-    if (!(length > 0.0) || !std::isfinite(length)) return 0;
-    const Vec3 unit = d / length;
     std::size_t best = 0;
+    double best_cos = std::numeric_limits<double>::infinity();  // d need not be a unit vector
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        const double c = d.dot(approx(g[i])) / approx(g[i]).norm();
+        if (c < best_cos) {
+            best_cos = c;
+            best = i;
+        }
+    }
+    // When every generator lies within about 2^-15 rad of d (the wrenches of a scene 2^40 long,
+    // all nearly along the torque axis), the cosines carry too few bits to tell the angles apart
+    // (below 2^-27 rad they all round to 1): compare the chords |u/|u| - d/|d|| instead, which
+    // keep their precision at small angles. Elsewhere the cosines decide, as they always have
+    // (the printed form of a cone can depend on its pivot).
+    const double length = d.norm();
+    if (!(best_cos > (1 - 0x1p-30) * length) || !std::isfinite(length)) return best;
+    const Vec3 unit = d / length;
     double best_chord = -1.0;
     for (std::size_t i = 0; i < g.size(); ++i) {
         const double chord = (approx(g[i]).normalized() - unit).squaredNorm();
