@@ -149,25 +149,25 @@ void answer_file(const QueryOptions& o) {
     const auto answer_pending = [&] {
         if (pending.empty()) return;
         std::size_t k = 0;
-        SceneAnswer a;  // the last; the scene's counts are the same in every answer
+        std::size_t modes = 0, closed_letters = 0;  // the scene's counts, the same in every answer
         walk->answer(std::span<const Vec3>(pending), [&](SceneAnswer&& answer) {
             nlohmann::json out = answer_json(answer);
             out["wrench"] = asked[k++];
             std::cout << out.dump() << "\n";
             walked += static_cast<double>(answer.tested_generators);
-            a.mode_count = answer.mode_count;
-            a.closed_letters = answer.closed_letters;
+            modes = answer.mode_count;
+            closed_letters = answer.closed_letters;
         });
-        walked += static_cast<double>(a.mode_count);
+        walked += static_cast<double>(modes);
         walks += pending.size();
         pending.clear();
         asked.clear();
         if (questions) batch = kBatch;
-        const double analysis = static_cast<double>(a.mode_count + a.closed_letters) / 2.0;  // on two threads
+        const double analysis = static_cast<double>(modes + closed_letters) / 2.0;  // on two threads
         const double to_walk = questions ? walked / static_cast<double>(walks) *
                                                static_cast<double>(*questions > walks ? *questions - walks : 0)
                                          : walked;
-        const double letters = static_cast<double>(a.mode_count) * static_cast<double>(scene.contacts.size());
+        const double letters = static_cast<double>(modes) * static_cast<double>(scene.contacts.size());
         analyse_next = to_walk >= analysis && letters <= kAnalysedLetters;
     };
     LineReader in(o.wrenches, "--wrenches");

@@ -160,15 +160,6 @@ Exact3 adjugate_times(const ExactMatrix& m, const Exact3& w) {
     return w[0] * cross(m[1], m[2]) + w[1] * cross(m[2], m[0]) + w[2] * cross(m[0], m[1]);
 }
 
-// Decides, cell after cell of the walk (mode_walk.hpp), whether e lies in the cell's
-// E = M cl(cell) + (-T), with certificates kept from the cells before:
-//  - the current plane h (h . e < 0) that held every generator of the previous cell's E: along
-//    a face's walk only the contacts whose letters changed, and the cell's twists, are checked;
-//  - up to eight earlier planes, checked against every generator (on faces of few contacts);
-//  - up to eight triplets of named generators whose cone holds e: a cell that has all three
-//    holds e.
-// A cell no certificate decides has e tested against its E (cone_holds: its extreme rays, no
-// facets), which gives the next certificate.
 // A cell's twists rounded once (their certified approximations), for every plane and every
 // wrench of a batch that tests them: made at the first test in a cell, dropped at the next cell.
 class TwistFilters {
@@ -188,6 +179,15 @@ private:
     std::vector<ExactVector::Approximation> approximations_;
 };
 
+// Decides, cell after cell of the walk (mode_walk.hpp), whether e lies in the cell's
+// E = M cl(cell) + (-T), with certificates kept from the cells before:
+//  - the current plane h (h . e < 0) that held every generator of the previous cell's E: along
+//    a face's walk only the contacts whose letters changed, and the cell's twists, are checked;
+//  - up to eight earlier planes, checked against every generator (on faces of few contacts);
+//  - up to eight triplets of named generators whose cone holds e: a cell that has all three
+//    holds e.
+// A cell no certificate decides has e tested against its E (cone_holds: its extreme rays, no
+// facets), which gives the next certificate.
 class Decider {
 public:
     Decider(const Cone& a, const std::optional<ExactMatrix>& m, const FrictionEdges& edges, const Vec3& e)
@@ -196,10 +196,10 @@ public:
     [[nodiscard]] std::size_t built() const { return built_; }
     [[nodiscard]] std::size_t tested() const { return tested_; }
 
-    // `filters`, if given, holds this cell's twists rounded (shared by the deciders of a batch).
-    bool member(const detail::WalkCell& cell, TwistFilters* filters = nullptr) {
+    // `filters` holds this cell's twists rounded (shared by the deciders of a batch).
+    bool member(const detail::WalkCell& cell, TwistFilters& filters) {
         cell_ = &cell;
-        filters_ = filters;
+        filters_ = &filters;
         const bool answer = decide();
         last_face_ = cell.face;
         if (answer) current_valid_ = false;  // no plane holds a cone that holds e
@@ -228,9 +228,6 @@ private:
     bool holds_images(const Plane& p) const {
         if (!m_) return true;
         const std::vector<Exact3>& closure = *cell_->closure;
-        if (!filters_) {
-            return std::all_of(closure.begin(), closure.end(), [&](const Exact3& g) { return dot_sign(p.pulled, g) != Sign::Negative; });
-        }
         const std::vector<ExactVector::Approximation>& rounded = filters_->of(closure);
         for (std::size_t i = 0; i < closure.size(); ++i) {
             if (dot_sign(p.pulled, closure[i], rounded[i]) == Sign::Negative) return false;
@@ -489,7 +486,8 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
         cell.closure = &closure;
         cell.closed = everyone;
         cell.letters = fixed;
-        return fixed_deciders[k].member(cell);
+        TwistFilters filters;
+        return fixed_deciders[k].member(cell, filters);
     };
     std::vector<char> fixed_holds(q, 0);
     std::optional<Cone> fixed_edges;  // a first batch's E of the all-f mode without the twists
@@ -535,7 +533,7 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
             filters.next_cell();
             std::shared_ptr<const Kept> kept;  // made for the first wrench the mode holds
             for (std::size_t k = 0; k < q; ++k) {
-                if (!deciders[k].member(cell, &filters)) continue;
+                if (!deciders[k].member(cell, filters)) continue;
                 if (!kept && cell.closed.size() * (sizeof(int) + 1) >= n) {  // (a face that closes most contacts)
                     kept = std::make_shared<const Kept>(Kept{true, {}, cell.all_letters(n), *cell.closure});
                 } else if (!kept) {
@@ -582,7 +580,9 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
     // a mode's cone of twists is built once and kept only while a later answer still needs it
     // (the copies share its exact coordinates).
     std::map<std::size_t, std::size_t> uses;
-    for (std::size_t k = 0; k < q; ++k) uses[0] += fixed_holds[k] ? 1 : 0;
+    for (std::size_t k = 0; k < q; ++k) {
+        if (fixed_holds[k]) ++uses[0];
+    }
     for (Half& half : halves) {
         for (std::vector<Member>& list : half.members) {
             for (Member& member : list) {
@@ -617,17 +617,9 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
         for (Half& half : halves) half.members[k] = {};
         std::sort(members.begin(), members.end(), [](const Member& a, const Member& b) { return a.index < b.index; });
         for (const Member& member : members) {
-            std::string letters;
-            if (!member.mode) {
-                letters.assign(n, letter(ContactMode::Fixed));
-            } else if (member.mode->whole) {
-                letters = member.mode->letters;
-            } else {
-                letters.assign(n, letter(ContactMode::Separating));
-                for (std::size_t t = 0; t < member.mode->closed.size(); ++t) {
-                    letters[static_cast<std::size_t>(member.mode->closed[t])] = member.mode->letters[t];
-                }
-            }
+            std::string letters = !member.mode        ? std::string(n, letter(ContactMode::Fixed))
+                                  : member.mode->whole ? member.mode->letters
+                                                       : detail::all_letters(member.mode->closed, member.mode->letters, n);
             out.result.modes.push_back(member.index);
             out.modes.push_back(Mode{std::move(letters), twists_of(member.index, member.mode ? member.mode->closure : *s.fixed_closure)});
         }

@@ -14,6 +14,14 @@
 
 namespace momentlab::detail {
 
+/// A mode's letters for all n contacts from its closed contacts (increasing) and their letters:
+/// 's' for every other contact.
+[[nodiscard]] inline std::string all_letters(std::span<const int> closed, std::span<const char> letters, std::size_t n) {
+    std::string s(n, letter(ContactMode::Separating));
+    for (std::size_t t = 0; t < closed.size(); ++t) s[static_cast<std::size_t>(closed[t])] = letters[t];
+    return s;
+}
+
 /// One cell of the arrangement inside a face of A = {xi : N_j . xi >= 0}.
 struct WalkCell {
     /// The mode's index in enumerate_modes' order; 0 for a cell whose letters are all 'f' (it
@@ -34,11 +42,7 @@ struct WalkCell {
     bool first = true;
 
     /// The mode's letters for all n contacts ('s' for those not closed).
-    [[nodiscard]] std::string all_letters(std::size_t n) const {
-        std::string s(n, letter(ContactMode::Separating));
-        for (std::size_t t = 0; t < closed.size(); ++t) s[static_cast<std::size_t>(closed[t])] = letters[t];
-        return s;
-    }
+    [[nodiscard]] std::string all_letters(std::size_t n) const { return detail::all_letters(closed, letters, n); }
 };
 
 /// Walks the faces of A in the order of A.faces() and, inside each, its cells: a 2-D face in
