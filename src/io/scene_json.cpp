@@ -153,7 +153,8 @@ Scene read_scene(const json& doc, const PlainScene* plain_scene, InputWarnings* 
             options.mu_kinetic = options.mu;
         }
         try {
-            scene.contacts = find_contacts(scene.body->polygon, scene.obstacles, options);
+            // The outlines were found simple as they were read (checked_polygon).
+            scene.contacts = detail::find_contacts_of_simple(scene.body->polygon, scene.obstacles, options);
         } catch (const std::invalid_argument& e) {
             throw InputError("$", e.what());
         }

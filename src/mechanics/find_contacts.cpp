@@ -66,7 +66,6 @@ void vertex_on_edge(const Polygon& touching, const Polygon& touched, bool body_i
 
 std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygon>& obstacles,
                                    const ContactFinding& options) {
-    if (!(options.distance >= 0.0)) throw std::invalid_argument("find_contacts: distance must be >= 0");
     for (std::size_t i = 0; i <= obstacles.size(); ++i) {
         const Polygon& p = i == 0 ? body : obstacles[i - 1];
         const std::string problem = polygon_problem(p);
@@ -74,6 +73,12 @@ std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygo
             throw std::invalid_argument("find_contacts: " + (i == 0 ? std::string("the body polygon: ") : "obstacle " + std::to_string(i - 1) + ": ") + problem);
         }
     }
+    return detail::find_contacts_of_simple(body, obstacles, options);
+}
+
+std::vector<Contact> detail::find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
+                                                     const ContactFinding& options) {
+    if (!(options.distance >= 0.0)) throw std::invalid_argument("find_contacts: distance must be >= 0");
     const Polygon b = counter_clockwise(body);
     std::vector<Contact> found;
     for (const Polygon& raw : obstacles) {

@@ -1,5 +1,6 @@
 // polygon_problem against a brute-force oracle in integer arithmetic on small grids, where
 // degeneracies (collinear, touching, repeated vertices) are the rule.
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <array>
@@ -112,6 +113,51 @@ TEST(Polygon, StarPolygonsAgreeWithTheOracle) {
     std::cout << "[Polygon] stars: " << simple_count << " simple, " << problem_count << " not\n";
     EXPECT_GE(simple_count, 300);
     EXPECT_GE(problem_count, 300);
+}
+
+// orient2d against GMP rationals from the raw doubles: random points at scales 2^-1074..2^1000,
+// nearly collinear ones (a rounded point of the line ab, nudged by one unit in the last place),
+// exactly collinear ones on grids and along axis-parallel lines, and differences that round.
+TEST(Polygon, Orient2dIsExactAtEveryMagnitude) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_int_distribution<int> exponent(-1074, 1000);
+    auto oracle = [](const Vec2& a, const Vec2& b, const Vec2& c) {
+        const mpq_class d = (mpq_class(b.x()) - a.x()) * (mpq_class(c.y()) - a.y()) -
+                            (mpq_class(b.y()) - a.y()) * (mpq_class(c.x()) - a.x());
+        return sgn(d);
+    };
+    int zeros = 0, nonzero = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const int k = exponent(rng) % (i % 4 == 0 ? 1075 : 60);
+        const double s = std::ldexp(1.0, k);
+        Vec2 a(unit(rng) * s, unit(rng) * s), b(unit(rng) * s, unit(rng) * s), c;
+        switch (i % 6) {
+            case 0: c = Vec2(unit(rng) * s, unit(rng) * s); break;
+            case 1: c = a + unit(rng) * (b - a); break;  // on the line, rounded
+            case 2: {
+                c = a + unit(rng) * (b - a);
+                c.x() = std::nextafter(c.x(), (rng() & 1) ? 1e308 : -1e308);
+                break;
+            }
+            case 3: {  // a grid of step s: exact differences, collinear one time in a few
+                auto g = [&] { return std::ldexp(static_cast<double>(static_cast<int>(rng() % 5)), k); };
+                a = Vec2(g(), g()), b = Vec2(g(), g()), c = Vec2(g(), g());
+                break;
+            }
+            case 4: c = Vec2(unit(rng) * s, a.y()), b.y() = a.y(); break;  // along y = a.y
+            default: c = 2.0 * b - a; break;                               // often exactly collinear
+        }
+        if (!c.allFinite()) continue;
+        const int expected = oracle(a, b, c);
+        (expected == 0 ? zeros : nonzero)++;
+        ASSERT_EQ(to_int(orient2d(a, b, c)), expected) << i << " " << a.transpose() << " | " << b.transpose() << " | " << c.transpose();
+        ASSERT_EQ(to_int(orient2d(b, c, a)), expected) << i;
+        ASSERT_EQ(to_int(orient2d(b, a, c)), -expected) << i;
+    }
+    std::cout << "[Polygon] orient2d: " << zeros << " collinear, " << nonzero << " not\n";
+    EXPECT_GT(zeros, 20000);
+    EXPECT_GT(nonzero, 100000);
 }
 
 TEST(Polygon, NamesTheProblem) {

@@ -38,4 +38,11 @@ struct ContactFinding {
 [[nodiscard]] std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygon>& obstacles,
                                                  const ContactFinding& options = {});
 
+namespace detail {
+/// find_contacts for polygons the caller has already found simple (polygon_problem gave ""):
+/// reading a scene checks each outline as it reads it, and sweeps it only once.
+[[nodiscard]] std::vector<Contact> find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
+                                                           const ContactFinding& options);
+}  // namespace detail
+
 }  // namespace momentlab
