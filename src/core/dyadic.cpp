@@ -101,13 +101,17 @@ Limb* Dyadic::reserve(std::uint32_t n) {
 Dyadic::Dyadic(double x) : inline_{} {
     assert(std::isfinite(x));
     if (x == 0.0) return;
-    int e = 0;
-    const double f = std::frexp(std::fabs(x), &e);  // |x| = f 2^e, f in [0.5, 1)
-    inline_[0] = static_cast<Limb>(f * 0x1p53);
+    // From the bits: |x| = (2^52 + fraction) 2^(biased - 1075), or fraction 2^-1074 for a
+    // denormal (biased exponent 0).
+    const auto bits = std::bit_cast<std::uint64_t>(x);
+    const auto biased = static_cast<std::int64_t>((bits >> 52) & 0x7FF);
+    Limb m = bits & ((Limb{1} << 52) - 1);
+    if (biased != 0) m |= Limb{1} << 52;
+    const int tz = std::countr_zero(m);
+    inline_[0] = m >> tz;
     size_ = 1;
-    exponent_ = e - 53;
+    exponent_ = (biased != 0 ? biased - 1075 : -1074) + tz;
     sign_ = x > 0 ? 1 : -1;
-    normalize();
 }
 
 Dyadic Dyadic::from_integer(std::int64_t v) {
@@ -201,6 +205,18 @@ Dyadic Dyadic::operator-() const {
     return d;
 }
 
+namespace {
+
+// The magnitude of at most two limbs as one wide integer.
+Wide wide_of(const Limb* p, std::uint32_t n) { return n == 1 ? Wide{p[0]} : (Wide{p[1]} << 64) | p[0]; }
+
+// The number of bits of a magnitude of n limbs (its top limb non-zero).
+std::uint64_t bit_length(const Limb* p, std::uint32_t n) {
+    return 64 * static_cast<std::uint64_t>(n) - static_cast<std::uint64_t>(std::countl_zero(p[n - 1]));
+}
+
+}  // namespace
+
 // a + b, or a - b when `subtract`.
 Dyadic add_magnitudes(const Dyadic& a, const Dyadic& b, bool subtract) {
     const int sb = subtract ? -b.sign_ : b.sign_;
@@ -209,6 +225,33 @@ Dyadic add_magnitudes(const Dyadic& a, const Dyadic& b, bool subtract) {
     // Align both to the smaller exponent: the other is shifted left.
     const std::int64_t e = std::min(a.exponent_, b.exponent_);
     const auto sa = static_cast<std::uint64_t>(a.exponent_ - e), sbits = static_cast<std::uint64_t>(b.exponent_ - e);
+    // Both aligned magnitudes below 2^127 (the sums of products of a few doubles with nearby
+    // exponents): one wide addition, no scratch limbs. The exponent gap is tested first, so
+    // the shifts stay below 127 bits.
+    if (a.size_ <= 2 && b.size_ <= 2 && sa < 127 && sbits < 127 && bit_length(a.data(), a.size_) + sa <= 127 &&
+        bit_length(b.data(), b.size_) + sbits <= 127) {
+        const Wide x = wide_of(a.data(), a.size_) << sa, y = wide_of(b.data(), b.size_) << sbits;
+        Wide m = 0;
+        int sign = a.sign_;
+        if (a.sign_ == sb) {
+            m = x + y;
+        } else if (x != y) {
+            m = x > y ? x - y : y - x;
+            sign = x > y ? a.sign_ : sb;
+        } else {
+            return Dyadic();
+        }
+        const auto lo = static_cast<Limb>(m);
+        const int tz = lo != 0 ? std::countr_zero(lo) : 64 + std::countr_zero(static_cast<Limb>(m >> 64));
+        m >>= tz;
+        Dyadic r;
+        r.inline_[0] = static_cast<Limb>(m);
+        r.inline_[1] = static_cast<Limb>(m >> 64);
+        r.size_ = r.inline_[1] != 0 ? 2 : 1;
+        r.exponent_ = e + tz;
+        r.sign_ = sign;
+        return r;
+    }
     const std::size_t na = a.size_ + static_cast<std::size_t>(sa / 64) + 1;
     const std::size_t nb = b.size_ + static_cast<std::size_t>(sbits / 64) + 1;
     Scratch x(na), y(nb);
@@ -247,6 +290,15 @@ Dyadic operator-(const Dyadic& a, const Dyadic& b) { return add_magnitudes(a, b,
 Dyadic operator*(const Dyadic& a, const Dyadic& b) {
     Dyadic r;
     if (a.size_ == 0 || b.size_ == 0) return r;
+    if (a.size_ == 1 && b.size_ == 1) {  // two doubles' magnitudes, say: one wide product, odd
+        const Wide t = static_cast<Wide>(a.data()[0]) * b.data()[0];
+        r.inline_[0] = static_cast<Limb>(t);
+        r.inline_[1] = static_cast<Limb>(t >> 64);
+        r.size_ = r.inline_[1] != 0 ? 2 : 1;
+        r.sign_ = a.sign_ * b.sign_;
+        r.exponent_ = a.exponent_ + b.exponent_;
+        return r;
+    }
     const std::uint32_t n = a.size_ + b.size_;
     Limb* p = r.reserve(n);
     std::fill(p, p + n, Limb{0});

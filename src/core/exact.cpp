@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <bit>
 #include <numeric>
 
 namespace momentlab {
@@ -28,6 +29,17 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 thread_local ExactStats g_stats;
 
+// e with m = f 2^e, f in [0.5, 1), for finite m > 0: what std::frexp gives, read from the bits
+// of a normal number (std::frexp is a library call, and the approximations call it for every
+// exact sign).
+int binary_exponent(double m) {
+    const auto biased = static_cast<int>((std::bit_cast<std::uint64_t>(m) >> 52) & 0x7FF);
+    if (biased != 0) return biased - 1022;
+    int e = 0;
+    std::frexp(m, &e);  // a denormal
+    return e;
+}
+
 // v 2^k, coordinate by coordinate.
 Vec3 times_power_of_two(const Vec3& v, int k) {
     return Vec3(detail::times_power_of_two(v.x(), k), detail::times_power_of_two(v.y(), k),
@@ -38,9 +50,7 @@ Vec3 times_power_of_two(const Vec3& v, int k) {
 Vec3 scaled_by_power_of_two(const Vec3& v) {
     const double m = v.cwiseAbs().maxCoeff();
     if (m == 0.0 || !std::isfinite(m)) return v;
-    int e = 0;
-    std::frexp(m, &e);
-    return times_power_of_two(v, 1 - e);
+    return times_power_of_two(v, 1 - binary_exponent(m));
 }
 
 // For display: integer vectors are divided by the gcd of their coordinates (exact), others are
@@ -108,8 +118,7 @@ bool minor_filter(const ExactVector::Approximation& pa, const ExactVector::Appro
 ExactVector::Approximation input_approximation(const Vec3& v) {
     const double m = v.cwiseAbs().maxCoeff();
     if (m == 0.0) return {Vec3::Zero(), 0.0};
-    int e = 0;
-    std::frexp(m, &e);
+    const int e = binary_exponent(m);
     ExactVector::Approximation out{Vec3::Zero(), 0.0};
     for (int i = 0; i < 3; ++i) {
         out.approx[i] = detail::times_power_of_two(v[i], 1 - e);
@@ -294,8 +303,7 @@ ExactVector::Approximation ExactVector::approximation() const {
             const double b2 = std::fabs(p.x() * q.y()) + std::fabs(p.y() * q.x());
             const double b = std::max({b0, b1, b2});
             if (!(b >= 0x1p-900 && b <= 0x1p900)) return {Vec3::Zero(), kInf};
-            int e = 0;
-            std::frexp(b, &e);
+            const int e = binary_exponent(b);
             const Vec3 raw = p.cross(q) * static_cast<double>(sign_);
             return {times_power_of_two(raw, 1 - e), 0x1p-50};
         }

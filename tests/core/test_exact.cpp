@@ -82,6 +82,53 @@ TEST(Dyadic, RingOperationsAgreeWithGmp) {
     }
 }
 
+// Operands of one or two limbs whose exponents lie close together (the sums of products of
+// doubles near one scale, which take the wide-integer paths), with full 53-bit mantissas and
+// exponent gaps chosen to reach the 127-bit limit of those paths and to pass it.
+TEST(Dyadic, NearbyExponentsAgreeWithGmp) {
+    testing::Random r(4);
+    auto full = [&](int lo, int hi) {  // a random 53-bit mantissa at a random exponent
+        const double m = 0x1p52 + std::floor(r.uniform(0, 1) * 0x1p52);
+        return (r.integer(0, 1) ? 1.0 : -1.0) * std::ldexp(m, r.integer(lo, hi));
+    };
+    int wide_sums = 0;
+    for (int i = 0; i < 50000; ++i) {
+        const int gap = i % 4 == 0 ? r.integer(0, 140) : r.integer(0, 12);
+        const double a = full(-3, 3), b = full(-3, 3), c = full(-3 - gap, 3 - gap), d = full(-3, 3);
+        const Dyadic da(a), db(b), dc(c), dd(d);
+        const Q qa(a), qb(b), qc(c), qd(d);
+        const Dyadic ab = da * db, cd = dc * dd;  // two limbs each
+        ASSERT_EQ(to_q(ab), qa * qb);
+        ASSERT_EQ(to_q(ab - cd), qa * qb - qc * qd) << a << " " << b << " " << c << " " << d;
+        ASSERT_EQ(to_q(ab + cd), qa * qb + qc * qd);
+        ASSERT_EQ(to_q(da + dc), qa + qc);
+        ASSERT_EQ(to_q(da - dc), qa - qc);
+        ASSERT_TRUE((ab - db * da).is_zero());
+        // Three and more limbs: the general paths, and back.
+        const Dyadic e = (ab - cd) * (da + dc) - ab * da;
+        ASSERT_EQ(to_q(e), (qa * qb - qc * qd) * (qa + qc) - qa * qb * qa);
+        ASSERT_EQ(to_q(e + ab * dc), (qa * qb - qc * qd) * (qa + qc) - qa * qb * qa + qa * qb * qc);
+        wide_sums += gap <= 12;
+    }
+    EXPECT_GT(wide_sums, 30000);
+    // A number that once held many limbs (heap storage) and now holds one.
+    Dyadic reused = Dyadic(0x1p52 + 1) * Dyadic(0x1p52 + 3) * Dyadic(0x1p52 + 5) * Dyadic(0x1p52 + 7);
+    reused = Dyadic(3.0);
+    EXPECT_EQ(to_q(reused * Dyadic(-5.0)), Q(-15));
+    EXPECT_EQ(to_q(reused + Dyadic(0x1p-60)), Q(3) + Q(1, mpz_class(1) << 60));
+    // Carries into bit 127 and cancellation to a single bit.
+    const Dyadic top = Dyadic(0x1p126) + Dyadic(0x1p126);
+    EXPECT_EQ(to_q(top), Q(mpz_class(1) << 127));
+    EXPECT_EQ(to_q(Dyadic(0x1p126 + 0x1p74) - Dyadic(0x1p126)), Q(mpz_class(1) << 74));
+    EXPECT_EQ(to_q((Dyadic(0x1p126) + Dyadic(1.0)) - Dyadic(0x1p126)), Q(1));
+    // Two products of 106 bits, 22 binary places apart: aligned, one has 128 bits and their sum
+    // 129, past what one wide integer holds.
+    const double m = 0x1p53 - 1;
+    const Dyadic high = Dyadic(m) * Dyadic(m), low = Dyadic(std::ldexp(m, -22)) * Dyadic(m);
+    EXPECT_EQ(to_q(high + low), Q(m) * Q(m) + Q(std::ldexp(m, -22)) * Q(m));
+    EXPECT_EQ(to_q(low + high), Q(m) * Q(m) + Q(std::ldexp(m, -22)) * Q(m));
+}
+
 // Products long enough to leave the inline limbs (hundreds of bits), with exponents far apart.
 TEST(Dyadic, LongProductsAndFarExponents) {
     testing::Random r(3);
