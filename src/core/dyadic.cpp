@@ -124,6 +124,18 @@ Dyadic Dyadic::from_integer(std::int64_t v) {
     return d;
 }
 
+Dyadic Dyadic::from_limbs(Sign sign, std::span<const Limb> magnitude, std::int64_t binary_exponent) {
+    Dyadic d;
+    if (magnitude.empty()) return d;
+    assert(sign != Sign::Zero && magnitude.back() != 0 && (magnitude.front() & 1) != 0);
+    Limb* p = d.reserve(static_cast<std::uint32_t>(magnitude.size()));
+    std::copy(magnitude.begin(), magnitude.end(), p);
+    d.size_ = static_cast<std::uint32_t>(magnitude.size());
+    d.exponent_ = binary_exponent;
+    d.sign_ = to_int(sign);
+    return d;
+}
+
 Dyadic::Dyadic(const Dyadic& other) : exponent_(other.exponent_), sign_(other.sign_), inline_{} {
     Limb* p = reserve(other.size_);
     std::copy(other.data(), other.data() + other.size_, p);

@@ -244,6 +244,28 @@ ExactVector ExactVector::wrench(const Vec2& p, const Vec2& d) {
     return out;
 }
 
+namespace {
+
+// n words in one shared allocation (with its count): an array of a few fixed sizes, seen
+// through an aliasing pointer to its first word. (std::make_shared<T[]>(n) would do it for any
+// n, but the C++ library of the WebAssembly build predates it.)
+template <std::size_t N>
+std::shared_ptr<Dyadic::Limb> shared_array() {
+    auto owner = std::make_shared<std::array<Dyadic::Limb, N>>();
+    Dyadic::Limb* first = owner->data();
+    return {std::move(owner), first};
+}
+
+std::shared_ptr<Dyadic::Limb> shared_words(std::size_t n) {
+    if (n <= 8) return shared_array<8>();
+    if (n <= 12) return shared_array<12>();
+    if (n <= 16) return shared_array<16>();
+    if (n <= 24) return shared_array<24>();
+    return std::shared_ptr<Dyadic::Limb>(new Dyadic::Limb[n], std::default_delete<Dyadic::Limb[]>());
+}
+
+}  // namespace
+
 ExactVector ExactVector::computed(Exact3 e) {
     ExactVector out;
     out.kind_ = Kind::Computed;
@@ -258,8 +280,21 @@ ExactVector ExactVector::computed(Exact3 e) {
     // generators is a cache miss per predicate.
     out.u_ = approximation.approx;
     out.v_ = Vec3(approximation.err, 0.0, 0.0);
-    auto block = std::make_shared<Computed>();
-    block->exact = std::move(e);
+    // Packed: words 0-2 the binary exponents, 3-5 each coordinate's limb count times 4 plus its
+    // sign + 1, then the limbs. A coordinate of a friction edge or of a ray of A has two or
+    // three limbs, so the block is about half of three Dyadic objects (six inline limbs each).
+    std::size_t limbs = 0;
+    for (const Dyadic& x : e) limbs += x.limbs().size();
+    std::shared_ptr<Dyadic::Limb> block = shared_words(6 + limbs);
+    Dyadic::Limb* w = block.get();
+    std::size_t at = 6;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const auto l = e[i].limbs();
+        w[i] = static_cast<Dyadic::Limb>(e[i].binary_exponent());
+        w[3 + i] = (static_cast<Dyadic::Limb>(l.size()) << 2) | static_cast<Dyadic::Limb>(to_int(e[i].sign()) + 1);
+        std::copy(l.begin(), l.end(), w + at);
+        at += l.size();
+    }
     out.computed_ = std::move(block);
     return out;
 }
@@ -277,12 +312,19 @@ Exact3 ExactVector::exact() const {
             return sign_ > 0 ? c : -c;
         }
         case Kind::Computed: {
-            const Exact3& stored = computed_->exact;
+            // Stored coordinate k (from_) starts after the limbs of those before it.
+            const Dyadic::Limb* block = computed_.get();
+            std::array<std::size_t, 3> start{6, 0, 0};
+            start[1] = start[0] + static_cast<std::size_t>(block[3] >> 2);
+            start[2] = start[1] + static_cast<std::size_t>(block[4] >> 2);
             Exact3 out;
             for (std::size_t i = 0; i < 3; ++i) {
                 const int from = from_[i];
-                const Dyadic& x = stored[static_cast<std::size_t>(std::abs(from) - 1)];
-                out[i] = (from < 0) == (sign_ > 0) ? -x : x;
+                const auto k = static_cast<std::size_t>(std::abs(from) - 1);
+                const Sign stored = static_cast<Sign>(static_cast<int>(block[3 + k] & 3) - 1);
+                const std::size_t size = static_cast<std::size_t>(block[3 + k] >> 2);
+                out[i] = Dyadic::from_limbs((from < 0) == (sign_ > 0) ? -stored : stored, {block + start[k], size},
+                                            static_cast<std::int64_t>(block[k]));
             }
             return out;
         }

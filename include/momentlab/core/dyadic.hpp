@@ -71,6 +71,9 @@ public:
     /// magnitude odd (no trailing zero bits) and without leading zero limbs; no limbs for 0.
     [[nodiscard]] std::span<const Limb> limbs() const { return {data(), size_}; }
     [[nodiscard]] std::int64_t binary_exponent() const { return exponent_; }
+    /// The number with that representation: sign times the magnitude (limbs as limbs() gives
+    /// them: odd, no leading zero limb; none for zero) times 2^binary_exponent.
+    static Dyadic from_limbs(Sign sign, std::span<const Limb> magnitude, std::int64_t binary_exponent);
     /// "-0x1.8p+3"-style exact text (hexadecimal magnitude and binary exponent), for messages.
     [[nodiscard]] std::string to_string() const;
 

@@ -120,15 +120,15 @@ public:
 
 private:
     enum class Kind : unsigned char { Input, Cross, Computed };
-    struct Computed {
-        Exact3 exact;  // the approximation lives in the object (u_, v_)
-    };
     static ExactVector computed(Exact3 e);
 
     Vec3 value_ = Vec3::Zero();
     Vec3 u_ = Vec3::Zero();
     Vec3 v_ = Vec3::Zero();
-    std::shared_ptr<const Computed> computed_;
+    // Computed: the three exact coordinates packed in one shared block of words (their
+    // exponents, signs and sizes, then their limbs: no unused room); the approximation lives in
+    // the object (u_, v_).
+    std::shared_ptr<const Dyadic::Limb> computed_;
     signed char sign_ = 1;  // Cross and Computed: the vector is sign_ times the construction
     Kind kind_ = Kind::Input;
     // Computed: coordinate i is +-(the stored coordinate |from_[i]| - 1), negated when from_[i]
