@@ -786,39 +786,15 @@ Cone ConeBuilder::build(std::span<const ExactVector> generators) {
     return build_cone(generators);
 }
 
-Held cone_holds(std::span<const ExactVector> generators, const Vec3& wrench) {
+namespace {
+
+// w against the pointed full-dimensional cone of g whose extreme rays are c (counter-clockwise):
+// facet i is r_i x r_{i+1} (pointed_from_cycle), so w is in the cone when no det(r_i, r_{i+1}, w)
+// is negative. origin(i) is g[i]'s index in the caller's generators.
+template <class Origin>
+Held held_by_cycle(std::span<const ExactVector> g, std::span<const int> c, const Vec3& wrench, Origin origin) {
     const ExactVector w = ExactVector::input(wrench);
-    // The nonzero generators, and where each came from; copied only when some are zero.
-    std::span<const ExactVector> g = generators;
-    std::vector<ExactVector> nonzero;
-    std::vector<std::size_t> from;
-    if (std::any_of(generators.begin(), generators.end(), [](const ExactVector& v) { return is_zero(v); })) {
-        for (std::size_t i = 0; i < generators.size(); ++i) {
-            if (is_zero(generators[i])) continue;
-            nonzero.push_back(generators[i]);
-            from.push_back(i);
-        }
-        g = nonzero;
-    }
-    const auto origin = [&](int i) { return from.empty() ? static_cast<std::size_t>(i) : from[static_cast<std::size_t>(i)]; };
     Held out;
-    if (g.empty()) {  // {0}
-        out.member = is_zero(wrench);
-        if (!out.member) out.separator = w.negated();
-        return out;
-    }
-    Parts parts = parts_of(g, false);
-    if (parts.cycle.empty()) {  // not pointed and full-dimensional: the cone itself
-        const Cone cone = ConeBuilder::assemble(std::move(parts.rays), std::move(parts.lineality), std::move(parts.facets),
-                                                std::move(parts.equations), std::move(parts.facet_rays));
-        Membership m = cone.contains(wrench);
-        out.member = m.member;
-        if (!m.member) out.separator = std::move(m.separator);
-        return out;
-    }
-    // Facet i is r_i x r_{i+1} (pointed_from_cycle): w is in the cone when no det(r_i, r_{i+1}, w)
-    // is negative.
-    const std::vector<int>& c = parts.cycle;
     const std::size_t k = c.size();
     const auto ray = [&](std::size_t i) -> const ExactVector& { return g[static_cast<std::size_t>(c[i % k])]; };
     for (std::size_t i = 0; i < k; ++i) {
@@ -836,6 +812,76 @@ Held cone_holds(std::span<const ExactVector> generators, const Vec3& wrench) {
         }
     }
     return out;
+}
+
+Held held_by_cone(const Cone& cone, const Vec3& wrench) {
+    Held out;
+    Membership m = cone.contains(wrench);
+    out.member = m.member;
+    if (!m.member) out.separator = std::move(m.separator);
+    return out;
+}
+
+Held held_by_zero(const Vec3& wrench) {
+    Held out;
+    out.member = is_zero(wrench);
+    if (!out.member) out.separator = ExactVector::input(wrench).negated();
+    return out;
+}
+
+}  // namespace
+
+Held cone_holds(std::span<const ExactVector> generators, const Vec3& wrench) {
+    // The nonzero generators, and where each came from; copied only when some are zero.
+    std::span<const ExactVector> g = generators;
+    std::vector<ExactVector> nonzero;
+    std::vector<std::size_t> from;
+    if (std::any_of(generators.begin(), generators.end(), [](const ExactVector& v) { return is_zero(v); })) {
+        for (std::size_t i = 0; i < generators.size(); ++i) {
+            if (is_zero(generators[i])) continue;
+            nonzero.push_back(generators[i]);
+            from.push_back(i);
+        }
+        g = nonzero;
+    }
+    if (g.empty()) return held_by_zero(wrench);  // {0}
+    Parts parts = parts_of(g, false);
+    if (parts.cycle.empty()) {  // not pointed and full-dimensional: the cone itself
+        return held_by_cone(ConeBuilder::assemble(std::move(parts.rays), std::move(parts.lineality), std::move(parts.facets),
+                                                  std::move(parts.equations), std::move(parts.facet_rays)),
+                            wrench);
+    }
+    return held_by_cycle(g, parts.cycle, wrench, [&](int i) {
+        return from.empty() ? static_cast<std::size_t>(i) : from[static_cast<std::size_t>(i)];
+    });
+}
+
+HeldCone::HeldCone(std::vector<ExactVector> generators) : generators_(std::move(generators)) {
+    if (std::any_of(generators_.begin(), generators_.end(), [](const ExactVector& v) { return is_zero(v); })) {
+        std::vector<ExactVector> nonzero;
+        for (std::size_t i = 0; i < generators_.size(); ++i) {
+            if (is_zero(generators_[i])) continue;
+            nonzero.push_back(std::move(generators_[i]));
+            from_.push_back(i);
+        }
+        generators_ = std::move(nonzero);
+    }
+    if (generators_.empty()) return;
+    Parts parts = parts_of(std::span<const ExactVector>(generators_), false);
+    if (parts.cycle.empty()) {
+        cone_ = ConeBuilder::assemble(std::move(parts.rays), std::move(parts.lineality), std::move(parts.facets),
+                                      std::move(parts.equations), std::move(parts.facet_rays));
+    } else {
+        cycle_ = std::move(parts.cycle);
+    }
+}
+
+Held HeldCone::holds(const Vec3& wrench) const {
+    if (generators_.empty()) return held_by_zero(wrench);
+    if (cone_) return held_by_cone(*cone_, wrench);
+    return held_by_cycle(generators_, cycle_, wrench, [&](int i) {
+        return from_.empty() ? static_cast<std::size_t>(i) : from_[static_cast<std::size_t>(i)];
+    });
 }
 
 }  // namespace momentlab

@@ -375,8 +375,9 @@ private:
 };
 
 // The all-f mode's E once its closure (the twists of the cells merged into it) is known: the
-// images M g of those twists and -T of every contact fixed.
-Cone fixed_applied(const std::optional<ExactMatrix>& m, const FrictionEdges& edges, const std::vector<Exact3>& closure) {
+// images M g of those twists and -T of every contact fixed; kept for membership tests only
+// (its extreme rays, not its 2n facets, when it is pointed and full-dimensional).
+HeldCone fixed_applied(const std::optional<ExactMatrix>& m, const FrictionEdges& edges, const std::vector<Exact3>& closure) {
     std::vector<ExactVector> generators;
     generators.reserve((m ? closure.size() : 0) + 2 * edges.statics.size());
     if (m) {
@@ -385,7 +386,7 @@ Cone fixed_applied(const std::optional<ExactMatrix>& m, const FrictionEdges& edg
     for (const auto& pair : edges.statics) {
         for (const ExactVector& edge : pair) generators.push_back(edge.negated());
     }
-    return Cone::from_generators(generators);
+    return HeldCone(std::move(generators));
 }
 
 }  // namespace
@@ -419,7 +420,7 @@ struct SceneQuestions::State {
     // After the first answer: the twists of the cells that join the all-f mode; from the second,
     // that mode's E (built once; every answer then tests e against it).
     std::shared_ptr<const std::vector<Exact3>> fixed_closure;
-    std::optional<Cone> fixed_cone;
+    std::optional<HeldCone> fixed_cone;
 };
 
 SceneQuestions::SceneQuestions(const Scene& scene, const AnalysisOptions& options)
@@ -490,7 +491,7 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
         return fixed_deciders[k].member(cell, filters);
     };
     std::vector<char> fixed_holds(q, 0);
-    std::optional<Cone> fixed_edges;  // a first batch's E of the all-f mode without the twists
+    std::optional<HeldCone> fixed_edges;  // a first batch's E of the all-f mode without the twists
     bool fixed_built = false;
     std::size_t fixed_tested = 0;
     // The twists of the cells that join the all-f mode are the same at every answer: collected
@@ -505,14 +506,14 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
                     fixed_built = true;
                     fixed_tested = (m ? s.fixed_closure->size() : 0) + 2 * n;
                 }
-                for (std::size_t k = 0; k < q; ++k) fixed_holds[k] = s.fixed_cone->has(wrenches[k]);
+                for (std::size_t k = 0; k < q; ++k) fixed_holds[k] = s.fixed_cone->holds(wrenches[k]).member;
             } else if (q == 1 || n == 0) {
                 for (std::size_t k = 0; k < q; ++k) fixed_holds[k] = fixed_member(k, {});
             } else {  // a first batch: the cone of the fixed edges alone, built once for all
                 fixed_edges.emplace(fixed_applied(m, s.edges, {}));
                 fixed_built = true;
                 fixed_tested = 2 * n;
-                for (std::size_t k = 0; k < q; ++k) fixed_holds[k] = fixed_edges->has(wrenches[k]);
+                for (std::size_t k = 0; k < q; ++k) fixed_holds[k] = fixed_edges->holds(wrenches[k]).member;
             }
             return;
         }
@@ -567,7 +568,7 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
             if (undecided) {
                 s.fixed_cone = fixed_applied(m, s.edges, fixed_closure);
                 fixed_tested += fixed_closure.size() + 2 * n;
-                for (std::size_t k = 0; k < q; ++k) fixed_holds[k] = fixed_holds[k] || s.fixed_cone->has(wrenches[k]);
+                for (std::size_t k = 0; k < q; ++k) fixed_holds[k] = fixed_holds[k] || s.fixed_cone->holds(wrenches[k]).member;
             }
         } else {
             for (std::size_t k = 0; k < q; ++k) {

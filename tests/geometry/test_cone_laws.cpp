@@ -273,6 +273,12 @@ TEST(ConeLaws, ConeHoldsAgreesWithBruteForceMembership) {
                 raw.push_back(reference::q(v));
             }
         }
+        if (i % 5 == 0) {  // a zero generator among them: certificates name the given indices
+            const int at = rnd.integer(0, static_cast<int>(g.size()));
+            g.insert(g.begin() + at, ExactVector::input(Vec3::Zero()));
+            raw.insert(raw.begin() + at, reference::QVec{0, 0, 0});
+        }
+        const HeldCone kept(g);
         for (int k = 0; k < 6; ++k) {
             reference::QVec w = reference::q(rnd.vec3(3.0));
             if (k == 1) w = reference::q(Vec3(rnd.integer(-2, 2), rnd.integer(-2, 2), rnd.integer(-2, 2)));
@@ -282,22 +288,24 @@ TEST(ConeLaws, ConeHoldsAgreesWithBruteForceMembership) {
             }
             const Vec3 wd = reference::to_vec3(w);
             if (reference::q(wd) != w) continue;
-            const Held held = cone_holds(g, wd);
             const bool expected = reference::in_cone(raw, w);
-            ASSERT_EQ(held.member, expected) << "w = " << wd.transpose() << ", generator set " << i;
-            if (!held.member) {
-                ++outside;
-                const reference::QVec h = reference::to_q(held.separator);
-                EXPECT_LT(reference::sign(reference::dot(h, w)), 0) << "separator, set " << i;
-                for (const reference::QVec& r : raw) EXPECT_GE(reference::sign(reference::dot(h, r)), 0) << "separator, set " << i;
-                continue;
-            }
-            ++members;
-            if (held.triangle) {
-                ++triangles;
-                const auto& t = *held.triangle;
-                ASSERT_TRUE(t[0] < raw.size() && t[1] < raw.size() && t[2] < raw.size());
-                EXPECT_TRUE(reference::in_cone({raw[t[0]], raw[t[1]], raw[t[2]]}, w)) << "triangle, set " << i;
+            // cone_holds, and the HeldCone kept for all the wrenches of this set.
+            for (const Held& held : {cone_holds(g, wd), kept.holds(wd)}) {
+                ASSERT_EQ(held.member, expected) << "w = " << wd.transpose() << ", generator set " << i;
+                if (!held.member) {
+                    ++outside;
+                    const reference::QVec h = reference::to_q(held.separator);
+                    EXPECT_LT(reference::sign(reference::dot(h, w)), 0) << "separator, set " << i;
+                    for (const reference::QVec& r : raw) EXPECT_GE(reference::sign(reference::dot(h, r)), 0) << "separator, set " << i;
+                    continue;
+                }
+                ++members;
+                if (held.triangle) {
+                    ++triangles;
+                    const auto& t = *held.triangle;
+                    ASSERT_TRUE(t[0] < raw.size() && t[1] < raw.size() && t[2] < raw.size());
+                    EXPECT_TRUE(reference::in_cone({raw[t[0]], raw[t[1]], raw[t[2]]}, w)) << "triangle, set " << i;
+                }
             }
         }
     }

@@ -198,6 +198,21 @@ struct Held {
 };
 [[nodiscard]] Held cone_holds(std::span<const ExactVector> generators, const Vec3& w);
 
+/// cone(generators) kept for membership tests of many wrenches, found once as cone_holds finds
+/// it: a pointed full-dimensional cone as its extreme rays in cyclic order (no facets built),
+/// any other as the Cone. holds(w) answers as cone_holds(generators, w) does.
+class HeldCone {
+public:
+    explicit HeldCone(std::vector<ExactVector> generators);
+    [[nodiscard]] Held holds(const Vec3& w) const;
+
+private:
+    std::vector<ExactVector> generators_;  // the non-zero generators
+    std::vector<std::size_t> from_;        // their indices in the argument (empty: no zero ones)
+    std::vector<int> cycle_;               // indices into generators_, or empty
+    std::optional<Cone> cone_;             // when not pointed and full-dimensional
+};
+
 /// True when the cone c (a subset of e) contains a point of the interior of e: c lies in no
 /// facet of e. False whenever e is not full-dimensional. Exact.
 [[nodiscard]] bool meets_interior(const Cone& c, const Cone& e);
