@@ -24,7 +24,7 @@ FUZZ_TARGETS := fuzz_scene_reader fuzz_labels_reader fuzz_cone fuzz_query
 FUZZ_SECONDS ?= 600
 SMOKE_SECONDS ?= 5
 
-.PHONY: all deps build python web test-web demo figures test test-release test-sanitizers fuzz-build test-fuzz fuzz large-inputs bench validate validate-long clean
+.PHONY: all deps build python web test-web demo figures test test-release test-sanitizers fuzz-build test-fuzz fuzz large-inputs instructions bench validate validate-long clean
 
 all: build
 
@@ -141,6 +141,13 @@ validate: build
 
 validate-long: build
 	bash tools/validation_table.sh long $(BUILD)
+
+# Instructions (valgrind's callgrind) of a SceneQuestions set-up and six wrenches on the cradle and
+# the tangent of 10^4 contacts, three ways of asking them (docs/benchmarks.md).
+instructions: build
+	@command -v valgrind >/dev/null || { SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	    $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq valgrind >/dev/null; }
+	bash tools/instructions.sh $(BUILD) build/degenerate
 
 bench: build
 	$(BUILD)/bench/bench_cone
