@@ -19,6 +19,7 @@
 #include <limits>
 #include <bit>
 #include <numeric>
+#include <optional>
 
 namespace momentlab {
 namespace {
@@ -213,6 +214,7 @@ ExactVector ExactVector::cross(const Vec3& u, const Vec3& v, int sign) {
     const double m = raw.cwiseAbs().maxCoeff();
     if (!(m > 0x1p-900 && m < 0x1p900)) raw = scaled_by_power_of_two(u).cross(scaled_by_power_of_two(v));
     e.value_ = readable(raw) * static_cast<double>(e.sign_);
+    e.keep_approximation_shift(u.cross(v) * static_cast<double>(e.sign_));
     return e;
 }
 
@@ -241,6 +243,7 @@ ExactVector ExactVector::wrench(const Vec2& p, const Vec2& d) {
     out.u_ = Vec3(p.y(), -p.x(), 1.0);
     out.v_ = Vec3(d.y(), -d.x(), 0.0);
     out.value_ = readable(plain);
+    out.keep_approximation_shift(plain);
     return out;
 }
 
@@ -332,23 +335,53 @@ Exact3 ExactVector::exact() const {
     return {};
 }
 
+namespace {
+
+// The certified approximation of sign (p x q) for stored p, q is its product in doubles times
+// 2^scale: |fl(fl(a) - fl(b)) - (a - b)| <= (2u + u^2)(|a| + |b|) per coordinate; scaled so that
+// the largest |a| + |b| lies in [1, 2), the error is below 2^-50 (with the underflow of products,
+// absolute 2^-1075, far below it while that largest is >= 2^-900). No scale outside that range.
+std::optional<int> cross_scale(const Vec3& p, const Vec3& q) {
+    const double b0 = std::fabs(p.y() * q.z()) + std::fabs(p.z() * q.y());
+    const double b1 = std::fabs(p.z() * q.x()) + std::fabs(p.x() * q.z());
+    const double b2 = std::fabs(p.x() * q.y()) + std::fabs(p.y() * q.x());
+    const double b = std::max({b0, b1, b2});
+    if (!(b >= 0x1p-900 && b <= 0x1p900)) return std::nullopt;
+    return 1 - binary_exponent(b);
+}
+
+ExactVector::Approximation cross_approximation(const Vec3& p, const Vec3& q, int sign) {
+    const std::optional<int> scale = cross_scale(p, q);
+    if (!scale) return {Vec3::Zero(), kInf};
+    return {times_power_of_two(p.cross(q) * static_cast<double>(sign), *scale), 0x1p-50};
+}
+
+}  // namespace
+
+void ExactVector::keep_approximation_shift(const Vec3& base) {
+    // base is the product in doubles (cross_approximation's), or, for a wrench, its exact value
+    // rounded coordinate by coordinate (relative error below 2^-52: below 2^-51 on the scale
+    // where the largest |a| + |b| is in [1, 2), within the 2^-50 stated). The shift is the power
+    // of two that takes value_ to base on that scale, if one does exactly (value_ is base scaled
+    // for reading, unless it was divided by an integer gcd).
+    const std::optional<int> scale = cross_scale(u_, v_);
+    if (!scale) return;
+    const Vec3 target = times_power_of_two(base, *scale);
+    const double mv = value_.cwiseAbs().maxCoeff(), mt = target.cwiseAbs().maxCoeff();
+    if (mv == 0.0 || mt == 0.0) {
+        if (mv == 0.0 && mt == 0.0) approx_shift_ = 0;
+        return;
+    }
+    const int shift = binary_exponent(mt) - binary_exponent(mv);
+    if (times_power_of_two(value_, shift) == target) approx_shift_ = static_cast<std::int16_t>(shift);
+}
+
 ExactVector::Approximation ExactVector::approximation() const {
     switch (kind_) {
         case Kind::Input: return input_approximation(value_);
-        case Kind::Cross: {
-            // |fl(fl(p) - fl(q)) - (p - q)| <= (2u + u^2)(|p| + |q|) per coordinate; scaled so that
-            // the largest |p| + |q| lies in [1, 2), the error is below 2^-50 (with the underflow
-            // of products, absolute 2^-1075, far below it while that largest is >= 2^-900).
-            const Vec3 &p = u_, &q = v_;
-            const double b0 = std::fabs(p.y() * q.z()) + std::fabs(p.z() * q.y());
-            const double b1 = std::fabs(p.z() * q.x()) + std::fabs(p.x() * q.z());
-            const double b2 = std::fabs(p.x() * q.y()) + std::fabs(p.y() * q.x());
-            const double b = std::max({b0, b1, b2});
-            if (!(b >= 0x1p-900 && b <= 0x1p900)) return {Vec3::Zero(), kInf};
-            const int e = binary_exponent(b);
-            const Vec3 raw = p.cross(q) * static_cast<double>(sign_);
-            return {times_power_of_two(raw, 1 - e), 0x1p-50};
-        }
+        case Kind::Cross:
+            if (approx_shift_ != kNoShift) return {times_power_of_two(value_, approx_shift_), 0x1p-50};
+            return cross_approximation(u_, v_, sign_);
         case Kind::Computed: return {sign_ > 0 ? u_ : Vec3(-u_), v_.x()};
     }
     return {};

@@ -280,5 +280,58 @@ TEST(ExactVector, FilterBoundHolds) {
     }
 }
 
+// The approximation of a cross product of stored vectors is on the scale docs/robustness.md
+// states: the exact vector times 2^(1 - e), where 2^(e-1) <= b < 2^e for b the largest
+// |u_j v_k| + |u_k v_j| (in doubles), within 2^-50 per coordinate; for vectors made by
+// ExactVector::cross(u, v, sign) and ExactVector::wrench(p, d) (u = (p.y, -p.x, 1),
+// v = (d.y, -d.x, 0)), their negations and their signed permutations, whose approximations are
+// kept as a power of two of the printed value.
+TEST(ExactVector, CrossApproximationIsOnTheStatedScale) {
+    testing::Random r(6);
+    const Mat3 swap_xz = (Mat3() << 0, 0, -1, 0, 1, 0, 1, 0, 0).finished();
+    int checked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        Vec3 u, v;
+        ExactVector x;
+        if (i % 2) {
+            u = std::ldexp(1.0, r.integer(-200, 200)) * r.vec3(1);
+            v = std::ldexp(1.0, r.integer(-200, 200)) * r.vec3(1);
+            if (i % 10 == 1) u = Vec3(r.integer(-9, 9), r.integer(-9, 9), r.integer(-9, 9));  // integers: gcd-divided values
+            if (i % 10 == 3) v = Vec3(r.integer(-9, 9), r.integer(-9, 9), r.integer(-9, 9));
+            x = ExactVector::cross(u, v, i % 4 == 1 ? 1 : -1);
+            if (i % 4 != 1) u = -u;  // the stored product is then -(u x v) = (-u) x v
+        } else {
+            const Vec2 p = std::ldexp(1.0, r.integer(-30, 30)) * Vec2(r.uniform(-1, 1), r.uniform(-1, 1));
+            const Vec2 d = std::ldexp(1.0, r.integer(-30, 30)) * Vec2(r.uniform(-1, 1), r.uniform(-1, 1));
+            x = ExactVector::wrench(p, d);
+            u = Vec3(p.y(), -p.x(), 1.0);
+            v = Vec3(d.y(), -d.x(), 0.0);
+        }
+        const double b = std::max({std::fabs(u.y() * v.z()) + std::fabs(u.z() * v.y()),
+                                   std::fabs(u.z() * v.x()) + std::fabs(u.x() * v.z()),
+                                   std::fabs(u.x() * v.y()) + std::fabs(u.y() * v.x())});
+        if (!(b >= 0x1p-900 && b <= 0x1p900)) continue;
+        int e = 0;
+        std::frexp(b, &e);
+        const auto check = [&](const ExactVector& y, const reference::QVec& expected) {
+            const ExactVector::Approximation a = y.approximation();
+            ASSERT_EQ(a.err, 0x1p-50) << i;
+            for (int k = 0; k < 3; ++k) {
+                Q scaled = expected[static_cast<std::size_t>(k)];
+                if (1 - e >= 0) mpq_mul_2exp(scaled.get_mpq_t(), scaled.get_mpq_t(), static_cast<mp_bitcnt_t>(1 - e));
+                else mpq_div_2exp(scaled.get_mpq_t(), scaled.get_mpq_t(), static_cast<mp_bitcnt_t>(e - 1));
+                ASSERT_LE(abs(scaled - Q(a.approx[k])), Q(0x1p-50)) << i << " coordinate " << k;
+            }
+        };
+        const reference::QVec q = reference::cross(reference::q(u), reference::q(v));
+        ASSERT_EQ(to_q(x), q) << i;
+        check(x, q);
+        check(x.negated(), reference::QVec{-q[0], -q[1], -q[2]});
+        check(x.signed_permuted(swap_xz), reference::QVec{-q[2], q[1], q[0]});
+        ++checked;
+    }
+    EXPECT_GT(checked, 19000);
+}
+
 }  // namespace
 }  // namespace momentlab
