@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
+#include <set>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -36,25 +38,93 @@ std::uint64_t plane_hash(const ExactVector& v) {
     return h;
 }
 
+// The planes of one hash, ordered exactly by their direction up to sign: each is scaled by the
+// sign of its coordinate k (the bucket's axis, taken from its first plane) and ordered by its
+// other two coordinates over that one (exact 2x2 minors), so a plane is found among k planes
+// with O(log k) exact signs. Planes whose coordinate k is exactly 0 are compared one by one.
+// Nearly parallel planes share a hash: the E_i of a scene whose friction cones are 1e-17 wide
+// have thousands of facets within 2^-30 of each other, and comparing each new one with all of
+// them (exact cross products) took seconds at 2,000 contacts.
+class PlaneBucket {
+public:
+    PlaneBucket(const std::vector<ExactVector>& planes, int axis)
+        : planes_(planes), axis_(axis), ordered_(Less{this}) {}
+
+    // The index of a stored plane parallel to planes_[candidate] and whether it has the same
+    // orientation; or nullopt after storing the candidate itself.
+    std::optional<std::pair<std::uint32_t, bool>> find_or_add(std::uint32_t candidate) {
+        const Sign s = sign_on_axis(planes_[candidate]);
+        if (s == Sign::Zero) {
+            for (std::uint32_t j : others_) {
+                if (parallel(planes_[j], planes_[candidate])) return std::pair(j, planes_[j].dot_sign(planes_[candidate]) == Sign::Positive);
+            }
+            others_.push_back(candidate);
+            return std::nullopt;
+        }
+        signs_[candidate] = s;
+        const auto [it, added] = ordered_.insert(candidate);
+        if (added) return std::nullopt;
+        signs_.erase(candidate);  // the caller drops the candidate: its index is reused
+        return std::pair(*it, signs_.at(*it) == s);
+    }
+
+private:
+    Sign sign_on_axis(const ExactVector& v) const {
+        const ExactVector::Approximation a = v.approximation();
+        const double x = a.approx[axis_];
+        if (std::fabs(x) > a.err) return x > 0 ? Sign::Positive : Sign::Negative;
+        return v.exact()[static_cast<std::size_t>(axis_)].sign();
+    }
+    struct Less {
+        const PlaneBucket* bucket;
+        bool operator()(std::uint32_t a, std::uint32_t b) const {
+            const PlaneBucket& p = *bucket;
+            const int flip = to_int(p.signs_.at(a)) * to_int(p.signs_.at(b));
+            for (int i : {(p.axis_ + 1) % 3, (p.axis_ + 2) % 3}) {
+                // a_i / a_k against b_i / b_k, both scaled to a positive coordinate k.
+                const int c = flip * to_int(minor_sign(p.planes_[a], p.planes_[b], i, p.axis_));
+                if (c != 0) return c < 0;
+            }
+            return false;
+        }
+    };
+    const std::vector<ExactVector>& planes_;
+    int axis_;
+    std::unordered_map<std::uint32_t, Sign> signs_;
+    std::set<std::uint32_t, Less> ordered_;
+    std::vector<std::uint32_t> others_;
+};
+
+// The axis of the largest coordinate of v's approximation.
+int largest_axis(const ExactVector& v) {
+    const Vec3 a = v.approximation().approx;
+    int k = 0;
+    for (int i = 1; i < 3; ++i) {
+        if (std::fabs(a[i]) > std::fabs(a[k])) k = i;
+    }
+    return k;
+}
+
 }  // namespace
 
 QueryIndex::QueryIndex(const std::vector<ModeForces>& analysis) : mode_count_(analysis.size()) {
-    // hash -> planes stored with it; a plane is merged with a stored one when they are exactly
-    // parallel (the orientation says whether it is the same or the opposite normal).
-    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> seen;
+    // hash -> the planes stored with it; a plane is merged with a stored one when they are
+    // exactly parallel (PlaneBucket says whether it is the same or the opposite normal).
+    std::unordered_map<std::uint64_t, PlaneBucket> seen;
     std::vector<std::vector<std::pair<std::uint32_t, int>>> per_mode(analysis.size());
     auto add = [&](std::size_t mode, const ExactVector& normal) {
         if (is_zero(normal)) return;  // 0 . e >= 0 holds everywhere
-        std::vector<std::uint32_t>& bucket = seen[plane_hash(normal)];
-        for (std::uint32_t j : bucket) {
-            if (parallel(exact_[j], normal)) {
-                per_mode[mode].emplace_back(j, exact_[j].dot_sign(normal) == Sign::Positive ? 1 : -1);
-                return;
-            }
-        }
-        bucket.push_back(static_cast<std::uint32_t>(exact_.size()));
-        per_mode[mode].emplace_back(static_cast<std::uint32_t>(exact_.size()), 1);
+        const auto candidate = static_cast<std::uint32_t>(exact_.size());
         exact_.push_back(normal);
+        const std::uint64_t h = plane_hash(normal);
+        auto bucket = seen.find(h);
+        if (bucket == seen.end()) bucket = seen.try_emplace(h, exact_, largest_axis(normal)).first;
+        if (const auto stored = bucket->second.find_or_add(candidate)) {
+            exact_.pop_back();
+            per_mode[mode].emplace_back(stored->first, stored->second ? 1 : -1);
+            return;
+        }
+        per_mode[mode].emplace_back(candidate, 1);
     };
     for (std::size_t i = 0; i < analysis.size(); ++i) {
         const Cone& e = analysis[i].applied;
