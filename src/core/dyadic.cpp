@@ -103,7 +103,8 @@ Dyadic::Dyadic(double x) : inline_{} {
     if (x == 0.0) return;
     // From the bits: |x| = (2^52 + fraction) 2^(biased - 1075), or fraction 2^-1074 for a
     // denormal (biased exponent 0).
-    const auto bits = std::bit_cast<std::uint64_t>(x);
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &x, sizeof bits);  // (std::bit_cast: not in the WebAssembly build's library)
     const auto biased = static_cast<std::int64_t>((bits >> 52) & 0x7FF);
     Limb m = bits & ((Limb{1} << 52) - 1);
     if (biased != 0) m |= Limb{1} << 52;

@@ -17,7 +17,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
-#include <bit>
+#include <cstring>
 #include <numeric>
 #include <optional>
 
@@ -34,7 +34,9 @@ thread_local ExactStats g_stats;
 // of a normal number (std::frexp is a library call, and the approximations call it for every
 // exact sign).
 int binary_exponent(double m) {
-    const auto biased = static_cast<int>((std::bit_cast<std::uint64_t>(m) >> 52) & 0x7FF);
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &m, sizeof bits);  // (std::bit_cast: not in the WebAssembly build's library)
+    const auto biased = static_cast<int>((bits >> 52) & 0x7FF);
     if (biased != 0) return biased - 1022;
     int e = 0;
     std::frexp(m, &e);  // a denormal
