@@ -216,7 +216,6 @@ ExactVector ExactVector::cross(const Vec3& u, const Vec3& v, int sign) {
     const double m = raw.cwiseAbs().maxCoeff();
     if (!(m > 0x1p-900 && m < 0x1p900)) raw = scaled_by_power_of_two(u).cross(scaled_by_power_of_two(v));
     e.value_ = readable(raw) * static_cast<double>(e.sign_);
-    e.keep_approximation_shift(u.cross(v) * static_cast<double>(e.sign_));
     return e;
 }
 

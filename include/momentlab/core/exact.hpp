@@ -135,10 +135,11 @@ private:
     // Computed: coordinate i is +-(the stored coordinate |from_[i]| - 1), negated when from_[i]
     // < 0, so a signed permutation (labels' K) shares the stored numbers instead of copying them.
     std::array<signed char, 3> from_{1, 2, 3};
-    // Cross: the approximation is value_ 2^approx_shift_ (found when the vector is made, kept by
-    // copies, negation and signed permutations), so predicates read it with three
-    // multiplications; kNoShift where value_ is not a power of two of it (then it is computed
-    // from u_ and v_).
+    // Cross made by wrench(): the approximation is value_ 2^approx_shift_ (found when the vector
+    // is made, kept by copies, negation and signed permutations), so predicates read it with
+    // three multiplications; kNoShift where value_ is not a power of two of it, and for the
+    // crosses of cross(), whose facets are tested a few times each (then it is computed from u_
+    // and v_).
     static constexpr std::int16_t kNoShift = INT16_MIN;
     std::int16_t approx_shift_ = kNoShift;
     void keep_approximation_shift(const Vec3& base);
