@@ -16,8 +16,8 @@
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
-#include <limits>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <optional>
 
@@ -360,11 +360,10 @@ ExactVector::Approximation cross_approximation(const Vec3& p, const Vec3& q, int
 }  // namespace
 
 void ExactVector::keep_approximation_shift(const Vec3& base) {
-    // base is the product in doubles (cross_approximation's), or, for a wrench, its exact value
-    // rounded coordinate by coordinate (relative error below 2^-52: below 2^-51 on the scale
-    // where the largest |a| + |b| is in [1, 2), within the 2^-50 stated). The shift is the power
-    // of two that takes value_ to base on that scale, if one does exactly (value_ is base scaled
-    // for reading, unless it was divided by an integer gcd).
+    // base is the wrench's exact value rounded coordinate by coordinate (relative error below
+    // 2^-52: below 2^-51 on the scale where the largest |a| + |b| is in [1, 2), within the 2^-50
+    // stated). The shift is the power of two that takes value_ to base on that scale, if one
+    // does exactly (value_ is base scaled for reading, unless it was divided by an integer gcd).
     const std::optional<int> scale = cross_scale(u_, v_);
     if (!scale) return;
     const Vec3 target = times_power_of_two(base, *scale);

@@ -790,9 +790,10 @@ namespace {
 
 // w against the pointed full-dimensional cone of g whose extreme rays are c (counter-clockwise):
 // facet i is r_i x r_{i+1} (pointed_from_cycle), so w is in the cone when no det(r_i, r_{i+1}, w)
-// is negative. origin(i) is g[i]'s index in the caller's generators.
-template <class Origin>
-Held held_by_cycle(std::span<const ExactVector> g, std::span<const int> c, const Vec3& wrench, Origin origin) {
+// is negative. from[i] is g[i]'s index among the caller's generators (empty: the same).
+Held held_by_cycle(std::span<const ExactVector> g, std::span<const std::size_t> from, std::span<const int> c,
+                   const Vec3& wrench) {
+    const auto origin = [&](int i) { return from.empty() ? static_cast<std::size_t>(i) : from[static_cast<std::size_t>(i)]; };
     const ExactVector w = ExactVector::input(wrench);
     Held out;
     const std::size_t k = c.size();
@@ -814,19 +815,51 @@ Held held_by_cycle(std::span<const ExactVector> g, std::span<const int> c, const
     return out;
 }
 
-Held held_by_cone(const Cone& cone, const Vec3& wrench) {
-    Held out;
-    Membership m = cone.contains(wrench);
-    out.member = m.member;
-    if (!m.member) out.separator = std::move(m.separator);
-    return out;
+// Removes the zero vectors of g; the index in g of each vector kept, or nothing when none was
+// zero.
+std::vector<std::size_t> drop_zeros(std::vector<ExactVector>& g) {
+    std::vector<std::size_t> from;
+    if (std::none_of(g.begin(), g.end(), [](const ExactVector& v) { return is_zero(v); })) return from;
+    std::vector<ExactVector> nonzero;
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        if (is_zero(g[i])) continue;
+        nonzero.push_back(std::move(g[i]));
+        from.push_back(i);
+    }
+    g = std::move(nonzero);
+    return from;
 }
 
-Held held_by_zero(const Vec3& wrench) {
+// cone(g) of non-zero generators as cone_holds tests against it: a pointed full-dimensional
+// cone as its extreme rays in cyclic order (indices into g, no facets built), any other as the
+// Cone itself. Nothing for no generators ({0}).
+void held_form(std::span<const ExactVector> g, std::vector<int>& cycle, std::optional<Cone>& cone) {
+    if (g.empty()) return;
+    Parts parts = parts_of(g, false);
+    if (parts.cycle.empty()) {
+        cone = ConeBuilder::assemble(std::move(parts.rays), std::move(parts.lineality), std::move(parts.facets),
+                                     std::move(parts.equations), std::move(parts.facet_rays));
+    } else {
+        cycle = std::move(parts.cycle);
+    }
+}
+
+// w against that form of cone(g), with a certificate.
+Held held_by(std::span<const ExactVector> g, std::span<const std::size_t> from, std::span<const int> cycle,
+             const std::optional<Cone>& cone, const Vec3& wrench) {
     Held out;
-    out.member = is_zero(wrench);
-    if (!out.member) out.separator = ExactVector::input(wrench).negated();
-    return out;
+    if (g.empty()) {  // {0}
+        out.member = is_zero(wrench);
+        if (!out.member) out.separator = ExactVector::input(wrench).negated();
+        return out;
+    }
+    if (cone) {
+        Membership m = cone->contains(wrench);
+        out.member = m.member;
+        if (!m.member) out.separator = std::move(m.separator);
+        return out;
+    }
+    return held_by_cycle(g, from, cycle, wrench);
 }
 
 }  // namespace
@@ -837,51 +870,21 @@ Held cone_holds(std::span<const ExactVector> generators, const Vec3& wrench) {
     std::vector<ExactVector> nonzero;
     std::vector<std::size_t> from;
     if (std::any_of(generators.begin(), generators.end(), [](const ExactVector& v) { return is_zero(v); })) {
-        for (std::size_t i = 0; i < generators.size(); ++i) {
-            if (is_zero(generators[i])) continue;
-            nonzero.push_back(generators[i]);
-            from.push_back(i);
-        }
+        nonzero.assign(generators.begin(), generators.end());
+        from = drop_zeros(nonzero);
         g = nonzero;
     }
-    if (g.empty()) return held_by_zero(wrench);  // {0}
-    Parts parts = parts_of(g, false);
-    if (parts.cycle.empty()) {  // not pointed and full-dimensional: the cone itself
-        return held_by_cone(ConeBuilder::assemble(std::move(parts.rays), std::move(parts.lineality), std::move(parts.facets),
-                                                  std::move(parts.equations), std::move(parts.facet_rays)),
-                            wrench);
-    }
-    return held_by_cycle(g, parts.cycle, wrench, [&](int i) {
-        return from.empty() ? static_cast<std::size_t>(i) : from[static_cast<std::size_t>(i)];
-    });
+    std::vector<int> cycle;
+    std::optional<Cone> cone;
+    held_form(g, cycle, cone);
+    return held_by(g, from, cycle, cone, wrench);
 }
 
 HeldCone::HeldCone(std::vector<ExactVector> generators) : generators_(std::move(generators)) {
-    if (std::any_of(generators_.begin(), generators_.end(), [](const ExactVector& v) { return is_zero(v); })) {
-        std::vector<ExactVector> nonzero;
-        for (std::size_t i = 0; i < generators_.size(); ++i) {
-            if (is_zero(generators_[i])) continue;
-            nonzero.push_back(std::move(generators_[i]));
-            from_.push_back(i);
-        }
-        generators_ = std::move(nonzero);
-    }
-    if (generators_.empty()) return;
-    Parts parts = parts_of(std::span<const ExactVector>(generators_), false);
-    if (parts.cycle.empty()) {
-        cone_ = ConeBuilder::assemble(std::move(parts.rays), std::move(parts.lineality), std::move(parts.facets),
-                                      std::move(parts.equations), std::move(parts.facet_rays));
-    } else {
-        cycle_ = std::move(parts.cycle);
-    }
+    from_ = drop_zeros(generators_);
+    held_form(generators_, cycle_, cone_);
 }
 
-Held HeldCone::holds(const Vec3& wrench) const {
-    if (generators_.empty()) return held_by_zero(wrench);
-    if (cone_) return held_by_cone(*cone_, wrench);
-    return held_by_cycle(generators_, cycle_, wrench, [&](int i) {
-        return from_.empty() ? static_cast<std::size_t>(i) : from_[static_cast<std::size_t>(i)];
-    });
-}
+Held HeldCone::holds(const Vec3& wrench) const { return held_by(generators_, from_, cycle_, cone_, wrench); }
 
 }  // namespace momentlab

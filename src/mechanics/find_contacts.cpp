@@ -62,10 +62,15 @@ void vertex_on_edge(const Polygon& touching, const Polygon& touched, bool body_i
     }
 }
 
+void check_distance(const ContactFinding& options) {
+    if (!(options.distance >= 0.0)) throw std::invalid_argument("find_contacts: distance must be >= 0");
+}
+
 }  // namespace
 
 std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygon>& obstacles,
                                    const ContactFinding& options) {
+    check_distance(options);
     for (std::size_t i = 0; i <= obstacles.size(); ++i) {
         const Polygon& p = i == 0 ? body : obstacles[i - 1];
         const std::string problem = polygon_problem(p);
@@ -78,7 +83,7 @@ std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygo
 
 std::vector<Contact> detail::find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
                                                      const ContactFinding& options) {
-    if (!(options.distance >= 0.0)) throw std::invalid_argument("find_contacts: distance must be >= 0");
+    check_distance(options);
     const Polygon b = counter_clockwise(body);
     std::vector<Contact> found;
     for (const Polygon& raw : obstacles) {

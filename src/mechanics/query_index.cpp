@@ -21,21 +21,28 @@
 namespace momentlab {
 namespace {
 
-// A hash of the plane of v up to sign, from its rounded direction: equal planes usually share
-// it (a plane whose rounded directions differ is only stored twice, which changes no answer);
-// planes are merged only after an exact test.
-std::uint64_t plane_hash(const ExactVector& v) {
-    Vec3 a = v.approximation().approx;
-    const double m = a.cwiseAbs().maxCoeff();
-    if (m == 0.0) return 0;
+// The axis of the largest coordinate of a.
+int largest_axis(const Vec3& a) {
     int k = 0;
     for (int i = 1; i < 3; ++i) {
         if (std::fabs(a[i]) > std::fabs(a[k])) k = i;
     }
+    return k;
+}
+
+// A hash of the plane of v up to sign, from its rounded direction: equal planes usually share
+// it (a plane whose rounded directions differ is only stored twice, which changes no answer);
+// planes are merged only after an exact test. With it, the axis of the largest coordinate of
+// v's approximation (part of the hash).
+std::pair<std::uint64_t, int> plane_hash(const ExactVector& v) {
+    Vec3 a = v.approximation().approx;
+    const double m = a.cwiseAbs().maxCoeff();
+    if (m == 0.0) return {0, 0};
+    const int k = largest_axis(a);
     a /= a[k];
     std::uint64_t h = static_cast<std::uint64_t>(k);
     for (int i = 0; i < 3; ++i) h = h * 1000003u + static_cast<std::uint64_t>(std::llround(a[i] * 0x1p30));
-    return h;
+    return {h, k};
 }
 
 // The planes of one hash, ordered exactly by their direction up to sign: each is scaled by the
@@ -95,16 +102,6 @@ private:
     std::vector<std::uint32_t> others_;
 };
 
-// The axis of the largest coordinate of v's approximation.
-int largest_axis(const ExactVector& v) {
-    const Vec3 a = v.approximation().approx;
-    int k = 0;
-    for (int i = 1; i < 3; ++i) {
-        if (std::fabs(a[i]) > std::fabs(a[k])) k = i;
-    }
-    return k;
-}
-
 }  // namespace
 
 QueryIndex::QueryIndex(const std::vector<ModeForces>& analysis) : mode_count_(analysis.size()) {
@@ -116,9 +113,9 @@ QueryIndex::QueryIndex(const std::vector<ModeForces>& analysis) : mode_count_(an
         if (is_zero(normal)) return;  // 0 . e >= 0 holds everywhere
         const auto candidate = static_cast<std::uint32_t>(exact_.size());
         exact_.push_back(normal);
-        const std::uint64_t h = plane_hash(normal);
+        const auto [h, axis] = plane_hash(normal);
         auto bucket = seen.find(h);
-        if (bucket == seen.end()) bucket = seen.try_emplace(h, exact_, largest_axis(normal)).first;
+        if (bucket == seen.end()) bucket = seen.try_emplace(h, exact_, axis).first;
         if (const auto stored = bucket->second.find_or_add(candidate)) {
             exact_.pop_back();
             per_mode[mode].emplace_back(stored->first, stored->second ? 1 : -1);
