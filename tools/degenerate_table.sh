@@ -73,6 +73,15 @@ for f in cradle tangent; do
         contacts=$n count=query row "$f, $n contacts, one query" "$bin" query "$dir/${f}_$n.json" --wrench 0.1 1 0.2 --json
     done
 done
+# The same question on the same scenes with every length times 2^40 and 2^-40: torques 2^40
+# times the forces, or 2^-40 (the wrench's torque scaled with them).
+for f in cradle tangent; do
+    for k in 40 -40; do
+        need "$f@$k" 100000
+        tau=$(/usr/bin/python3 -c "import math; print(repr(math.ldexp(0.2, $k)))")
+        contacts=100000 count=query row "$f x 2^$k, 10^5 contacts, one query" "$bin" query "$dir/$f@${k}_100000.json" --wrench 0.1 1 "$tau" --json
+    done
+done
 # Six questions in one run (query --wrenches: the walk for each, its set-up once; `modes` and
 # `letters` summed over the answers).
 printf '%s\n' '[0.1, 1, 0.2]' '[0.5, 2, 0.1]' '[1, 1, 0.5]' '[0.2, -1, 0.3]' '[2, 0.5, -0.4]' '[0, 0, 1]' > "$dir/six_wrenches.jsonl"

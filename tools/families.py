@@ -10,6 +10,10 @@ Families (a unit body at the origin, mu = 0.3):
   cradle      contacts on a half ring, normals tilted by 0.2 rad from the radius
   tangent     normal lines tangent to the lower half of the unit circle (contacts at the
               tangent points)
+
+FAMILY@K is the same scene with every length times 2^K (points and centre of mass; inertia
+times 2^2K), written to FAMILY@K_N.json: the same question, with torques 2^K times as large
+against the forces (a wrench (fx, fy, tau) of the scene is (fx, fy, 2^K tau) there).
 """
 import json
 import math
@@ -43,14 +47,28 @@ def family(name, n):
     return {"body": {"mass": 1.0, "com": [0.0, 0.0], "inertia": 0.5}, "contacts": cs}
 
 
+def scaled(scene, k):
+    s = math.ldexp(1.0, k)
+    body = scene["body"]
+    body["com"] = [x * s for x in body["com"]]
+    body["inertia"] = body["inertia"] * s * s
+    for c in scene["contacts"]:
+        c["point"] = [x * s for x in c["point"]]
+    return scene
+
+
 def main():
     args = sys.argv[1:]
     if len(args) < 3 or len(args) % 2 == 0:
         raise SystemExit(__doc__)
     out = args[0]
     for name, size in zip(args[1::2], args[2::2]):
+        base, _, k = name.partition("@")
+        scene = family(base, int(size))
+        if k:
+            scene = scaled(scene, int(k))
         with open(f"{out}/{name}_{size}.json", "w") as f:
-            json.dump(family(name, int(size)), f)
+            json.dump(scene, f)
 
 
 if __name__ == "__main__":

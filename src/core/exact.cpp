@@ -1,14 +1,19 @@
 // Exact vectors (core/exact.hpp): certified approximations first, Dyadic arithmetic when they
 // cannot decide.
 //
-// The filters. Each operand is 2^k (a + d) with |d_i| <= err and max |a_i| <= 2 (a positive
-// power of two never changes a sign). For a determinant, det(a+da, b+db, c+dc) - det(a, b, c)
-// telescopes into det(da, b+db, c+dc) + det(a, db, c+dc) + det(a, b, dc), and |det(x, y, z)| <=
-// max|x_i| |y|_1 |z|_1, so the approximations' errors add at most
-// ea (|b|_1 + 3 eb)(|c|_1 + 3 ec) + eb |a|_1 (|c|_1 + 3 ec) + ec |a|_1 |b|_1. The evaluation in
-// doubles adds at most 5u per term of the permanent (u = 2^-53: five roundings deep); 8u is
-// used. Products of numbers below 2 never overflow; an absolute 2^-1000 covers underflow. Dot
-// products and 2x2 minors are bounded the same way.
+// The filters. Each operand is 2^k (a + d) with |d_i| <= e_i coordinate by coordinate and
+// max |a_i| <= 2 (a positive power of two never changes a sign). A determinant is multilinear
+// in its columns, so det(a+da, b+db, c+dc) - det(a, b, c) is a sum of terms, each a product of
+// entries of which at least one is a d: at most perm(|a|+ea, |b|+eb, |c|+ec) - perm(|a|, |b|,
+// |c|) for the permanent perm of non-negative columns. Both permanents are evaluated in the
+// same order, and rounding is monotone, so the first is never below the second; each is within
+// 6u of its exact value (u = 2^-53: six roundings deep) and the difference within u of its own,
+// so 10u of the first covers them. The evaluation of det(a, b, c) in doubles adds at most 5u per
+// term of the permanent; 8u is used. Products of numbers below 2 plus their errors never
+// overflow; an absolute 2^-1000 covers underflow. Dot products and 2x2 minors are bounded the
+// same way. With bounds per coordinate (not one bound for the whole vector) the filters decide
+// the same signs when one coordinate of every operand is scaled by a power of two, as the
+// torques of a scene are when its lengths are.
 #include "momentlab/core/exact.hpp"
 
 #include "power_of_two.hpp"
@@ -77,28 +82,32 @@ Vec3 readable(const Vec3& v) {
 
 double norm1(const Vec3& v) { return std::fabs(v.x()) + std::fabs(v.y()) + std::fabs(v.z()); }
 
+// The permanent of three non-negative columns, in det_terms' order (so that, for |a|, |b|, |c|,
+// it is det_terms' permanent bit for bit).
+double permanent(const Vec3& a, const Vec3& b, const Vec3& c) {
+    return a.x() * (b.y() * c.z() + b.z() * c.y()) + a.y() * (b.z() * c.x() + b.x() * c.z()) +
+           a.z() * (b.x() * c.y() + b.y() * c.x());
+}
+
 bool det_filter(const ExactVector::Approximation& pa, const ExactVector::Approximation& pb,
                 const ExactVector::Approximation& pc, Sign& out) {
-    if (!(pa.err < kInf && pb.err < kInf && pc.err < kInf)) return false;
     const Vec3 &a = pa.approx, &b = pb.approx, &c = pc.approx;
-    const auto [value, permanent] = detail::det_terms(a, b, c);
-    const double na = norm1(a), nb = norm1(b), nc = norm1(c);
-    const double propagated = pa.err * (nb + 3 * pb.err) * (nc + 3 * pc.err) + pb.err * na * (nc + 3 * pc.err) +
-                              pc.err * na * nb;
-    const double bound = (8 * kU * permanent + propagated + kUnderflow) * (1 + 0x1p-40);
+    const auto [value, permanent0] = detail::det_terms(a, b, c);
+    const double permanent1 = permanent(a.cwiseAbs() + pa.err, b.cwiseAbs() + pb.err, c.cwiseAbs() + pc.err);
+    // (+inf or NaN when an operand has no approximation: then no sign is returned.)
+    const double bound = (permanent1 - permanent0 + 8 * kU * permanent0 + 10 * kU * permanent1 + kUnderflow) * (1 + 0x1p-40);
     if (!(std::fabs(value) > bound)) return false;
     out = sign_of(value);
     return true;
 }
 
 bool dot_filter(const ExactVector::Approximation& pa, const ExactVector::Approximation& pb, Sign& out) {
-    if (!(pa.err < kInf && pb.err < kInf)) return false;
     const Vec3 &a = pa.approx, &b = pb.approx;
     const double p0 = a.x() * b.x(), p1 = a.y() * b.y(), p2 = a.z() * b.z();
     const double value = p0 + p1 + p2;
-    const double permanent = std::fabs(p0) + std::fabs(p1) + std::fabs(p2);
-    const double propagated = pa.err * (norm1(b) + 3 * pb.err) + pb.err * norm1(a);
-    const double bound = (4 * kU * permanent + propagated + kUnderflow) * (1 + 0x1p-40);
+    const double permanent0 = std::fabs(p0) + std::fabs(p1) + std::fabs(p2);
+    const double permanent1 = (a.cwiseAbs() + pa.err).dot(b.cwiseAbs() + pb.err);
+    const double bound = (permanent1 - permanent0 + 4 * kU * permanent0 + 10 * kU * permanent1 + kUnderflow) * (1 + 0x1p-40);
     if (!(std::fabs(value) > bound)) return false;
     out = sign_of(value);
     return true;
@@ -106,26 +115,32 @@ bool dot_filter(const ExactVector::Approximation& pa, const ExactVector::Approxi
 
 bool minor_filter(const ExactVector::Approximation& pa, const ExactVector::Approximation& pb, int i, int j,
                   Sign& out) {
-    if (!(pa.err < kInf && pb.err < kInf)) return false;
     const Vec3 &a = pa.approx, &b = pb.approx;
     const double p = a[i] * b[j], q = a[j] * b[i];
     const double value = p - q;
-    const double propagated = pa.err * (std::fabs(b[i]) + std::fabs(b[j]) + 2 * pb.err) +
-                              pb.err * (std::fabs(a[i]) + std::fabs(a[j]));
-    const double bound = (3 * kU * (std::fabs(p) + std::fabs(q)) + propagated + kUnderflow) * (1 + 0x1p-40);
+    const double permanent0 = std::fabs(p) + std::fabs(q);
+    const double permanent1 = (std::fabs(a[i]) + pa.err[i]) * (std::fabs(b[j]) + pb.err[j]) +
+                              (std::fabs(a[j]) + pa.err[j]) * (std::fabs(b[i]) + pb.err[i]);
+    const double bound = (permanent1 - permanent0 + 3 * kU * permanent0 + 10 * kU * permanent1 + kUnderflow) * (1 + 0x1p-40);
     if (!(std::fabs(value) > bound)) return false;
     out = sign_of(value);
     return true;
 }
 
+// The error of a coordinate rounded to nearest with relative error below 2^-52 (below 2^-51 of
+// the rounded value), and an absolute floor for what falls below the normal range.
+Vec3 rounding_error(const Vec3& a, double floor) {
+    return Vec3(0x1p-51 * std::fabs(a.x()) + floor, 0x1p-51 * std::fabs(a.y()) + floor, 0x1p-51 * std::fabs(a.z()) + floor);
+}
+
 ExactVector::Approximation input_approximation(const Vec3& v) {
     const double m = v.cwiseAbs().maxCoeff();
-    if (m == 0.0) return {Vec3::Zero(), 0.0};
+    if (m == 0.0) return {};
     const int e = binary_exponent(m);
-    ExactVector::Approximation out{Vec3::Zero(), 0.0};
+    ExactVector::Approximation out;
     for (int i = 0; i < 3; ++i) {
         out.approx[i] = detail::times_power_of_two(v[i], 1 - e);
-        if (detail::times_power_of_two(out.approx[i], e - 1) != v[i]) out.err = kUnderflow;  // a tiny coordinate lost bits
+        if (detail::times_power_of_two(out.approx[i], e - 1) != v[i]) out.err[i] = kUnderflow;  // a tiny coordinate lost bits
     }
     return out;
 }
@@ -135,10 +150,11 @@ ExactVector::Approximation exact_approximation(const Exact3& v) {
     for (const Dyadic& x : v) {
         if (!x.is_zero()) top = std::max(top, x.exponent());
     }
-    if (top == std::numeric_limits<std::int64_t>::min()) return {Vec3::Zero(), 0.0};
+    if (top == std::numeric_limits<std::int64_t>::min()) return {};
     // Each coordinate rounded with relative error below 2^-52 on a scale where the largest is
     // in [1, 2); coordinates below the double range flush to 0 (error below 2^-1022).
-    return {Vec3(v[0].to_double_scaled(top), v[1].to_double_scaled(top), v[2].to_double_scaled(top)), 0x1p-50};
+    const Vec3 a(v[0].to_double_scaled(top), v[1].to_double_scaled(top), v[2].to_double_scaled(top));
+    return {a, rounding_error(a, 0x1p-1021)};
 }
 
 Sign exact_sign(const Dyadic& x) {
@@ -279,11 +295,11 @@ ExactVector ExactVector::computed(Exact3 e) {
     out.value_ = plain.allFinite() && plain.cwiseAbs().maxCoeff() > 0x1p-64 && plain.cwiseAbs().maxCoeff() < 0x1p64
                      ? readable(plain)
                      : approximation.approx;
-    // The approximation is kept in the object itself (u_ and v_.x(), unused by this kind):
+    // The approximation is kept in the object itself (u_ and v_, unused by this kind):
     // predicates read it without following the pointer, which on a cone of 10^5 constructed
     // generators is a cache miss per predicate.
     out.u_ = approximation.approx;
-    out.v_ = Vec3(approximation.err, 0.0, 0.0);
+    out.v_ = approximation.err;
     // Packed: words 0-2 the binary exponents, 3-5 each coordinate's limb count times 4 plus its
     // sign + 1, then the limbs. A coordinate of a friction edge or of a ray of A has two or
     // three limbs, so the block is about half of three Dyadic objects (six inline limbs each).
@@ -339,34 +355,45 @@ Exact3 ExactVector::exact() const {
 namespace {
 
 // The certified approximation of sign (p x q) for stored p, q is its product in doubles times
-// 2^scale: |fl(fl(a) - fl(b)) - (a - b)| <= (2u + u^2)(|a| + |b|) per coordinate; scaled so that
-// the largest |a| + |b| lies in [1, 2), the error is below 2^-50 (with the underflow of products,
-// absolute 2^-1075, far below it while that largest is >= 2^-900). No scale outside that range.
-std::optional<int> cross_scale(const Vec3& p, const Vec3& q) {
-    const double b0 = std::fabs(p.y() * q.z()) + std::fabs(p.z() * q.y());
-    const double b1 = std::fabs(p.z() * q.x()) + std::fabs(p.x() * q.z());
-    const double b2 = std::fabs(p.x() * q.y()) + std::fabs(p.y() * q.x());
-    const double b = std::max({b0, b1, b2});
-    if (!(b >= 0x1p-900 && b <= 0x1p900)) return std::nullopt;
-    return 1 - binary_exponent(b);
+// 2^scale: |fl(fl(a) - fl(b)) - (a - b)| <= (2u + u^2)(|a| + |b|) + 2^-1074 per coordinate (the
+// last term for products below the normal range), scaled so that the largest |a| + |b| lies in
+// [1, 2). No scale when that largest is outside [2^-900, 2^900].
+struct CrossScale {
+    int scale;
+    Vec3 sums;  // |a| + |b| of each coordinate, in doubles
+};
+
+std::optional<CrossScale> cross_scale(const Vec3& p, const Vec3& q) {
+    const Vec3 b(std::fabs(p.y() * q.z()) + std::fabs(p.z() * q.y()), std::fabs(p.z() * q.x()) + std::fabs(p.x() * q.z()),
+                 std::fabs(p.x() * q.y()) + std::fabs(p.y() * q.x()));
+    const double m = b.maxCoeff();
+    if (!(m >= 0x1p-900 && m <= 0x1p900)) return std::nullopt;
+    return CrossScale{1 - binary_exponent(m), b};
 }
 
+// The absolute error, on the scale 2^scale, of products below the normal range: 2^(scale - 1072)
+// (twice 2^-1074, doubled for the rounding of |a| + |b|), never below 2^-1000 (so never a
+// subnormal number, which costs the processor about a hundred cycles per operation).
+double underflow_at(int scale) { return scale <= 72 ? kUnderflow : detail::times_power_of_two(1.0, scale - 1072); }
+
 ExactVector::Approximation cross_approximation(const Vec3& p, const Vec3& q, int sign) {
-    const std::optional<int> scale = cross_scale(p, q);
-    if (!scale) return {Vec3::Zero(), kInf};
-    return {times_power_of_two(p.cross(q) * static_cast<double>(sign), *scale), 0x1p-50};
+    const std::optional<CrossScale> s = cross_scale(p, q);
+    if (!s) return {Vec3::Zero(), Vec3::Constant(kInf)};
+    // (2u + u^2)(|a| + |b|) <= 2^-51 fl(|a| + |b|): the sum in doubles errs by at most 2u.
+    return {times_power_of_two(p.cross(q) * static_cast<double>(sign), s->scale),
+            times_power_of_two(s->sums, s->scale - 51) + Vec3::Constant(underflow_at(s->scale))};
 }
 
 }  // namespace
 
 void ExactVector::keep_approximation_shift(const Vec3& base) {
     // base is the wrench's exact value rounded coordinate by coordinate (relative error below
-    // 2^-52: below 2^-51 on the scale where the largest |a| + |b| is in [1, 2), within the 2^-50
-    // stated). The shift is the power of two that takes value_ to base on that scale, if one
-    // does exactly (value_ is base scaled for reading, unless it was divided by an integer gcd).
-    const std::optional<int> scale = cross_scale(u_, v_);
+    // 2^-52). The shift is the power of two that takes value_ to base on the scale where the
+    // largest |a| + |b| is in [1, 2), if one does exactly (value_ is base scaled for reading,
+    // unless it was divided by an integer gcd).
+    const std::optional<CrossScale> scale = cross_scale(u_, v_);
     if (!scale) return;
-    const Vec3 target = times_power_of_two(base, *scale);
+    const Vec3 target = times_power_of_two(base, scale->scale);
     const double mv = value_.cwiseAbs().maxCoeff(), mt = target.cwiseAbs().maxCoeff();
     if (mv == 0.0 || mt == 0.0) {
         if (mv == 0.0 && mt == 0.0) approx_shift_ = 0;
@@ -380,9 +407,15 @@ ExactVector::Approximation ExactVector::approximation() const {
     switch (kind_) {
         case Kind::Input: return input_approximation(value_);
         case Kind::Cross:
-            if (approx_shift_ != kNoShift) return {times_power_of_two(value_, approx_shift_), 0x1p-50};
+            if (approx_shift_ != kNoShift) {
+                // Each coordinate rounded from the exact one (relative error below 2^-52), on a
+                // scale that takes it below 2^65: a coordinate below the normal range erred by
+                // at most 2^-1074 before that scaling.
+                const Vec3 a = times_power_of_two(value_, approx_shift_);
+                return {a, rounding_error(a, 0x1p-990)};
+            }
             return cross_approximation(u_, v_, sign_);
-        case Kind::Computed: return {sign_ > 0 ? u_ : Vec3(-u_), v_.x()};
+        case Kind::Computed: return {sign_ > 0 ? u_ : Vec3(-u_), v_};
     }
     return {};
 }
@@ -399,8 +432,10 @@ bool ExactVector::same_construction(const ExactVector& other) const {
 
 ExactVector::Filter ExactVector::filter() const {
     const Approximation a = approximation();
-    if (!(a.err < kInf)) return {a.approx, kInf};
-    return {a.approx, (3 * a.err + 3.01 * kU * norm1(a.approx)) * (1 + 0x1p-40)};
+    // |(v/2^k - approx) . w| <= sum_i err_i |w_i| <= (sum_i err_i) max |w_i|.
+    const double err = a.err.sum();
+    if (!(err < kInf)) return {a.approx, kInf};
+    return {a.approx, (err + 3.01 * kU * norm1(a.approx)) * (1 + 0x1p-40)};
 }
 
 Sign ExactVector::dot_sign(const Vec3& w) const { return momentlab::dot_sign(*this, ExactVector::input(w)); }
@@ -429,6 +464,7 @@ ExactVector ExactVector::signed_permuted(const Mat3& p) const {
         }
         e.value_ = p * value_;
         e.u_ = p * u_;
+        e.v_ = p.cwiseAbs() * v_;  // the errors move with their coordinates
         return e;
     }
     ExactVector e = *this;

@@ -51,6 +51,47 @@ const ExactVector& in(const ExactVector& v) { return v; }
 const Vec3& approx(const Vec3& v) { return v; }
 const Vec3& approx(const ExactVector& v) { return v.value(); }
 
+// Powers of two that bring the coordinates of the generators to comparable sizes, for the
+// floating-point hints (pivot guesses, sort keys), which are taken on D v instead of v. The
+// wrenches of a scene 2^40 long have torques 2^40 times their forces: on v itself they all
+// round to nearly one direction and the keys are noise (every comparison then exact); on D v
+// their angles are as clear as in the scene of length 1. D is a positive diagonal matrix, so
+// det(D p, D u, D v) = det(D) det(p, u, v) has the sign of det(p, u, v): only the hints change,
+// never an exact order. The identity (nothing changes) unless, for some coordinate, no
+// generator has it above 2^-16 of its largest.
+template <class G>
+Vec3 balance(std::span<const G> g) {
+    constexpr double kSmall = 0x1p-16;
+    int seen = 0;  // bit i: some generator has coordinate i above kSmall of its largest
+    for (const G& v : g) {
+        const Vec3 a = approx(v).cwiseAbs();
+        const double m = kSmall * a.maxCoeff();
+        for (int i = 0; i < 3; ++i) {
+            if (a[i] > m) seen |= 1 << i;
+        }
+        if (seen == 7) return Vec3::Ones();
+    }
+    Vec3 top = Vec3::Zero();  // coordinate i's largest share of its generator's largest
+    for (const G& v : g) {
+        const Vec3 a = approx(v).cwiseAbs();
+        const double m = a.maxCoeff();
+        if (m > 0) top = top.cwiseMax(a / m);
+    }
+    // A small coordinate is scaled to just below its generator's largest (so no hint overflows
+    // where the generators themselves are finite), by at most 2^1000.
+    Vec3 d = Vec3::Ones();
+    for (int i = 0; i < 3; ++i) {
+        if (top[i] > 0 && top[i] <= kSmall) d[i] = std::ldexp(1.0, std::min(-std::ilogb(top[i]) - 1, 1000));
+    }
+    return d;
+}
+
+// The hint of v: D v.
+template <class G>
+Vec3 hint(const G& v, const Vec3& d) {
+    return approx(v).cwiseProduct(d);
+}
+
 // a x e_k, exactly: its coordinates are +-a_i or 0.
 ExactVector axis_cross(const Vec3& a, int k) { return in(a.cross(Vec3::Unit(k))); }
 ExactVector axis_cross(const ExactVector& a, int k) { return ExactVector::cross(a, in(Vec3::Unit(k)), 1); }
@@ -291,9 +332,11 @@ Parts build_planar(std::span<const G> g, const G& a, const G& b) {
     // Keys in the coordinate plane across the axis, where the exact orientation is the
     // sign of (u x v)[axis]: the same sense, so the keys increase with the exact order.
     const int ci = (ord.axis + 1) % 3, cj = (ord.axis + 2) % 3;
+    const Vec3 d = balance(g);
+    const Vec3 x = hint(a, d);
     for (std::size_t i = 0; i < g.size(); ++i) {
         const int half = &g[i] == &a ? 0 : ord.half(g[i]);  // a itself: along a, no exact zero test
-        const Vec3 &x = approx(a), &y = approx(g[i]);
+        const Vec3 y = hint(g[i], d);
         const double along = x[ci] * y[ci] + x[cj] * y[cj];
         const double across = x[ci] * y[cj] - x[cj] * y[ci];
         items.push_back({g[i], pseudo_angle(along, across, half), static_cast<int>(i), half});
@@ -369,7 +412,7 @@ Parts half_space_parts(const G& p, const G& b, const G& l, const G& w) {
 }
 
 template <class G>
-PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& witness_hint, bool facets) {
+PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& witness_hint, bool facets, const Vec3& d) {
     PivotAnalysis out;
     const G& p = g[pivot];
     bool antiparallel = false;
@@ -390,9 +433,10 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
         witness_side = det_sign(p, r, g[i]);
     }
     AngularOrder<G> ord{AngularOrder<G>::Mode::Pivot, 0, p, r, *witness};
-    // An orthonormal frame (e1, e2) of the quotient by p, e1 along r: hints for the keys.
-    const Vec3 ph = approx(p).normalized();
-    const Vec3 e1 = (approx(r) - approx(r).dot(ph) * ph).normalized();
+    // An orthonormal frame (e1, e2) of the quotient by D p, e1 along D r: hints for the keys.
+    const Vec3 ph = hint(p, d).normalized();
+    const Vec3 hr = hint(r, d);
+    const Vec3 e1 = (hr - hr.dot(ph) * ph).normalized();
     const Vec3 e2 = ph.cross(e1);
     Scratch scratch;
     ScratchVector<Item<G>> items(&scratch);
@@ -413,7 +457,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
                 half = det_sign(p, g[i], *witness) == witness_side ? 0 : 2;
             }
         }
-        const Vec3& u = approx(g[i]);
+        const Vec3 u = hint(g[i], d);
         items.push_back({g[i], pseudo_angle(u.dot(e1), u.dot(e2), half), static_cast<int>(i), half});
     }
     // Ties: nearer to p (along the great circle through p) first. In the plane of p and u,
@@ -633,12 +677,14 @@ Parts build_by_dual_clip(std::span<const G> g, std::size_t i0, std::size_t i1, s
 // decision after them is exact. The generator farthest in angle from a direction d: when all
 // generators lie within 90 degrees of d it is a vertex of their spherical hull (the angular
 // distance from d is convex there), up to rounding.
+// Taken on the hints D v (balance).
 template <class G>
-std::size_t farthest_from(std::span<const G> g, const Vec3& d) {
+std::size_t farthest_from(std::span<const G> g, const Vec3& d, const Vec3& scale) {
     std::size_t best = 0;
     double best_cos = std::numeric_limits<double>::infinity();  // d need not be a unit vector
     for (std::size_t i = 0; i < g.size(); ++i) {
-        const double c = d.dot(approx(g[i])) / approx(g[i]).norm();
+        const Vec3 u = hint(g[i], scale);
+        const double c = d.dot(u) / u.norm();
         if (c < best_cos) {
             best_cos = c;
             best = i;
@@ -654,7 +700,7 @@ std::size_t farthest_from(std::span<const G> g, const Vec3& d) {
     const Vec3 unit = d / length;
     double best_chord = -1.0;
     for (std::size_t i = 0; i < g.size(); ++i) {
-        const double chord = (approx(g[i]).normalized() - unit).squaredNorm();
+        const double chord = (hint(g[i], scale).normalized() - unit).squaredNorm();
         if (chord > best_chord) {
             best_chord = chord;
             best = i;
@@ -665,10 +711,13 @@ std::size_t farthest_from(std::span<const G> g, const Vec3& d) {
 
 // The mean direction of the generators is inside the cone; the farthest from it is the guess.
 template <class G>
-std::size_t guess_extreme(std::span<const G> g) {
+std::size_t guess_extreme(std::span<const G> g, const Vec3& scale) {
     Vec3 mean = Vec3::Zero();
-    for (const G& v : g) mean += approx(v) / approx(v).norm();
-    return farthest_from(g, mean);
+    for (const G& v : g) {
+        const Vec3 u = hint(v, scale);
+        mean += u / u.norm();
+    }
+    return farthest_from(g, mean, scale);
 }
 
 template <class G>
@@ -677,11 +726,12 @@ Parts build_spatial(std::span<const G> g, std::size_t ia, std::size_t ib, std::s
     // gets one more guess, the generator most opposite to it.
     // The generator farthest from the mean direction: extreme unless the cone is not pointed (an
     // arbitrary first pivot, interior to a pointed cone, costs a second analysis or the clip).
-    std::size_t pivot = g.size() > 3 ? guess_extreme(g) : ia;
+    const Vec3 scale = balance(g);
+    std::size_t pivot = g.size() > 3 ? guess_extreme(g, scale) : ia;
     bool second_guess = false;
     for (int attempt = 0; attempt < 3; ++attempt) {
         if (attempt > 0) ++ConeBuilder::stats().retries;
-        PivotAnalysis pa = analyse_pivot(g, pivot, g[ic], facets);
+        PivotAnalysis pa = analyse_pivot(g, pivot, g[ic], facets, scale);
         if (pa.parts) {
             ++ConeBuilder::stats().by_pivot;
             return std::move(*pa.parts);
@@ -690,7 +740,7 @@ Parts build_spatial(std::span<const G> g, std::size_t ia, std::size_t ib, std::s
             pivot = static_cast<std::size_t>(pa.retry_pivot);
         } else if (pa.interior && !second_guess) {
             second_guess = true;
-            pivot = farthest_from(g, approx(g[pivot]));
+            pivot = farthest_from(g, hint(g[pivot], scale), scale);
         } else {
             break;
         }

@@ -79,7 +79,7 @@ private:
     Sign sign_on_axis(const ExactVector& v) const {
         const ExactVector::Approximation a = v.approximation();
         const double x = a.approx[axis_];
-        if (std::fabs(x) > a.err) return x > 0 ? Sign::Positive : Sign::Negative;
+        if (std::fabs(x) > a.err[axis_]) return x > 0 ? Sign::Positive : Sign::Negative;
         return v.exact()[static_cast<std::size_t>(axis_)].sign();
     }
     struct Less {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <iostream>
 #include <map>
 
 #include "../common/sizes.hpp"
@@ -244,6 +245,56 @@ TEST(ConeLaws, NarrowConesAreFoundFromAnExtremePivot) {
         ++built;
     }
     EXPECT_EQ(built, testing::sized(40));
+}
+
+// The wrenches of one scene at lengths 1, 2^40 and 2^-40 (points scaled, torques with them):
+// the same cone (as many rays and facets, the same generators extreme) for as many exact-vector
+// predicates within 25%. The floating-point hints are taken with the torque coordinate brought
+// back to the forces' size (balance, src/geometry/cone_build.cpp): on the raw coordinates every
+// wrench of the long scene rounds to nearly one direction, the sort keys are noise, and the
+// exact sort that takes over made several times as many predicates.
+TEST(ConeLaws, ScalingTheTorquesCostsNoMorePredicates) {
+    testing::Random rnd(4040);
+    for (int i = 0; i < 6; ++i) {
+        const int n = rnd.integer(200, 600);
+        std::vector<Vec2> points, normals;
+        for (int j = 0; j < n; ++j) {  // a cradle: points on a half ring, normals tilted inwards
+            const double t = rnd.uniform(3.3, 6.1), tilt = i % 2 ? rnd.uniform(0.15, 0.25) : rnd.uniform(-0.3, 0.3);
+            points.emplace_back(std::cos(t), std::sin(t));
+            normals.emplace_back(-std::cos(t + tilt), -std::sin(t + tilt));
+        }
+        std::vector<long> predicates;
+        std::vector<std::vector<int>> extreme;
+        std::vector<std::size_t> facets;
+        std::vector<std::string> kinds;
+        for (const int k : {0, 40, -40}) {
+            std::vector<ExactVector> g;
+            for (int j = 0; j < n; ++j) g.push_back(ExactVector::wrench(std::ldexp(1.0, k) * points[j], normals[j]));
+            exact_stats() = {};
+            const Cone c = Cone::from_generators(g);
+            predicates.push_back(exact_stats().filtered + exact_stats().exact);
+            // Which generators are extreme: each ray is a positive multiple of one (exact test).
+            std::vector<int> which;
+            for (const ExactVector& r : c.rays()) {
+                for (int j = 0; j < n; ++j) {
+                    if (parallel(r, g[static_cast<std::size_t>(j)]) && dot_sign(r, g[static_cast<std::size_t>(j)]) == Sign::Positive) which.push_back(j);
+                }
+            }
+            std::sort(which.begin(), which.end());
+            extreme.push_back(which);
+            facets.push_back(c.facets().size());
+            kinds.push_back(c.kind());
+        }
+        std::cout << "cone " << i << " (" << kinds[0] << ", " << extreme[0].size() << " rays of " << n
+                  << "): exact-vector predicates at lengths 1, 2^40, 2^-40: " << predicates[0] << ", " << predicates[1]
+                  << ", " << predicates[2] << "\n";
+        for (std::size_t s = 1; s < 3; ++s) {
+            EXPECT_EQ(extreme[s], extreme[0]) << "cone " << i;
+            EXPECT_EQ(facets[s], facets[0]) << "cone " << i;
+            EXPECT_EQ(kinds[s], kinds[0]) << "cone " << i;
+            EXPECT_LE(predicates[s], predicates[0] * 5 / 4) << "cone " << i << ": " << predicates[s] << " predicates against " << predicates[0];
+        }
+    }
 }
 
 // cone_holds (no facets built for a pointed full-dimensional cone) against brute-force exact

@@ -97,11 +97,13 @@ public:
     [[nodiscard]] ExactVector transformed(const ExactMatrix& m) const;
 
     /// A certified approximation: the exact vector is 2^k (approx + d) for some integer k, with
-    /// |d_i| <= err and max |approx_i| <= 2; err is +inf when there is none (then every
-    /// predicate takes the exact path).
+    /// |d_i| <= err_i coordinate by coordinate and max |approx_i| <= 2; err is +inf when there
+    /// is none (then every predicate takes the exact path). Bounds per coordinate make the
+    /// filters blind to a scaling of one coordinate: a scene 2^40 times larger has torques 2^40
+    /// times larger than its forces, and its wrenches keep every bit of their forces.
     struct Approximation {
         Vec3 approx = Vec3::Zero();
-        double err = 0.0;
+        Vec3 err = Vec3::Zero();
     };
     [[nodiscard]] Approximation approximation() const;
 
