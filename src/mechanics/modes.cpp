@@ -11,6 +11,7 @@
 #include "momentlab/mechanics/modes.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <cstdint>
@@ -22,6 +23,7 @@
 
 #include "checks.hpp"
 #include "mode_walk.hpp"
+#include "momentlab/core/parallel.hpp"
 
 namespace momentlab {
 namespace {
@@ -315,6 +317,9 @@ ModeWalk::ModeWalk(const std::vector<Contact>& contacts, Closed how) {
 // Up to this many faces every contact is tested on every face (the bowl of 10^5 contacts has
 // 10): below about log2(n) of them the tests cost less than the binary searches.
 constexpr std::size_t kFewFaces = 16;
+// From this many contacts their searches are shared out to two threads (a thread costs tens of
+// microseconds; a search about one).
+constexpr std::size_t kTwoThreadLocate = 2000;
 
 std::vector<std::vector<int>> ModeWalk::closed_sets(const std::vector<Face>& faces, Closed how) const {
     std::vector<std::vector<int>> out(faces.size());
@@ -365,28 +370,48 @@ std::vector<std::vector<int>> ModeWalk::closed_sets(const std::vector<Face>& fac
         const auto row = facets_of_ray.row(r);
         if (row.size() == 2) ray_between[key(static_cast<std::size_t>(row[0]), static_cast<std::size_t>(row[1]))] = static_cast<int>(r);
     }
-    std::vector<std::vector<int>> on_facet(k), on_ray(a_.rays().size());
-    for (std::size_t j = 0; j < n; ++j) {
-        const ExactVector& v = normals_[j];
-        const int hv = half(v);
-        if (hv < 0) continue;  // along c: inside A*
-        const auto not_after = [&](std::size_t t) {  // the angle of ray t is at most v's
-            if (ray_half[t] != hv) return ray_half[t] < hv;
-            return hv == 0 || hv == 2 || det_sign(c, f[order[t]], v) != Sign::Negative;
-        };
-        std::size_t lo = 0, hi = k;  // not_after(lo), !not_after(hi) (hi = k: past the end)
-        while (hi - lo > 1) {
-            const std::size_t mid = lo + (hi - lo) / 2;
-            (not_after(mid) ? lo : hi) = mid;
+    // The contacts closed on each facet and on each ray between two facets, found for two halves
+    // of the contacts apart (on two threads for large scenes: the searches share nothing they
+    // write) and joined in order.
+    struct Found {
+        std::vector<std::vector<int>> on_facet, on_ray;
+    };
+    std::array<Found, 2> found;
+    detail::for_each_index(2, n >= kTwoThreadLocate, [&](std::size_t part) {
+        Found& mine = found[part];
+        mine.on_facet.resize(k);
+        mine.on_ray.resize(a_.rays().size());
+        for (std::size_t j = n * part / 2; j < n * (part + 1) / 2; ++j) {
+            const ExactVector& v = normals_[j];
+            const int hv = half(v);
+            if (hv < 0) continue;  // along c: inside A*
+            const auto not_after = [&](std::size_t t) {  // the angle of ray t is at most v's
+                if (ray_half[t] != hv) return ray_half[t] < hv;
+                return hv == 0 || hv == 2 || det_sign(c, f[order[t]], v) != Sign::Negative;
+            };
+            std::size_t lo = 0, hi = k;  // not_after(lo), !not_after(hi) (hi = k: past the end)
+            while (hi - lo > 1) {
+                const std::size_t mid = lo + (hi - lo) / 2;
+                (not_after(mid) ? lo : hi) = mid;
+            }
+            const std::size_t i = order[lo], i2 = order[(lo + 1) % k];
+            if (parallel(v, f[i])) {
+                mine.on_facet[i].push_back(static_cast<int>(j));
+            } else if (det_sign(f[i], f[i2], v) == Sign::Zero) {
+                const auto it = ray_between.find(key(i, i2));
+                assert(it != ray_between.end());
+                mine.on_ray[static_cast<std::size_t>(it->second)].push_back(static_cast<int>(j));
+            }
         }
-        const std::size_t i = order[lo], i2 = order[(lo + 1) % k];
-        if (parallel(v, f[i])) {
-            on_facet[i].push_back(static_cast<int>(j));
-        } else if (det_sign(f[i], f[i2], v) == Sign::Zero) {
-            const auto it = ray_between.find(key(i, i2));
-            assert(it != ray_between.end());
-            on_ray[static_cast<std::size_t>(it->second)].push_back(static_cast<int>(j));
-        }
+    });
+    std::vector<std::vector<int>> on_facet = std::move(found[0].on_facet), on_ray = std::move(found[0].on_ray);
+    for (std::size_t i = 0; i < k; ++i) {
+        const auto& more = found[1].on_facet[i];
+        on_facet[i].insert(on_facet[i].end(), more.begin(), more.end());
+    }
+    for (std::size_t r = 0; r < on_ray.size(); ++r) {
+        const auto& more = found[1].on_ray[r];
+        on_ray[r].insert(on_ray[r].end(), more.begin(), more.end());
     }
     for (std::size_t i = 0; i < faces.size(); ++i) {
         const Face& face = faces[i];

@@ -224,10 +224,15 @@ TEST(Modes, LocatingClosedContactsAgreesWithTestingEveryFace) {
         }
         return scene;
     };
-    for (int i = 0; i < 400; ++i) {
-        Scene scene = i % 5 == 4 ? floors_and_walls() : testing::random_scene(rnd, families[i % 4], 40, i % 3 == 2);
+    for (int i = 0; i < 406; ++i) {
+        Scene scene = i % 5 == 4 || i >= 400 ? floors_and_walls() : testing::random_scene(rnd, families[i % 4], 40, i % 3 == 2);
         if (i % 2 == 1 && !scene.contacts.empty()) {  // exact repeats: the same normal line twice
             for (int r = 0; r < 4; ++r) scene.contacts.push_back(scene.contacts[static_cast<std::size_t>(rnd.integer(0, static_cast<int>(scene.contacts.size()) - 1))]);
+        }
+        // The last six: over 2,000 contacts (repeats in random order), whose searches are shared
+        // out to two threads and joined.
+        while (i >= 400 && scene.contacts.size() < 2100) {
+            scene.contacts.push_back(scene.contacts[static_cast<std::size_t>(rnd.integer(0, static_cast<int>(scene.contacts.size()) - 1))]);
         }
         struct Seen {
             std::size_t index, face;
