@@ -5,7 +5,9 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <iostream>
 #include <cstring>
 #include <limits>
 #include <tuple>
@@ -373,6 +375,44 @@ TEST(ExactVector, ApproximationBoundsEachCoordinate) {
         }
     }
     EXPECT_GT(checked, 100000);
+}
+
+// Determinants of three forces' wrenches far from the origin: contacts on a circle of radius 1
+// about o, normals nearly through its centre (both rounded to 9 digits, as the bowl family),
+// for o = 0, 10^3, 10^6 and 10^12. Their torques are near o x f, whose rounding hides what tells
+// the wrenches apart; det_sign takes them about the first force's point when the differences of
+// the points are exact (force_det_filter, src/core/exact.cpp). The signs against GMP (with
+// negated wrenches, whose signs the product takes), and the exact paths: at most 5% (without
+// force_det_filter every one of these determinants took the Dyadic path, at every offset; with
+// it 371 at 10^3, where the rounded points put the normal lines within about 10^-13 of
+// concurrent, and none at 10^6 and 10^12). At the origin the wrenches are doubles (p x n = 0).
+TEST(ExactVector, ForcesFarFromTheOriginAreDecidedAboutTheirPoints) {
+    std::vector<long> exact_paths;
+    for (const double offset : {0.0, 1e3, 1e6, 1e12}) {
+        testing::Random r(12);
+        exact_stats() = {};
+        const auto rounded = [](double x) { return std::round(x * 1e9) / 1e9; };
+        for (int i = 0; i < 20000; ++i) {
+            std::array<ExactVector, 3> w;
+            std::array<reference::QVec, 3> q;
+            for (std::size_t k = 0; k < 3; ++k) {
+                const double t = r.uniform(3.2, 6.2);
+                const Vec2 p(offset + rounded(std::cos(t)), offset + rounded(std::sin(t)));
+                const Vec2 n(-rounded(std::cos(t)), -rounded(std::sin(t)));
+                w[k] = ExactVector::wrench(p, n);
+                q[k] = reference::wrench(Q(p.x()), Q(p.y()), Q(n.x()), Q(n.y()));
+                if (r.integer(0, 3) == 0) {
+                    w[k] = w[k].negated();
+                    q[k] = reference::QVec{-q[k][0], -q[k][1], -q[k][2]};
+                }
+            }
+            ASSERT_EQ(to_int(det_sign(w[0], w[1], w[2])), sgn(reference::det(q[0], q[1], q[2]))) << "offset " << offset << ", " << i;
+        }
+        exact_paths.push_back(exact_stats().exact);
+    }
+    std::cout << "[ExactVector] Dyadic paths of 20,000 determinants at offsets 0, 1e3, 1e6, 1e12: " << exact_paths[0] << ", "
+              << exact_paths[1] << ", " << exact_paths[2] << ", " << exact_paths[3] << "\n";
+    for (std::size_t k = 1; k < exact_paths.size(); ++k) EXPECT_LE(exact_paths[k], 1000) << "offset number " << k;
 }
 
 // The filters are blind to a scaling of one coordinate by a power of two: the wrenches of a

@@ -77,6 +77,10 @@ public:
     /// cross product (p.y, -p.x, 1) x (d.y, -d.x, 0) of two stored vectors, so it holds no
     /// Dyadic numbers (a contact's normal and tangent wrenches, 10^5 of each in a big scene).
     static ExactVector wrench(const Vec2& p, const Vec2& d);
+    /// For a vector stored as sign (u x v) with u.z = 1 and v.z = 0, which is sign times the
+    /// wrench of the force (-v.y, v.x) through (-u.y, u.x) (every wrench() in the readable range):
+    /// that point, that direction and the sign. False for any other vector.
+    [[nodiscard]] bool force(Vec2& point, Vec2& direction, int& sign) const;
 
     /// The rounded value, scaled by a power of two (or, for integers, divided by their gcd) to a
     /// readable magnitude: the same direction, always finite. Exact for inputs.
