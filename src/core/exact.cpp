@@ -564,11 +564,15 @@ bool force_det_filter(const ExactVector& a, const ExactVector& b, const ExactVec
 Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c) {
     if (!a.is_constructed() && !b.is_constructed() && !c.is_constructed()) return det_sign(a.value(), b.value(), c.value());
     Sign s = Sign::Zero;
-    if (det_filter(a.approximation(), b.approximation(), c.approximation(), s) || force_det_filter(a, b, c, s)) {
+    if (det_filter(a.approximation(), b.approximation(), c.approximation(), s)) {
         ++g_stats.filtered;
         return s;
     }
     if (a.same_construction(b) || b.same_construction(c) || a.same_construction(c)) return Sign::Zero;  // two parallel columns
+    if (force_det_filter(a, b, c, s)) {
+        ++g_stats.filtered;
+        return s;
+    }
     return exact_sign(det(a.exact(), b.exact(), c.exact()));
 }
 

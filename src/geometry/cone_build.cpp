@@ -412,7 +412,7 @@ Parts half_space_parts(const G& p, const G& b, const G& l, const G& w) {
 }
 
 template <class G>
-PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& witness_hint, bool facets, const Vec3& d) {
+PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& witness_hint, bool facets, const Vec3& scale) {
     PivotAnalysis out;
     const G& p = g[pivot];
     bool antiparallel = false;
@@ -434,8 +434,8 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     }
     AngularOrder<G> ord{AngularOrder<G>::Mode::Pivot, 0, p, r, *witness};
     // An orthonormal frame (e1, e2) of the quotient by D p, e1 along D r: hints for the keys.
-    const Vec3 ph = hint(p, d).normalized();
-    const Vec3 hr = hint(r, d);
+    const Vec3 ph = hint(p, scale).normalized();
+    const Vec3 hr = hint(r, scale);
     const Vec3 e1 = (hr - hr.dot(ph) * ph).normalized();
     const Vec3 e2 = ph.cross(e1);
     Scratch scratch;
@@ -457,7 +457,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
                 half = det_sign(p, g[i], *witness) == witness_side ? 0 : 2;
             }
         }
-        const Vec3 u = hint(g[i], d);
+        const Vec3 u = hint(g[i], scale);
         items.push_back({g[i], pseudo_angle(u.dot(e1), u.dot(e2), half), static_cast<int>(i), half});
     }
     // Ties: nearer to p (along the great circle through p) first. In the plane of p and u,
