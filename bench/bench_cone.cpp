@@ -15,11 +15,13 @@
 #include <string>
 #include <vector>
 
+#include "geometry/cone_build.hpp"
 #include "momentlab/geometry/cone.hpp"
 
 namespace {
 
 using momentlab::Cone;
+using momentlab::ConeBuilder;
 using momentlab::Vec2;
 using momentlab::Vec3;
 
@@ -98,6 +100,14 @@ void BM_momentlab(benchmark::State& state) {
     state.counters["expected"] = static_cast<double>(expected_facets(f, state.range(1)));
 }
 
+// The same cones with the chart path switched off (ConeBuilder::use_chart): the pivot path that
+// built every cone before it, for the small sizes the chart takes (up to 128 generators).
+void BM_momentlab_pivot(benchmark::State& state) {
+    ConeBuilder::use_chart() = false;
+    BM_momentlab(state);
+    ConeBuilder::use_chart() = true;
+}
+
 void BM_hull2d(benchmark::State& state) {
     const auto f = static_cast<Family>(state.range(0));
     const auto g = make(f, state.range(1));
@@ -168,6 +178,7 @@ void sizes(benchmark::internal::Benchmark* b, std::int64_t max_n) {
 }
 
 BENCHMARK(BM_momentlab)->Apply([](auto* b) { sizes(b, 1000000); });
+BENCHMARK(BM_momentlab_pivot)->Apply([](auto* b) { sizes(b, 100); });
 BENCHMARK(BM_hull2d)->Apply([](auto* b) { sizes(b, 1000000); });
 BENCHMARK(BM_cdd<false>)->Name("BM_cdd_float")->Apply([](auto* b) { sizes(b, 10000); })->Iterations(1);
 BENCHMARK(BM_cdd<true>)->Name("BM_cdd_gmp")->Apply([](auto* b) { sizes(b, 1000); })->Iterations(1);
@@ -200,8 +211,9 @@ public:
     void print_ratios() const {
         std::printf("\nRatios (time / time of the plain 2-D monotone-chain hull of the same points);"
                     " facets found vs expected\n");
-        std::printf("%-28s %8s %11s %11s %9s %11s %9s %11s %9s  %s\n", "family", "n", "hull2d ms",
-                    "momentlab", "ratio", "cdd float", "ratio", "cdd gmp", "ratio", "facets: ours / cdd float / expected");
+        std::printf("%-28s %8s %11s %11s %9s %11s %9s %11s %9s %11s %9s  %s\n", "family", "n", "hull2d ms",
+                    "momentlab", "ratio", "pivot path", "ratio", "cdd float", "ratio", "cdd gmp", "ratio",
+                    "facets: ours / cdd float / expected");
         const auto& ours = rows.at("BM_momentlab");
         for (const auto& [key, row] : ours) {
             const double hull = rows.at("BM_hull2d").at(key).ms;
@@ -213,7 +225,12 @@ public:
             };
             const Row* cf = get("BM_cdd_float");
             const Row* cg = get("BM_cdd_gmp");
-            char cf_ms[32] = "-", cf_r[32] = "-", cg_ms[32] = "-", cg_r[32] = "-", cf_n[32] = "-";
+            const Row* pv = get("BM_momentlab_pivot");
+            char cf_ms[32] = "-", cf_r[32] = "-", cg_ms[32] = "-", cg_r[32] = "-", cf_n[32] = "-", pv_ms[32] = "-", pv_r[32] = "-";
+            if (pv) {
+                std::snprintf(pv_ms, sizeof pv_ms, "%.4g", pv->ms);
+                std::snprintf(pv_r, sizeof pv_r, "%.1f", pv->ms / hull);
+            }
             if (cf) {
                 std::snprintf(cf_ms, sizeof cf_ms, "%.4g", cf->ms);
                 std::snprintf(cf_r, sizeof cf_r, "%.1f", cf->ms / hull);
@@ -227,9 +244,9 @@ public:
             // count (the same problem in the chart z = 1).
             auto expected = expected_facets(static_cast<Family>(key.first), key.second);
             if (expected < 0) expected = static_cast<std::int64_t>(rows.at("BM_hull2d").at(key).facets);
-            std::printf("%-28s %8lld %11.4g %11.4g %9.2f %11s %9s %11s %9s  %.0f / %s / %s\n",
+            std::printf("%-28s %8lld %11.4g %11.4g %9.2f %11s %9s %11s %9s %11s %9s  %.0f / %s / %s\n",
                         kFamilyNames[key.first], static_cast<long long>(key.second), hull, row.ms,
-                        row.ms / hull, cf_ms, cf_r, cg_ms, cg_r, row.facets, cf_n,
+                        row.ms / hull, pv_ms, pv_r, cf_ms, cf_r, cg_ms, cg_r, row.facets, cf_n,
                         std::to_string(expected).c_str());
         }
     }

@@ -65,10 +65,12 @@ Vec3 scaled_by_power_of_two(const Vec3& v) {
 // left as they are unless far from 1, then scaled by a power of two. Neither changes the
 // direction.
 Vec3 readable(const Vec3& v) {
+    // |v_i| < 2^53 first, so that the conversion to a 64-bit integer is defined and exact for
+    // integers (a conversion instead of std::floor, which is a call without SSE4.1).
     const double limit = 0x1p53;
     bool integral = true;
     for (int i = 0; i < 3; ++i) {
-        if (v[i] != std::floor(v[i]) || std::fabs(v[i]) >= limit) integral = false;
+        if (!(std::fabs(v[i]) < limit) || static_cast<double>(static_cast<long long>(v[i])) != v[i]) integral = false;
     }
     if (integral) {
         long long g = 0;

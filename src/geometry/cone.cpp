@@ -19,11 +19,26 @@ Incidence Incidence::transposed(std::size_t columns) const {
     t.offsets_.assign(columns + 1, 0);
     for (std::size_t c = 0; c < columns; ++c) t.offsets_[c + 1] = t.offsets_[c] + count[c + 1];
     t.indices_.resize(indices_.size());
+    t.rows_ = static_cast<int>(columns);
     std::vector<int> fill(t.offsets_.begin(), t.offsets_.end() - 1);
     for (std::size_t j = 0; j < size(); ++j) {
         for (int i : row(j)) t.indices_[static_cast<std::size_t>(fill[static_cast<std::size_t>(i)]++)] = static_cast<int>(j);
     }
     return t;
+}
+
+Incidence Incidence::cyclic(std::size_t k) {
+    Incidence c;
+    c.indices_.resize(2 * k);
+    for (std::size_t i = 0; i + 1 < k; ++i) {
+        c.indices_[2 * i] = static_cast<int>(i);
+        c.indices_[2 * i + 1] = static_cast<int>(i + 1);
+    }
+    c.indices_[2 * k - 2] = 0;  // the last facet: rays 0 and k - 1, increasing
+    c.indices_[2 * k - 1] = static_cast<int>(k - 1);
+    c.rows_ = static_cast<int>(k);
+    c.stride_ = 2;
+    return c;
 }
 
 Cone::Cone() {

@@ -28,6 +28,7 @@
 #include <numeric>
 #include <optional>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 namespace momentlab {
@@ -562,16 +563,190 @@ Parts pointed_from_cycle(std::span<const G> g, std::span<const int> cycle, bool 
     const std::size_t k = cycle.size();
     parts.rays.reserve(k);
     parts.facets.reserve(k);
-    parts.facet_rays.reserve(k, 2);
     for (std::size_t i = 0; i < k; ++i) {
         const G& a = g[static_cast<std::size_t>(cycle[i])];
-        const G& b = g[static_cast<std::size_t>(cycle[(i + 1) % k])];
+        const G& b = g[static_cast<std::size_t>(cycle[i + 1 < k ? i + 1 : 0])];
         parts.rays.push_back(in(a));
         parts.facets.push_back(ExactVector::cross(a, b, 1));
-        const int a_i = static_cast<int>(i), b_i = static_cast<int>((i + 1) % k);
-        parts.facet_rays.add_row({std::min(a_i, b_i), std::max(a_i, b_i)});
     }
+    parts.facet_rays = Incidence::cyclic(k);
     return parts;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Rank 3, pointed, seen in a chart: when a direction d has d . g > 0 for every generator
+// (exactly), the cone is pointed and its extreme rays are the vertices of the convex hull of
+// the points g / (d . g) of the plane d . x = 1, where the orientation of three points is the
+// sign of det(a, b, c). Andrew's monotone chain finds them after sorting the points by two
+// coordinates of that plane, both exact: X, where X(a) < X(b) iff det(e, a, b) > 0 for an e
+// with e . d = 0 exactly, then Y along e (b = a + t e in the chart iff a x b is t times a
+// positive multiple of a x e). The frame (X, Y) turns the way det does, so the chain comes out
+// counter-clockwise. d is a floating-point guess (the mean of the generators' directions); the
+// sort starts from floating-point keys and an exact insertion pass repairs it. Nothing is
+// decided here when the guess fails (some d . g <= 0), when the repair runs long, or when the
+// hull is flat (rank 2): the pivot path then builds the cone. Parallel generators are one
+// point of the chart; the one given first stands for them. A cone of a few generators costs
+// a few determinants per generator and no allocation beyond its own representation.
+template <class G>
+Sign dot_with(const G& a, const Vec3& d) {
+    if constexpr (std::is_same_v<G, Vec3>) {
+        return dot_sign(a, d);
+    } else {
+        return a.dot_sign(d);
+    }
+}
+
+template <class G>
+G as_generator(const Vec3& v) {
+    if constexpr (std::is_same_v<G, Vec3>) {
+        return v;
+    } else {
+        return in(v);
+    }
+}
+
+// Up to this many generators (their items and the chain fit in a Scratch on the stack); the
+// pivot path, tuned for millions, takes bigger cones.
+constexpr std::size_t kChartLimit = 128;
+
+// det(a, b, c) > 0, exactly: det_sign, with the floating-point filter's common case (a's
+// coordinates below 2^300, where det_sign needs no absolute term) written out here, so that the
+// chain's many tests are inlined.
+inline bool det_positive(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const auto [value, permanent] = detail::det_terms(a, b, c);
+    if (detail::filter_decides(value, permanent) && std::fabs(a.x()) + std::fabs(a.y()) + std::fabs(a.z()) < 0x1p300) {
+        return value > 0;
+    }
+    return det_sign(a, b, c) == Sign::Positive;
+}
+inline bool det_positive(const ExactVector& a, const ExactVector& b, const ExactVector& c) {
+    return det_sign(a, b, c) == Sign::Positive;
+}
+
+struct ChartItem {
+    double x, y;  // floating-point keys: hints for the sort
+    int index;
+    bool same;  // after the exact pass: parallel to the item before it
+};
+
+template <class G>
+bool pointed_by_chart(std::span<const G> g, bool facets, Parts& out) {
+    const std::size_t n = g.size();
+    if (n < 3 || n > kChartLimit || !ConeBuilder::use_chart()) return false;
+    // d: the mean of the generators' directions, rounded to integers below 2^20 (it moves by
+    // about 2^-20 rad), so that e below is an integer vector and the determinants that tie
+    // (exactly zero, frequent for integer generators) are decided in integers rather than
+    // expansions.
+    auto rounded = [](const Vec3& mean, Vec3& to) {
+        const double top = mean.cwiseAbs().maxCoeff();
+        if (!(top > 0) || !std::isfinite(top)) return false;
+        const Vec3 scaled = mean * (0x1p20 / top);
+        // (|scaled_i| <= 2^20: the conversion is exact and needs no call to lround.)
+        for (int i = 0; i < 3; ++i) to[i] = static_cast<double>(static_cast<std::int64_t>(scaled[i] + (scaled[i] < 0 ? -0.5 : 0.5)));
+        return true;
+    };
+    auto in_front = [&](const Vec3& h) {
+        return std::all_of(g.begin(), g.end(), [&](const G& v) { return dot_with(v, h) == Sign::Positive; });
+    };
+    auto direction = [](const G& v) -> Vec3 { return approx(v) / approx(v).cwiseAbs().sum(); };
+    Vec3 mean = Vec3::Zero();
+    for (const G& v : g) mean += direction(v);
+    Vec3 d;
+    if (!rounded(mean, d)) return false;
+    if (!in_front(d)) {
+        // The mean need not have every generator in front of it (wrenches whose torques
+        // outweigh their forces): a few perceptron passes move it towards each one behind it.
+        for (int pass = 0; pass < 4; ++pass) {
+            bool moved = false;
+            for (const G& v : g) {
+                const Vec3 u = direction(v);
+                if (!(mean.dot(u) > 0x1p-40 * mean.cwiseAbs().sum())) {
+                    mean += u;
+                    moved = true;
+                }
+            }
+            if (!moved) break;
+        }
+        if (!rounded(mean, d) || !in_front(d)) return false;
+    }
+    // e = e_k x d for the axis k where d is smallest: e . d = 0 exactly (its coordinates are
+    // +-d_i or 0), and e is not small beside d.
+    int k = 0;
+    for (int i = 1; i < 3; ++i) {
+        if (std::fabs(d[i]) < std::fabs(d[k])) k = i;
+    }
+    const Vec3 e = Vec3::Unit(k).cross(d);
+    const G eg = as_generator<G>(e);
+    const Vec3 f = e.cross(d);  // the direction of X, for the keys only
+    Scratch scratch;
+    ScratchVector<ChartItem> items(&scratch);
+    items.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3& v = approx(g[i]);
+        const double w = d.dot(v);
+        items.push_back({f.dot(v) / w, e.dot(v) / w, static_cast<int>(i), false});
+    }
+    std::sort(items.begin(), items.end(),
+              [](const ChartItem& a, const ChartItem& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    // before(a, b): Positive if a comes first; Zero for parallel generators.
+    auto before = [&](const ChartItem& ia, const ChartItem& ib) {
+        const G& a = g[static_cast<std::size_t>(ia.index)];
+        const G& b = g[static_cast<std::size_t>(ib.index)];
+        const Sign s = det_sign(eg, a, b);
+        if (s != Sign::Zero) return s;
+        // The same X: along e. a is not parallel to e (d . a > 0 = d . e).
+        for (int axis = 0; axis < 3; ++axis) {
+            const Sign ae = cross_component_sign(a, eg, axis);
+            if (ae != Sign::Zero) return cross_component_sign(a, b, axis) * ae;
+        }
+        return Sign::Zero;  // unreachable
+    };
+    std::size_t moves = 0;
+    const std::size_t budget = 4 * n + 16;
+    for (std::size_t i = 1; i < n; ++i) {
+        for (std::size_t j = i; j > 0;) {
+            const Sign c = before(items[j - 1], items[j]);
+            if (++moves > budget) return false;
+            if (c != Sign::Negative) {
+                // Parallel generators are one point of the chart, and stay next to each other.
+                items[j].same = c == Sign::Zero;
+                break;
+            }
+            std::swap(items[j], items[j - 1]);
+            --j;
+        }
+    }
+    // One item per point: of parallel generators the one given first, as the pivot path's
+    // cycle starts at the extreme generator given first.
+    std::size_t m = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (items[i].same && m > 0) {
+            items[m - 1].index = std::min(items[m - 1].index, items[i].index);
+        } else {
+            items[m++] = items[i];
+        }
+    }
+    // Andrew's monotone chain: the lower chain left to right, then the upper one back.
+    ScratchVector<int> hull(2 * m, 0, &scratch);
+    std::size_t h = 0;
+    auto turns_left = [&](int a, int b, int c) {
+        return det_positive(g[static_cast<std::size_t>(a)], g[static_cast<std::size_t>(b)], g[static_cast<std::size_t>(c)]);
+    };
+    for (std::size_t i = 0; i < m; ++i) {
+        while (h >= 2 && !turns_left(hull[h - 2], hull[h - 1], items[i].index)) --h;
+        hull[h++] = items[i].index;
+    }
+    for (std::size_t i = m - 1, lower = h + 1; i > 0; --i) {
+        while (h >= lower && !turns_left(hull[h - 2], hull[h - 1], items[i - 1].index)) --h;
+        hull[h++] = items[i - 1].index;
+    }
+    --h;  // the first point again
+    if (h < 3) return false;
+    hull.resize(h);
+    std::rotate(hull.begin(), std::min_element(hull.begin(), hull.end()), hull.end());
+    ++ConeBuilder::stats().by_chart;
+    out = pointed_from_cycle(g, hull, facets);
+    return true;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -753,6 +928,8 @@ Parts build_spatial(std::span<const G> g, std::size_t ia, std::size_t ib, std::s
 // full-dimensional cone's facets (and rays) when `facets` is false: its cycle only.
 template <class G>
 Parts parts_of(std::span<const G> g, bool facets) {
+    Parts parts;
+    if (pointed_by_chart(g, facets, parts)) return parts;
     const G& a = g[0];
     std::size_t ib = g.size();
     for (std::size_t i = 1; i < g.size(); ++i) {
@@ -761,7 +938,6 @@ Parts parts_of(std::span<const G> g, bool facets) {
             break;
         }
     }
-    Parts parts;
     if (ib == g.size()) {  // rank 1
         bool opposite = false;
         for (const G& v : g) opposite = opposite || dot_sign(a, v) == Sign::Negative;
@@ -804,6 +980,11 @@ Cone build_cone(std::span<const G> generators) {
 }
 
 }  // namespace
+
+bool& ConeBuilder::use_chart() {
+    thread_local bool use = true;
+    return use;
+}
 
 ConePathStats& ConeBuilder::stats() {
     thread_local ConePathStats stats;

@@ -10,6 +10,7 @@ namespace momentlab {
 
 /// How rank-3 constructions were decided (per thread), for tests and benchmarks.
 struct ConePathStats {
+    long by_chart = 0;   ///< pointed, found as a hull in the chart d . x = 1 (pointed_by_chart)
     long by_pivot = 0;   ///< decided from the angular order around a pivot (O(n log n))
     long retries = 0;    ///< extra pivot analyses (face retries, second guesses)
     long dual_clip = 0;  ///< fell back to the exact dual clip (O(n m))
@@ -24,6 +25,9 @@ struct ConeBuilder {
                          std::vector<ExactVector> facets, std::vector<ExactVector> equations, Incidence facet_rays,
                          Representation exact = Representation::Generators);
     static ConePathStats& stats();
+    /// Whether pointed cones of up to 128 generators may be found in a chart (per thread;
+    /// true). Tests and benchmarks set it to false to compare with the pivot path.
+    static bool& use_chart();
     /// f n {h . x >= 0} for a pointed full-dimensional f, found by cutting f's cycle of facets
     /// in O(m) for m facets: the facets, their order and incidence that the cone of all the
     /// half-spaces has, with f's own rays where they stay (the same rays up to a positive

@@ -109,10 +109,8 @@ std::optional<Cone> ConeBuilder::cut(const Cone& f, const ExactVector& h) {
     // The cone of the cycle (generators: the normals), as pointed_from_cycle assembles it; its dual
     // is the cut.
     std::vector<ExactVector> generators, edges;
-    Incidence incidence;
     generators.reserve(k);
     edges.reserve(k);
-    incidence.reserve(k, 2);
     for (std::size_t t = 0; t < k; ++t) {
         const ExactVector& a = normal(cycle[t]);
         const ExactVector& b = normal(cycle[(t + 1) % k]);
@@ -122,12 +120,10 @@ std::optional<Cone> ConeBuilder::cut(const Cone& f, const ExactVector& h) {
         // positive multiple of it: both lie on the two planes, in the pointed cut); only the
         // rays where h crosses the cycle are constructed.
         edges.push_back(r >= 0 ? rays[static_cast<std::size_t>(r)] : ExactVector::cross(a, b, 1));
-        const int a_i = static_cast<int>(t), b_i = static_cast<int>((t + 1) % k);
-        incidence.add_row({std::min(a_i, b_i), std::max(a_i, b_i)});
     }
     ++stats().cuts;
     // (Assembled as that cone's dual directly: Cone::dual would copy every vector once more.)
-    Incidence dual_incidence = incidence.transposed(k);
+    Incidence dual_incidence = Incidence::cyclic(k).transposed(k);
     return assemble(std::move(edges), {}, std::move(generators), {}, std::move(dual_incidence), Representation::Halfspaces);
 }
 

@@ -17,33 +17,46 @@
 
 namespace momentlab {
 
-/// Which extreme rays lie on each facet, stored as compressed rows (one allocation for all).
+/// Which extreme rays lie on each facet, stored as compressed rows: while every row has the
+/// same length (the two rays of each facet of a pointed cone) only the indices are stored, one
+/// allocation; rows of different lengths add their offsets.
 class Incidence {
 public:
     /// Appends the row of the next facet: indices of the rays on it, increasing.
     void add_row(std::initializer_list<int> rays) { add_row(std::span<const int>(rays.begin(), rays.size())); }
     /// Reserves room for `rows` rows of `per_row` rays on average.
-    void reserve(std::size_t rows, std::size_t per_row) {
-        offsets_.reserve(rows + 1);
-        indices_.reserve(rows * per_row);
-    }
+    void reserve(std::size_t rows, std::size_t per_row) { indices_.reserve(rows * per_row); }
     void add_row(std::span<const int> rays) {
-        if (offsets_.empty()) offsets_.push_back(0);
+        const int length = static_cast<int>(rays.size());
+        if (offsets_.empty() && rows_ > 0 && length != stride_) {  // lengths differ from now on
+            offsets_.reserve(static_cast<std::size_t>(rows_) + 2);
+            for (int j = 0; j <= rows_; ++j) offsets_.push_back(j * stride_);
+        }
+        if (rows_ == 0) stride_ = length;
         indices_.insert(indices_.end(), rays.begin(), rays.end());
-        offsets_.push_back(static_cast<int>(indices_.size()));
+        if (!offsets_.empty()) offsets_.push_back(static_cast<int>(indices_.size()));
+        ++rows_;
     }
     /// The rays on facet j.
     [[nodiscard]] std::span<const int> row(std::size_t j) const {
+        if (offsets_.empty()) return {indices_.data() + j * static_cast<std::size_t>(stride_), static_cast<std::size_t>(stride_)};
         return {indices_.data() + offsets_[j], static_cast<std::size_t>(offsets_[j + 1] - offsets_[j])};
     }
     /// The number of facets.
-    [[nodiscard]] std::size_t size() const { return offsets_.empty() ? 0 : offsets_.size() - 1; }
+    [[nodiscard]] std::size_t size() const { return static_cast<std::size_t>(rows_); }
+    /// The incidence of a pointed cone's k >= 3 facets in cyclic order: facet i holds rays i
+    /// and i + 1 (mod k).
+    [[nodiscard]] static Incidence cyclic(std::size_t k);
     /// The incidence seen from the other side: for each of `columns` rays, the facets through it.
     [[nodiscard]] Incidence transposed(std::size_t columns) const;
 
 private:
-    std::vector<int> offsets_;  // row j is indices_[offsets_[j], offsets_[j + 1]); empty for no rows
+    // Row j is indices_[offsets_[j], offsets_[j + 1]), or indices_[j * stride_, (j + 1) *
+    // stride_) while offsets_ is empty (every row so far has stride_ indices).
+    std::vector<int> offsets_;
     std::vector<int> indices_;
+    int rows_ = 0;
+    int stride_ = 0;
 };
 
 /// Which representation of a cone was given exactly; the other one is computed from it.
