@@ -230,9 +230,10 @@ ExactVector ExactVector::cross(const Vec3& u, const Vec3& v, int sign) {
     e.sign_ = sign >= 0 ? 1 : -1;
     // The plain product is exact for small integers; if it overflows (or underflows to zero),
     // scaling the factors first by powers of two keeps it finite for any finite input.
+    // (allFinite first: a coordinate inf - inf is NaN, which maxCoeff passes over.)
     Vec3 raw = u.cross(v);
     const double m = raw.cwiseAbs().maxCoeff();
-    if (!(m > 0x1p-900 && m < 0x1p900)) raw = scaled_by_power_of_two(u).cross(scaled_by_power_of_two(v));
+    if (!(raw.allFinite() && m > 0x1p-900 && m < 0x1p900)) raw = scaled_by_power_of_two(u).cross(scaled_by_power_of_two(v));
     e.value_ = readable(raw) * static_cast<double>(e.sign_);
     return e;
 }

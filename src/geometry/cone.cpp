@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -142,6 +143,32 @@ Cone Cone::signed_permuted(const Mat3& p) const& { return Cone(*this).signed_per
 Cone Cone::signed_permuted(const Mat3& p) && {
     for (auto* list : {&rays_, &lineality_, &facets_, &equations_}) {
         for (ExactVector& v : *list) v = v.signed_permuted(p);
+    }
+    // A reflection (det P = -1) turns a pointed cone's cycle clockwise: ray j becomes ray
+    // (k - j) mod k (ray 0 stays first), and each facet moves to where its two rays place it
+    // (between rays i and i+1 for a cone built from generators, i-1 and i from half-spaces).
+    const std::size_t k = rays_.size();
+    if (p.determinant() < 0 && k >= 3 && lineality_.empty() && equations_.empty() && facets_.size() == k) {
+        auto mirror = [k](int i) { return static_cast<int>((k - static_cast<std::size_t>(i)) % k); };
+        std::vector<ExactVector> rays(k), facets(k);
+        for (std::size_t i = 0; i < k; ++i) rays[static_cast<std::size_t>(mirror(static_cast<int>(i)))] = std::move(rays_[i]);
+        std::vector<std::array<int, 2>> rows(k);
+        for (std::size_t f = 0; f < k; ++f) {
+            const auto row = facet_rays_.row(f);
+            int x = mirror(row[0]), y = mirror(row[1]);
+            if (x > y) std::swap(x, y);
+            const bool wraps = !(y == x + 1);  // rays 0 and k - 1
+            const std::size_t at = static_cast<std::size_t>(exact_ == Representation::Generators ? (wraps ? static_cast<int>(k) - 1 : x)
+                                                                                                 : (wraps ? 0 : y));
+            facets[at] = std::move(facets_[f]);
+            rows[at] = {x, y};
+        }
+        Incidence incidence;
+        incidence.reserve(k, 2);
+        for (const auto& r : rows) incidence.add_row({r[0], r[1]});
+        rays_ = std::move(rays);
+        facets_ = std::move(facets);
+        facet_rays_ = std::move(incidence);
     }
     return std::move(*this);
 }

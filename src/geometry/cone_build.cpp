@@ -5,6 +5,8 @@
 // predicates of core/predicates.hpp) or exact vectors (core/exact.hpp: contact wrenches,
 // friction edges, images under the inertia matrix, facets of other cones); the algorithm is
 // the same template for both. The steps:
+//  0. up to 128 generators, a pointed cone is found as a convex hull in a chart d . x = 1
+//     (pointed_by_chart); what that does not decide goes on;
 //  1. rank of the span (1, 2 or 3) by exact parallelism / determinant tests;
 //  2. rank 1 and 2: an angular sort inside the line or plane, then the largest angular gap;
 //  3. rank 3: pick a pivot generator p that a floating-point guess says is extreme, sort the
@@ -641,6 +643,7 @@ bool pointed_by_chart(std::span<const G> g, bool facets, Parts& out) {
         const double top = mean.cwiseAbs().maxCoeff();
         if (!(top > 0) || !std::isfinite(top)) return false;
         const Vec3 scaled = mean * (0x1p20 / top);
+        if (!scaled.allFinite()) return false;  // top subnormal: 2^20 / top overflows
         // (|scaled_i| <= 2^20: the conversion is exact and needs no call to lround.)
         for (int i = 0; i < 3; ++i) to[i] = static_cast<double>(static_cast<std::int64_t>(scaled[i] + (scaled[i] < 0 ? -0.5 : 0.5)));
         return true;
@@ -684,7 +687,11 @@ bool pointed_by_chart(std::span<const G> g, bool facets, Parts& out) {
     for (std::size_t i = 0; i < n; ++i) {
         const Vec3& v = approx(g[i]);
         const double w = d.dot(v);
-        items.push_back({f.dot(v) / w, e.dot(v) / w, static_cast<int>(i), false});
+        const double x = f.dot(v) / w, y = e.dot(v) / w;
+        // Keys that overflowed or vanished (coordinates near 2^±1000) would not order: the
+        // sort needs a strict weak order, and such cones are rare enough for the pivot path.
+        if (!std::isfinite(x) || !std::isfinite(y)) return false;
+        items.push_back({x, y, static_cast<int>(i), false});
     }
     std::sort(items.begin(), items.end(),
               [](const ChartItem& a, const ChartItem& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
@@ -845,6 +852,8 @@ Parts build_by_dual_clip(std::span<const G> g, std::size_t i0, std::size_t i1, s
     }
     std::vector<int> cycle;
     for (std::size_t t : edges) cycle.push_back(poly[t]);
+    // The cycle starts at the extreme generator given first, as from a pivot or the chart.
+    std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end()), cycle.end());
     return pointed_from_cycle(g, cycle, facets);
 }
 

@@ -224,7 +224,9 @@ TEST(ConeLaws, ManyGeneratorsAgreeWithExactOracle) {
 // the exact oracle (cddlib in GMP rationals, on the raw numbers): the same representation, ray
 // for ray and facet for facet, when no two generators are parallel; otherwise the same cone
 // with as many rays, the parallel generator given first standing for its direction. Families:
-// doubles in a cone around a random axis, integer points on a pyramid's faces (ties in the
+// doubles in a cone around a random axis, wide flat cones (where the pivot path often ends in the
+// dual clip, whose cycle now starts at the generator given first too), integer points on a
+// pyramid's faces (ties in the
 // chart, collinear points, parallel copies of different lengths), narrow cones 2^20 .. 2^40
 // high and cones 2^-40 small, and contact wrenches of forces in a half-plane (constructions,
 // some 10^3 from the origin).
@@ -248,15 +250,20 @@ TEST(ConeLaws, PointedConesFoundInAChartEqualThoseFromAPivot) {
         }
         return true;
     };
-    for (int i = 0; i < testing::sized(1200); ++i) {
-        const int kind = i % 5;
+    long clipped = 0;  // cones the pivot path built by the dual clip
+    for (int i = 0; i < testing::sized(1500); ++i) {
+        const int kind = i % 6;
         const int n = i % 100 == 0 ? rnd.integer(41, 128) : rnd.integer(3, 30);
         std::vector<Vec3> g;
         std::vector<ExactVector> wrenches;
         std::vector<reference::QVec> exact_wrenches;  // from the raw numbers, for the oracle
-        if (kind == 0) {  // doubles within about 60 degrees of a random axis
+        if (i == 0) {  // a helper's case: the pivot path's clip started the cycle at ray 2
+            g = {Vec3(10, 11, 1), Vec3(1, -4, 1), Vec3(-1, -10, 1), Vec3(-7, 5, 1), Vec3(-8, 19, 3)};
+        } else if (kind == 0) {  // doubles within about 60 degrees of a random axis
             const Vec3 axis = rnd.vec3(1).normalized();
             for (int j = 0; j < n; ++j) g.push_back(axis + 0.8 * rnd.vec3(1));
+        } else if (kind == 5) {  // wide and flat: (x, y) in a square over heights 0.02 .. 0.3
+            for (int j = 0; j < n; ++j) g.emplace_back(rnd.uniform(-1, 1), rnd.uniform(-1, 1), rnd.uniform(0.02, 0.3));
         } else if (kind == 1) {  // integer points on the faces |x|, |y| <= m z, some scaled
             const int m = rnd.integer(1, 4);
             for (int j = 0; j < n; ++j) {
@@ -273,7 +280,7 @@ TEST(ConeLaws, PointedConesFoundInAChartEqualThoseFromAPivot) {
                 g.emplace_back(r * std::cos(t), r * std::sin(t), height);
             }
         } else {  // wrenches of forces within 70 degrees of +x, at points near the origin or 10^3 away
-            const double far = i % 10 == 9 ? 1000.0 : 0.0;
+            const double far = i % 12 == 11 ? 1000.0 : 0.0;
             for (int j = 0; j < n; ++j) {
                 const double t = rnd.uniform(-1.2, 1.2);
                 const Vec2 p(far + rnd.uniform(-1, 1), rnd.uniform(-1, 1));
@@ -288,7 +295,9 @@ TEST(ConeLaws, PointedConesFoundInAChartEqualThoseFromAPivot) {
         const Cone chart = wrenches.empty() ? Cone::from_generators(g) : Cone::from_generators(wrenches);
         const bool took_chart = ConeBuilder::stats().by_chart > chart_count;
         ConeBuilder::use_chart() = false;
+        const long clips = ConeBuilder::stats().dual_clip;
         const Cone pivot = wrenches.empty() ? Cone::from_generators(g) : Cone::from_generators(wrenches);
+        clipped += ConeBuilder::stats().dual_clip > clips;
         ConeBuilder::use_chart() = true;
         ++cases;
         if (!took_chart) continue;
@@ -315,12 +324,69 @@ TEST(ConeLaws, PointedConesFoundInAChartEqualThoseFromAPivot) {
     }
     const long by_chart = ConeBuilder::stats().by_chart - chart_before;
     std::cout << "[ConeLaws] chart: " << by_chart << " of " << cases << " cones, " << identical
-              << " identical to the pivot path's, " << with_parallel << " with parallel generators\n";
-    // (The cones of wrenches 10^3 from the origin, a tenth, are flat: most have a generator
+              << " identical to the pivot path's (" << clipped << " of its cones by the dual clip), "
+              << with_parallel << " with parallel generators\n";
+    EXPECT_GT(clipped, 0);
+    // (The cones of wrenches 10^3 from the origin, a twelfth, are flat: most have a generator
     // behind the guessed direction d and go to the pivot path.)
     EXPECT_GT(by_chart, cases * 8 / 10);
     EXPECT_GT(identical, cases / 2);
     EXPECT_GT(with_parallel, cases / 10);
+}
+
+// Every signed permutation P (48, half of them reflections) keeps a pointed cone's cycle
+// counter-clockwise (a helper found a reflection left it clockwise): det(r_i, r_i+1, r_i+2) > 0,
+// facet i on rays i and i+1 (built from generators) or i-1 and i (from half-spaces), exactly
+// zero on them and positive on every other ray; and the cone is cddlib's of the permuted raw
+// generators.
+TEST(ConeLaws, SignedPermutationsKeepTheCycleCounterClockwise) {
+    testing::Random rnd(48);
+    std::vector<Mat3> perms;
+    const int orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    for (const auto& o : orders) {
+        for (int signs = 0; signs < 8; ++signs) {
+            Mat3 p = Mat3::Zero();
+            for (int r = 0; r < 3; ++r) p(r, o[r]) = (signs >> r) & 1 ? -1.0 : 1.0;
+            perms.push_back(p);
+        }
+    }
+    int checked = 0;
+    for (int i = 0; i < testing::sized(200); ++i) {
+        std::vector<Vec3> g;
+        const int n = rnd.integer(3, 12);
+        for (int j = 0; j < n; ++j) g.emplace_back(rnd.integer(-5, 5), rnd.integer(-5, 5), rnd.integer(2, 6));
+        const Cone base = i % 2 ? Cone::from_generators(g) : Cone::from_generators(g).dual().dual();
+        if (base.kind() != "pointed cone") continue;
+        for (const Mat3& p : perms) {
+            const Cone c = base.signed_permuted(p);
+            std::vector<reference::QVec> raw;
+            for (const Vec3& v : g) raw.push_back(reference::q(Vec3(p * v)));
+            const std::string why = testing::compare_with_oracle(c, oracle::from_generators(raw));
+            ASSERT_TRUE(why.empty()) << why;
+            const std::size_t k = c.rays().size();
+            const bool from_generators = c.exact_representation() == Representation::Generators;
+            for (std::size_t j = 0; j < k; ++j) {
+                const auto r = [&](std::size_t t) { return reference::to_q(c.rays()[(j + t) % k]); };
+                ASSERT_GT(reference::det(r(0), r(1), r(2)), 0) << "case " << i << ", det P " << p.determinant();
+                const std::size_t a = from_generators ? j : (j + k - 1) % k, b = from_generators ? (j + 1) % k : j;
+                const auto row = c.facet_rays().row(j);
+                ASSERT_EQ(row.size(), 2u);
+                ASSERT_EQ(row[0], static_cast<int>(std::min(a, b)));
+                ASSERT_EQ(row[1], static_cast<int>(std::max(a, b)));
+                const reference::QVec f = reference::to_q(c.facets()[j]);
+                for (std::size_t t = 0; t < k; ++t) {
+                    const reference::Q value = reference::dot(f, reference::to_q(c.rays()[t]));
+                    if (t == a || t == b) {
+                        ASSERT_EQ(value, 0);
+                    } else {
+                        ASSERT_GT(value, 0);
+                    }
+                }
+            }
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, testing::sized(200) * 48 / 2);
 }
 
 // Pointed cones all of whose generators lie within 2^-20 .. 2^-40 rad of one axis: the wrenches
