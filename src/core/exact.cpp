@@ -16,6 +16,7 @@
 // torques of a scene are when its lengths are.
 #include "momentlab/core/exact.hpp"
 
+#include "error_free.hpp"
 #include "power_of_two.hpp"
 
 #include <cassert>
@@ -522,10 +523,9 @@ namespace {
 
 // x - y in doubles when the difference is exact (Knuth's two-sum has no error term), else nullopt.
 std::optional<double> exact_difference(double x, double y) {
-    const double s = x - y;
-    const double y_part = s - x;
-    const double x_part = s - y_part;
-    if (!std::isfinite(s) || (x - x_part) + (-y - y_part) != 0.0) return std::nullopt;
+    double s = 0, error = 0;
+    detail::two_sum(x, -y, s, error);
+    if (!std::isfinite(s) || error != 0.0) return std::nullopt;
     return s;
 }
 

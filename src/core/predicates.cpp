@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "error_free.hpp"
 #include "momentlab/core/dyadic.hpp"
 
 namespace momentlab {
@@ -17,12 +18,7 @@ thread_local PredicateStats g_stats;
 // as no intermediate overflows or underflows, which `in_expansion_range` guarantees.
 constexpr double kSplitter = 134217729.0;  // 2^27 + 1
 
-inline void two_sum(double a, double b, double& x, double& y) {
-    x = a + b;
-    const double b_virtual = x - a;
-    const double a_virtual = x - b_virtual;
-    y = (a - a_virtual) + (b - b_virtual);
-}
+using detail::two_sum;
 
 inline void split(double a, double& hi, double& lo) {
     const double c = kSplitter * a;

@@ -611,20 +611,6 @@ G as_generator(const Vec3& v) {
 // pivot path, tuned for millions, takes bigger cones.
 constexpr std::size_t kChartLimit = 128;
 
-// det(a, b, c) > 0, exactly: det_sign, with the floating-point filter's common case (a's
-// coordinates below 2^300, where det_sign needs no absolute term) written out here, so that the
-// chain's many tests are inlined.
-inline bool det_positive(const Vec3& a, const Vec3& b, const Vec3& c) {
-    const auto [value, permanent] = detail::det_terms(a, b, c);
-    if (detail::filter_decides(value, permanent) && std::fabs(a.x()) + std::fabs(a.y()) + std::fabs(a.z()) < 0x1p300) {
-        return value > 0;
-    }
-    return det_sign(a, b, c) == Sign::Positive;
-}
-inline bool det_positive(const ExactVector& a, const ExactVector& b, const ExactVector& c) {
-    return det_sign(a, b, c) == Sign::Positive;
-}
-
 struct ChartItem {
     double x, y;  // floating-point keys: hints for the sort
     int index;
@@ -737,7 +723,7 @@ bool pointed_by_chart(std::span<const G> g, bool facets, Parts& out) {
     ScratchVector<int> hull(2 * m, 0, &scratch);
     std::size_t h = 0;
     auto turns_left = [&](int a, int b, int c) {
-        return det_positive(g[static_cast<std::size_t>(a)], g[static_cast<std::size_t>(b)], g[static_cast<std::size_t>(c)]);
+        return det_sign(g[static_cast<std::size_t>(a)], g[static_cast<std::size_t>(b)], g[static_cast<std::size_t>(c)]) == Sign::Positive;
     };
     for (std::size_t i = 0; i < m; ++i) {
         while (h >= 2 && !turns_left(hull[h - 2], hull[h - 1], items[i].index)) --h;

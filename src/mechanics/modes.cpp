@@ -404,15 +404,13 @@ std::vector<std::vector<int>> ModeWalk::closed_sets(const std::vector<Face>& fac
             }
         }
     });
-    std::vector<std::vector<int>> on_facet = std::move(found[0].on_facet), on_ray = std::move(found[0].on_ray);
-    for (std::size_t i = 0; i < k; ++i) {
-        const auto& more = found[1].on_facet[i];
-        on_facet[i].insert(on_facet[i].end(), more.begin(), more.end());
+    for (auto list : {&Found::on_facet, &Found::on_ray}) {
+        auto& first = found[0].*list;
+        const auto& second = found[1].*list;
+        for (std::size_t i = 0; i < first.size(); ++i) first[i].insert(first[i].end(), second[i].begin(), second[i].end());
     }
-    for (std::size_t r = 0; r < on_ray.size(); ++r) {
-        const auto& more = found[1].on_ray[r];
-        on_ray[r].insert(on_ray[r].end(), more.begin(), more.end());
-    }
+    const std::vector<std::vector<int>>& on_facet = found[0].on_facet;
+    const std::vector<std::vector<int>>& on_ray = found[0].on_ray;
     for (std::size_t i = 0; i < faces.size(); ++i) {
         const Face& face = faces[i];
         if (face.dimension == 2) {
