@@ -540,10 +540,8 @@ std::optional<double> exact_difference(double x, double y) {
 // by at most (4u + 4u^2 + u) T C and the difference adds u of the sum: 6u (T_3 C_12 + T_2 C_13)
 // with everything below the normal range adding at most 2^-1070 (T_2 + T_3 + C_12 + C_13 + 2);
 // 8u is used.
-bool force_det_filter(const ExactVector& a, const ExactVector& b, const ExactVector& c, Sign& out) {
-    Vec2 p1, p2, p3, d1, d2, d3;
-    int s1 = 1, s2 = 1, s3 = 1;
-    if (!a.force(p1, d1, s1) || !b.force(p2, d2, s2) || !c.force(p3, d3, s3)) return false;
+bool force_det_bound(const Vec2& p1, const Vec2& p2, const Vec2& p3, const Vec2& d1, const Vec2& d2, const Vec2& d3,
+                     Sign& out) {
     const std::optional<double> x2 = exact_difference(p2.x(), p1.x()), y2 = exact_difference(p2.y(), p1.y());
     const std::optional<double> x3 = exact_difference(p3.x(), p1.x()), y3 = exact_difference(p3.y(), p1.y());
     if (!x2 || !y2 || !x3 || !y3) return false;
@@ -558,7 +556,41 @@ bool force_det_filter(const ExactVector& a, const ExactVector& b, const ExactVec
     if (!(permanent < 0x1p1000)) return false;  // (an overflow, or a NaN)
     const double bound = (8 * kU * permanent + 0x1p-1070 * (big_t2 + big_t3 + big_c12 + big_c13 + 2)) * (1 + 0x1p-40);
     if (!(std::fabs(value) > bound)) return false;
-    out = s1 * s2 * s3 > 0 ? sign_of(value) : -sign_of(value);
+    out = sign_of(value);
+    return true;
+}
+
+// The sign of t_3 (d_1 x d_2) - t_2 (d_1 x d_3), t_i = (p_i - p_1) x d_i = det(P_1, P_i, D_i)
+// (P = (p, 1), D = (d, 0)), when d_1 x d_2 or d_1 x d_3 is exactly 0: a product of exact 2 x 2
+// and 3 x 3 determinants of doubles.
+bool parallel_forces_det(const Vec2& p1, const Vec2& p2, const Vec2& p3, const Vec2& d1, const Vec2& d2, const Vec2& d3,
+                         Sign& out) {
+    // (equal or opposite directions, as a friction edge and its copies on other contacts are,
+    // without the exact minor)
+    const auto cross = [](const Vec2& u, const Vec2& w) { return u == w || u == -w ? Sign::Zero : cross2_sign(u, w); };
+    const Sign c12 = cross(d1, d2), c13 = cross(d1, d3);
+    if (c12 != Sign::Zero && c13 != Sign::Zero) return false;
+    const auto t = [&](const Vec2& p, const Vec2& d) {
+        return det_sign(Vec3(p1.x(), p1.y(), 1.0), Vec3(p.x(), p.y(), 1.0), Vec3(d.x(), d.y(), 0.0));
+    };
+    out = c12 != Sign::Zero ? t(p3, d3) * c12 : c13 != Sign::Zero ? -(t(p2, d2) * c13) : Sign::Zero;
+    return true;
+}
+
+// force_det_bound, or where it does not decide, the exact zeros of parallel forces: two of the
+// three directions parallel (the determinant is invariant under a cyclic permutation, so the
+// parallel pair is taken about the third force's point). Three wrenches of parallel forces are
+// dependent; the friction edges of contacts along a line have two directions.
+bool force_det_filter(const ExactVector& a, const ExactVector& b, const ExactVector& c, Sign& out) {
+    Vec2 p1, p2, p3, d1, d2, d3;
+    int s1 = 1, s2 = 1, s3 = 1;
+    if (!a.force(p1, d1, s1) || !b.force(p2, d2, s2) || !c.force(p3, d3, s3)) return false;
+    Sign v = Sign::Zero;
+    if (!force_det_bound(p1, p2, p3, d1, d2, d3, v) && !parallel_forces_det(p1, p2, p3, d1, d2, d3, v) &&
+        !parallel_forces_det(p2, p3, p1, d2, d3, d1, v)) {
+        return false;
+    }
+    out = s1 * s2 * s3 > 0 ? v : -v;
     return true;
 }
 
@@ -566,8 +598,13 @@ bool force_det_filter(const ExactVector& a, const ExactVector& b, const ExactVec
 
 Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c) {
     if (!a.is_constructed() && !b.is_constructed() && !c.is_constructed()) return det_sign(a.value(), b.value(), c.value());
+    return det_sign(a, b, c, a.approximation(), b.approximation(), c.approximation());
+}
+
+Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c, const ExactVector::Approximation& pa,
+              const ExactVector::Approximation& pb, const ExactVector::Approximation& pc) {
     Sign s = Sign::Zero;
-    if (det_filter(a.approximation(), b.approximation(), c.approximation(), s)) {
+    if (det_filter(pa, pb, pc, s)) {
         ++g_stats.filtered;
         return s;
     }

@@ -90,6 +90,10 @@ struct FrictionEdges {
         const int side = letter == 'r' ? 1 : 0;
         return kinetic_at[j] < 0 ? side : side + 2;
     }
+    // The edge in slot `slot` of contact j.
+    [[nodiscard]] const ExactVector& edge(std::size_t j, int slot) const {
+        return slot < 2 ? statics[j][static_cast<std::size_t>(slot)] : kinetic(j)[static_cast<std::size_t>(slot - 2)];
+    }
 
     // Calls f(edge, slot) for each generator contact j adds to the contact cone T of a mode in
     // which its letter is `letter`: both static edges of f, n - mu_k t of r (friction opposes
@@ -186,6 +190,17 @@ private:
 //  - up to eight earlier planes, checked against every generator (on faces of few contacts);
 //  - up to eight triplets of named generators whose cone holds e: a cell that has all three
 //    holds e.
+// A certificate that the contacts which changed broke is mended, with a few scans of the cell's
+// generators (O(closed contacts) predicates each, where testing e against E sorts them):
+//  - a triangle that lost one generator takes another of the cell's in its place; else, about a
+//    generator p it kept (or any, when it kept none), the plane through p and e crosses an edge
+//    (x, y) of E beyond e, and e is in cone(p, x, y): that edge is found as a bridge is;
+//  - a plane broken by a generator g turns about g: onto a generator the broken plane went
+//    through, else onto one of the two generators x whose plane through g leaves every generator
+//    on one side (a gift-wrapping step each way).
+// Every mended certificate is checked exactly. Along a face whose every step changes an extreme
+// generator (contacts on a line with their normals along it) they decide the cells that would
+// each need E.
 // A cell no certificate decides has e tested against its E (cone_holds: its extreme rays, no
 // facets), which gives the next certificate.
 class Decider {
@@ -195,6 +210,8 @@ public:
 
     [[nodiscard]] std::size_t built() const { return built_; }
     [[nodiscard]] std::size_t tested() const { return tested_; }
+    [[nodiscard]] std::size_t mended() const { return mended_; }
+    [[nodiscard]] std::size_t scanned() const { return scanned_; }
 
     // `filters` holds this cell's twists rounded (shared by the deciders of a batch).
     bool member(const detail::WalkCell& cell, TwistFilters& filters) {
@@ -202,6 +219,7 @@ public:
         filters_ = &filters;
         const bool answer = decide();
         last_face_ = cell.face;
+        last_member_ = answer;
         if (answer) current_valid_ = false;  // no plane holds a cone that holds e
         return answer;
     }
@@ -209,12 +227,30 @@ public:
 private:
     static constexpr std::size_t kCache = 8;
     static constexpr std::size_t kSmallFace = 32;  // closed contacts for a full check of cached planes
+    // Closed contacts from which a broken certificate is mended rather than built again: below,
+    // testing e against E costs about what a mend's fixed part does (the twists' images and a
+    // plane's M^T h in Dyadic numbers), and its facets hold for longer (on the tangent family of
+    // 10^5 contacts, faces of 1-3 closed contacts, mending every certificate made five wrenches
+    // of a batch take 5.8 s instead of 1.0 s).
+    static constexpr std::size_t kMendFace = 16;
 
     // A separating plane h (h . e < 0), with M^T h: h . (M g) = (M^T h) . g, so that the cell's
     // twists g are checked as they are, with no image M g made (unused when quasi-static).
+    // A plane found through two generators u, v keeps them: h = sign (u x v), and h . y is
+    // sign det(u, v, y), whose filters know wrenches of forces (exact zeros of parallel forces
+    // among them); sign is 0 for a plane given by h alone.
     struct Plane {
         ExactVector h, pulled;
+        ExactVector u, v;
+        ExactVector::Approximation ru, rv;
+        int sign = 0;
     };
+    static Sign side(const Plane& p, const ExactVector& y, const ExactVector::Approximation& ry) {
+        if (p.sign == 0) return dot_sign(p.h, y);
+        const Sign s = det_sign(p.u, p.v, y, p.ru, p.rv, ry);
+        return p.sign > 0 ? s : -s;
+    }
+    static Sign side(const Plane& p, const ExactVector& y) { return p.sign == 0 ? dot_sign(p.h, y) : side(p, y, y.approximation()); }
     Plane plane_of(const ExactVector& h) const {
         Plane p{h, {}};
         if (m_) {
@@ -235,14 +271,14 @@ private:
         return true;
     }
     // h holds the generators (-edge) that the contact at position t adds.
-    bool holds_position(const ExactVector& h, std::size_t t) const {
+    bool holds_position(const Plane& p, std::size_t t) const {
         return edges_.for_contact(static_cast<std::size_t>(cell_->closed[t]), cell_->letters[t],
-                                  [&](const ExactVector& edge, int) { return dot_sign(h, edge) != Sign::Positive; });
+                                  [&](const ExactVector& edge, int) { return side(p, edge) != Sign::Positive; });
     }
     bool holds_all(const Plane& p) const {
         if (!holds_images(p)) return false;
         for (std::size_t t = 0; t < cell_->closed.size(); ++t) {
-            if (!holds_position(p.h, t)) return false;
+            if (!holds_position(p, t)) return false;
         }
         return true;
     }
@@ -284,7 +320,7 @@ private:
             // (A cell the caller skips, one that joins the all-f mode, changes only contacts the
             // next cell of its face lists again; a new face starts over.)
             if (holds && current_valid_ && !cell_->first && cell_->face == last_face_) {
-                for (int t : cell_->changed) holds = holds && holds_position(current_->h, static_cast<std::size_t>(t));
+                for (int t : cell_->changed) holds = holds && holds_position(*current_, static_cast<std::size_t>(t));
             } else if (holds) {
                 holds = holds_all(*current_);
             }
@@ -300,7 +336,257 @@ private:
                 return false;
             }
         }
+        if (cell_->closed.size() >= kMendFace) {
+            collect_generators();
+            scanned_ += generators_.size();
+            if (const std::optional<bool> answer = mend()) {
+                ++mended_;
+                return *answer;
+            }
+        }
         return build();
+    }
+
+    // A mended certificate, the previous cell's kind first: the answer it gives, if one is.
+    std::optional<bool> mend() {
+        if (last_member_ && mend_triangle()) return true;
+        if (mend_plane()) return false;
+        if (!last_member_ && mend_triangle()) return true;
+        return std::nullopt;
+    }
+
+    // A generator of the cell's E: -edge for a contact's edge (negate), M r for a twist r; its
+    // vector's approximation kept for the scans below.
+    struct Generator {
+        const ExactVector* vector;
+        ExactVector::Approximation rounded;
+        bool negate;
+        int contact, slot;    // its name: contact j's edge in `slot`,
+        const Exact3* twist;  // or (contact < 0) the twist r
+        [[nodiscard]] Piece piece() const { return contact < 0 ? Piece{-1, 0, *twist} : Piece{contact, slot, {}}; }
+    };
+    // The cell's generators: the twists' images, then each closed contact's edges (position t's
+    // from first_[t]).
+    void collect_generators() {
+        images_.clear();
+        generators_.clear();
+        first_.clear();
+        if (m_) {
+            for (const Exact3& r : *cell_->closure) images_.push_back(ExactVector::from_exact(r).transformed(*m_));
+            for (std::size_t i = 0; i < images_.size(); ++i) {
+                generators_.push_back({&images_[i], images_[i].approximation(), false, -1, 0, &(*cell_->closure)[i]});
+            }
+        }
+        for (std::size_t t = 0; t < cell_->closed.size(); ++t) {
+            first_.push_back(generators_.size());
+            const int j = cell_->closed[t];
+            edges_.for_contact(static_cast<std::size_t>(j), cell_->letters[t], [&](const ExactVector& edge, int slot) {
+                generators_.push_back({&edge, edge.approximation(), true, j, slot, nullptr});
+                return true;
+            });
+        }
+        first_.push_back(generators_.size());
+    }
+    // det(a, b, c) for a, b given with their approximations and c a generator.
+    static Sign det_of(const ExactVector& a, const ExactVector::Approximation& pa, const ExactVector& b,
+                       const ExactVector::Approximation& pb, const Generator& c) {
+        const Sign s = det_sign(a, b, *c.vector, pa, pb, c.rounded);
+        return c.negate ? -s : s;
+    }
+    static Sign det_of(const Generator& a, const Generator& b, const Generator& c) {
+        const Sign s = det_of(*a.vector, a.rounded, *b.vector, b.rounded, c);
+        return a.negate != b.negate ? -s : s;
+    }
+    ExactVector vector_of(const Piece& p) const {
+        if (p.contact < 0) return ExactVector::from_exact(p.twist).transformed(*m_);
+        return edges_.edge(static_cast<std::size_t>(p.contact), p.slot).negated();
+    }
+
+    // The latest triangle, some of its pieces gone. With two left, a and b in the triangle's
+    // cyclic order, a generator x of the cell in place of the third holds e when det(a, b, x) > 0,
+    // det(e, b, x) >= 0 and det(a, e, x) >= 0 (det(e, a, b) >= 0 held before and does not involve
+    // x). Else the bridge over e about each piece left, or about the cell's first generator when
+    // none is (or E had no triangle: it was not pointed).
+    bool mend_triangle() {
+        std::array<Piece, 3> left{};
+        std::size_t count = 0, gone = 0;
+        if (!triangles_.empty()) {
+            const std::array<Piece, 3>& t = triangles_.front();
+            for (std::size_t k = 0; k < 3; ++k) {
+                if (has_piece(t[k])) {
+                    left[count++] = t[k];
+                } else {
+                    gone = k;
+                }
+            }
+            // (in the triangle's cyclic order after the piece gone)
+            if (count == 2 && gone == 1) std::swap(left[0], left[1]);
+        }
+        std::array<ExactVector, 2> kept;
+        std::array<ExactVector::Approximation, 2> rounded;
+        for (std::size_t k = 0; k < std::min<std::size_t>(count, 2); ++k) {
+            kept[k] = vector_of(left[k]);
+            rounded[k] = kept[k].approximation();
+        }
+        if (count == 2) {
+            const ExactVector &a = kept[0], &b = kept[1];
+            const ExactVector::Approximation re = wrench_.approximation();
+            const auto completes = [&](const Generator& x) {
+                return det_of(a, rounded[0], b, rounded[1], x) == Sign::Positive &&
+                       det_of(wrench_, re, b, rounded[1], x) != Sign::Negative &&
+                       det_of(a, rounded[0], wrench_, re, x) != Sign::Negative;
+            };
+            // (the contacts that changed first: along a face's walk the piece lost is theirs)
+            const Generator* x = changed_generator(completes);
+            if (!x) {
+                const auto found = std::find_if(generators_.begin(), generators_.end(), completes);
+                if (found != generators_.end()) x = &*found;
+            }
+            if (x) {
+                keep_triangle({x->piece(), left[0], left[1]});
+                return true;
+            }
+        }
+        for (std::size_t k = 0; k < std::min<std::size_t>(count, 2); ++k) {
+            if (bridge(kept[k], rounded[k], left[k])) return true;
+        }
+        if (count > 0 || generators_.empty()) return false;
+        const Generator& first = generators_.front();
+        const ExactVector p = first.negate ? first.vector->negated() : *first.vector;
+        return bridge(p, p.approximation(), first.piece());
+    }
+    // A mended triangle in place of the latest one.
+    void keep_triangle(const std::array<Piece, 3>& t) {
+        if (triangles_.empty()) {
+            triangles_.push_back(t);
+        } else {
+            triangles_.front() = t;
+        }
+    }
+
+    // e in cone(p, x, y) for a generator p of the cell: the plane through p and e splits the
+    // other generators into two sides, and e is in cone(p, x, y) for x, y on either side when the
+    // plane through x and y leaves p and e on one side. The pair that leaves the most there is the
+    // edge of E that the plane crosses beyond e; it is found as the bridge of two sets is, each
+    // taken as the tangent from the other in turn (a few rounds, each one scan of the cell's
+    // generators), and the triangle is then checked exactly.
+    bool bridge(const ExactVector& p, const ExactVector::Approximation& rp, const Piece& name) {
+        constexpr int kRounds = 4;
+        const Generator pg{&p, rp, false, 0, 0, nullptr};
+        const Generator eg{&wrench_, wrench_.approximation(), false, 0, 0, nullptr};
+        sides_.clear();
+        const Generator* x = nullptr;  // det(p, e, x) > 0
+        const Generator* y = nullptr;  // det(p, e, y) < 0
+        // About p, x and y start as the generators nearest e on either side: the plane through
+        // them crosses the ray of e (not its opposite) if any such plane does.
+        for (const Generator& g : generators_) {
+            sides_.push_back(det_of(pg, eg, g));
+            if (sides_.back() == Sign::Positive && (!x || det_of(pg, g, *x) == Sign::Positive)) x = &g;
+            if (sides_.back() == Sign::Negative && (!y || det_of(pg, g, *y) == Sign::Negative)) y = &g;
+        }
+        if (!x || !y || det_of(pg, *x, *y) != Sign::Negative) return false;
+        // The tangent from `from` to the generators on side `on`: z replaces `to` when the plane
+        // through from and to has z and p on opposite sides.
+        const auto tangent = [&](const Generator& from, const Generator*& to, Sign on) {
+            bool moved = false;
+            Sign at_p = det_of(from, *to, pg);
+            for (std::size_t i = 0; i < generators_.size(); ++i) {
+                const Generator& z = generators_[i];
+                if (sides_[i] != on || &z == to || at_p == Sign::Zero) continue;
+                if (det_of(from, *to, z) == -at_p) {
+                    to = &z;
+                    at_p = det_of(from, *to, pg);
+                    moved = true;
+                }
+            }
+            return moved;
+        };
+        for (int round = 0; round < kRounds; ++round) {
+            const bool moved_y = tangent(*x, y, Sign::Negative);
+            const bool moved_x = tangent(*y, x, Sign::Positive);
+            if (!moved_x && !moved_y) break;
+        }
+        // e in cone(p, x, y): o = det(p, x, y) != 0, and det(e, x, y), det(p, e, y), det(p, x, e)
+        // each of o's sign or 0.
+        const Sign o = det_of(*x, *y, pg);
+        if (o == Sign::Zero || det_of(*x, *y, eg) == -o || det_of(pg, eg, *y) == -o || det_of(pg, eg, *x) == o) return false;
+        keep_triangle(o == Sign::Positive ? std::array<Piece, 3>{name, x->piece(), y->piece()}
+                                          : std::array<Piece, 3>{name, y->piece(), x->piece()});
+        return true;
+    }
+
+    // The first generator of a contact that changed since the previous cell (of this face) for
+    // which `test` holds, if any.
+    template <class Test>
+    const Generator* changed_generator(Test test) const {
+        if (cell_->first || cell_->face != last_face_) return nullptr;
+        for (int t : cell_->changed) {
+            const auto position = static_cast<std::size_t>(t);
+            for (std::size_t i = first_[position]; i < first_[position + 1]; ++i) {
+                if (test(generators_[i])) return &generators_[i];
+            }
+        }
+        return nullptr;
+    }
+
+    // The current plane, broken by a generator g of the cell (one of the contacts that changed,
+    // if any does): of the planes through g and another generator x, the two with every generator
+    // on one side (found as gift wrapping finds its next edge, then checked exactly), one with e
+    // strictly on the other side is the cell's plane.
+    bool mend_plane() {
+        if (!current_ || generators_.size() < 2) return false;
+        const auto breaks = [&](const Generator& x) {
+            const Sign s = side(*current_, *x.vector, x.rounded);
+            return (x.negate ? -s : s) == Sign::Negative;
+        };
+        const Generator* g = changed_generator(breaks);
+        if (!g) {
+            const auto found = std::find_if(generators_.begin(), generators_.end(), breaks);
+            if (found == generators_.end()) return false;
+            g = &*found;
+        }
+        // The plane through g and x, turned so that e is on its negative side, when every
+        // generator is on the other: h = side (g x x), h . y = side det(g, x, y) >= 0, h . e < 0.
+        const Generator eg{&wrench_, wrench_.approximation(), false, 0, 0, nullptr};
+        const auto through = [&](const Generator& x) {
+            const Sign side = -det_of(*g, x, eg);
+            if (side == Sign::Zero) return false;
+            if (!std::all_of(generators_.begin(), generators_.end(), [&](const Generator& y) { return det_of(*g, x, y) != -side; })) {
+                return false;
+            }
+            const int sign = (side == Sign::Positive ? 1 : -1) * (g->negate != x.negate ? -1 : 1);
+            Plane plane = plane_of(ExactVector::cross(*g->vector, *x.vector, sign));
+            plane.u = *g->vector;
+            plane.v = *x.vector;
+            plane.ru = g->rounded;
+            plane.rv = x.rounded;
+            plane.sign = sign;
+            current_ = std::move(plane);
+            current_valid_ = true;
+            planes_.insert(planes_.begin(), *current_);
+            if (planes_.size() > kCache) planes_.pop_back();
+            return true;
+        };
+        // First about the generators the broken plane went through (the plane turns about one of
+        // them along a face's walk), then about every generator: hi with det(g, hi, y) >= 0 for
+        // every generator y if any has, lo with det(g, lo, y) <= 0 (one scan for both).
+        if (current_->sign != 0) {
+            const Plane old = *current_;
+            if (through(Generator{&old.u, old.ru, false, 0, 0, nullptr}) || through(Generator{&old.v, old.rv, false, 0, 0, nullptr})) {
+                return true;
+            }
+        }
+        const Generator* hi = nullptr;
+        const Generator* lo = nullptr;
+        for (const Generator& y : generators_) {
+            if (!hi) {
+                if (!parallel(*g->vector, *y.vector)) hi = lo = &y;
+                continue;
+            }
+            if (det_of(*g, *hi, y) == Sign::Negative) hi = &y;
+            if (det_of(*g, *lo, y) == Sign::Positive) lo = &y;
+        }
+        return hi && (through(*hi) || through(*lo));
     }
 
     // e against E (its extreme rays from its generators); a new certificate either way.
@@ -367,11 +653,18 @@ private:
     TwistFilters* filters_ = nullptr;
     std::optional<Plane> current_;
     bool current_valid_ = false;  // the current plane held every generator of the previous cell
+    bool last_member_ = false;    // the previous cell's answer
+    std::vector<ExactVector> images_;     // this cell's M r, for the mends
+    std::vector<Generator> generators_;  // this cell's generators, for the mends
+    std::vector<std::size_t> first_;     // position t's first generator in generators_
+    std::vector<Sign> sides_;            // a bridge's side of each generator
     std::size_t last_face_ = static_cast<std::size_t>(-1);  // that cell's face
     std::vector<Plane> planes_;
     std::vector<std::array<Piece, 3>> triangles_;
     std::size_t built_ = 0;
     std::size_t tested_ = 0;  // generators of the E's tested
+    std::size_t mended_ = 0;   // cells decided by a mended certificate
+    std::size_t scanned_ = 0;  // generators of the cells whose certificate a mend tried
 };
 
 // The all-f mode's E once its closure (the twists of the cells merged into it) is known: the
@@ -470,7 +763,7 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
     };
     struct Half {
         std::vector<std::vector<Member>> members;  // per wrench
-        std::vector<std::size_t> built, tested;    // per wrench
+        std::vector<std::size_t> built, tested, mended, scanned;  // per wrench
         std::vector<Exact3> fixed_closure;
         std::size_t closed_letters = 0;
     };
@@ -549,6 +842,8 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
         for (const Decider& decider : deciders) {
             half.built.push_back(decider.built());
             half.tested.push_back(decider.tested());
+            half.mended.push_back(decider.mended());
+            half.scanned.push_back(decider.scanned());
         }
     });
     // Face i's modes come after those of the faces before it.
@@ -630,6 +925,8 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
         out.built = halves[0].built[k] + halves[1].built[k] + (built_here ? 1 : 0);
         out.tested_generators = halves[0].tested[k] + halves[1].tested[k] + fixed_deciders[k].tested() +
                                 (k == 0 ? fixed_tested : 0);
+        out.mended = halves[0].mended[k] + halves[1].mended[k] + fixed_deciders[k].mended();
+        out.scanned_generators = halves[0].scanned[k] + halves[1].scanned[k] + fixed_deciders[k].scanned();
         out.closed_letters = n + halves[0].closed_letters + halves[1].closed_letters;
         out.result.verdict = verdict_of(out.result.modes.size());
         take(std::move(out));

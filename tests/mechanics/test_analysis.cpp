@@ -606,6 +606,56 @@ TEST(Analysis, LargeScenesOnTwoThreadsAgreeWithExactLp) {
     EXPECT_GE(members, 4);
 }
 
+// Faces whose every step changes an extreme generator of E: contacts on a line with normals
+// along it (at decimal abscissae, whose differences are not doubles, and at integers), mu 0.3
+// and random mu, mu_k; dynamic and quasi-static. Along such a face the certificate of one cell
+// breaks at the next, and is mended (a triangle's lost corner replaced or bridged, a plane
+// turned about the generator that broke it) instead of testing e against E. Every answer
+// against the exact LP, mode by mode; the mends must decide most cells.
+TEST(Analysis, MendedCertificatesOnLongFacesAgreeWithExactLp) {
+    testing::Random rnd(7331);
+    std::size_t built = 0, modes_seen = 0;
+    int wrenches = 0, members = 0;
+    for (int s = 0; s < 4; ++s) {
+        const bool quasi_static = s == 3;
+        const int n = 20;
+        Scene scene;
+        scene.body = Body{1.0, Vec2(0.0, 0.0), 0.5, {}};
+        for (int j = 0; j < n; ++j) {
+            const auto [mu, mk] = s == 0 || s == 3 ? std::pair{0.3, 0.3} : testing::random_mu(rnd);
+            const double x = s == 1 ? static_cast<double>(j - n / 2) : -1.998 + 0.004 * j * 37;  // (decimal steps)
+            scene.contacts.push_back(Contact::make(Vec2(x, 0.0), Vec2(j % 2 == 0 ? 1.0 : -1.0, 0.0), mu, mk));
+        }
+        const ModeSet modes = enumerate_modes(scene.contacts);
+        const testing::ExactContacts c(scene.contacts);
+        for (int w = 0; w < 6; ++w) {
+            reference::QVec e = w == 0 ? reference::q(Vec3(0.1, 1, 0.2))
+                                : w % 2 == 1 ? reference::q(Vec3(rnd.integer(-3, 3), rnd.integer(-3, 3), rnd.integer(-3, 3)))
+                                             : minus_contact_generators({0, 0, 0}, c, n, rnd, 3);
+            const Vec3 ed = reference::to_vec3(e);
+            if (reference::q(ed) != e) continue;  // not an exact double
+            std::vector<std::size_t> expected;
+            for (std::size_t i = 0; i < modes.modes.size(); ++i) {
+                const std::string& letters = modes.modes[i].letters;
+                const bool in = quasi_static ? testing::exact_lp_quasi_static_in_mode(scene, letters, e)
+                                             : testing::exact_lp_applied_in_mode(scene, letters, e);
+                if (in) expected.push_back(i);
+            }
+            const SceneAnswer a = query_scene(scene, ed, AnalysisOptions{quasi_static});
+            EXPECT_EQ(a.result.modes, expected) << "scene " << s << ", wrench " << ed.transpose();
+            built += a.built;
+            modes_seen += a.mode_count;
+            ++wrenches;
+            members += static_cast<int>(expected.size());
+        }
+    }
+    std::cout << "[Analysis] long faces: " << wrenches << " wrenches, " << members << " mode answers 'yes'; E built for "
+              << built << " of " << modes_seen << " modes\n";
+    EXPECT_GE(wrenches, 16);
+    EXPECT_GE(members, 400);
+    EXPECT_LT(built * 10, modes_seen);  // (without the mends about half the cells build E)
+}
+
 // One SceneQuestions asked many wrenches in a row (the first answer walks with no all-f cone, the
 // second builds it, the rest test against it; every answer reuses the walk's set-up), then the same
 // wrenches in batches on fresh objects: each answer, with its indices, against the exact LP mode

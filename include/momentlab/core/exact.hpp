@@ -163,6 +163,11 @@ private:
 [[nodiscard]] Sign dot_sign(const ExactVector& a, const Exact3& b, const ExactVector::Approximation& b_approximation);
 /// The exact sign of det[a b c].
 [[nodiscard]] Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c);
+/// det_sign(a, b, c) with their approximation()s given, so that none is rounded again (a scan of
+/// many c against fixed a and b).
+[[nodiscard]] Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c,
+                            const ExactVector::Approximation& pa, const ExactVector::Approximation& pb,
+                            const ExactVector::Approximation& pc);
 /// The exact sign of the minor a[i] b[j] - a[j] b[i].
 [[nodiscard]] Sign minor_sign(const ExactVector& a, const ExactVector& b, int i, int j);
 /// True when a x b = 0 exactly.

@@ -75,8 +75,13 @@ struct SceneAnswer {
     QueryResult result;          ///< their indices in enumerate_modes' order (analyze's), increasing
     std::size_t mode_count = 0;  ///< how many modes the scene has
     std::size_t built = 0;       ///< how many modes' E e was tested against (the rest were decided by certificates)
-    /// The generators of those E: with mode_count, the work of this answer.
+    /// The generators of those E: with mode_count and scanned_generators, the work of this answer.
     std::size_t tested_generators = 0;
+    /// How many modes were decided by a certificate mended from the cell before (a few scans of
+    /// the cell's generators with exact predicates, where testing e against E sorts them).
+    std::size_t mended = 0;
+    /// The generators of the cells whose certificate a mend tried (each scanned a few times).
+    std::size_t scanned_generators = 0;
     /// The closed contacts summed over the modes (the letters that are not 's'): about the
     /// generators an analysis of the scene builds.
     std::size_t closed_letters = 0;
