@@ -596,13 +596,12 @@ bool force_det_filter(const ExactVector& a, const ExactVector& b, const ExactVec
 
 }  // namespace
 
-Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c) {
-    if (!a.is_constructed() && !b.is_constructed() && !c.is_constructed()) return det_sign(a.value(), b.value(), c.value());
-    return det_sign(a, b, c, a.approximation(), b.approximation(), c.approximation());
-}
+namespace {
 
-Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c, const ExactVector::Approximation& pa,
-              const ExactVector::Approximation& pb, const ExactVector::Approximation& pc) {
+// det_sign of exact vectors given with their approximations (inlined into both entry points).
+inline Sign det_sign_approximated(const ExactVector& a, const ExactVector& b, const ExactVector& c,
+                                  const ExactVector::Approximation& pa, const ExactVector::Approximation& pb,
+                                  const ExactVector::Approximation& pc) {
     Sign s = Sign::Zero;
     if (det_filter(pa, pb, pc, s)) {
         ++g_stats.filtered;
@@ -614,6 +613,18 @@ Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c, 
         return s;
     }
     return exact_sign(det(a.exact(), b.exact(), c.exact()));
+}
+
+}  // namespace
+
+Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c) {
+    if (!a.is_constructed() && !b.is_constructed() && !c.is_constructed()) return det_sign(a.value(), b.value(), c.value());
+    return det_sign_approximated(a, b, c, a.approximation(), b.approximation(), c.approximation());
+}
+
+Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c, const ExactVector::Approximation& pa,
+              const ExactVector::Approximation& pb, const ExactVector::Approximation& pc) {
+    return det_sign_approximated(a, b, c, pa, pb, pc);
 }
 
 Sign minor_sign(const ExactVector& a, const ExactVector& b, int i, int j) {
