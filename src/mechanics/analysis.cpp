@@ -252,7 +252,8 @@ private:
     }
     static Sign side(const Plane& p, const ExactVector& y) { return p.sign == 0 ? dot_sign(p.h, y) : side(p, y, y.approximation()); }
     Plane plane_of(const ExactVector& h) const {
-        Plane p{h, {}};
+        Plane p;
+        p.h = h;
         if (m_) {
             const Exact3 x = h.exact();
             const ExactMatrix& m = *m_;
