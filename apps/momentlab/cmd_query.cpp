@@ -71,10 +71,15 @@ nlohmann::json answer_json(const std::vector<ModeForces>& a, const QueryResult& 
 }
 
 // {"modes", "verdict"} of an answer by the walk (as answer_json of one through the analysis).
-nlohmann::json answer_json(const SceneAnswer& a) {
-    nlohmann::json modes = nlohmann::json::array();
-    for (const Mode& mode : a.modes) modes.push_back(mode.letters);
-    return {{"modes", modes}, {"verdict", to_string(a.result.verdict)}};
+// A walk's answer as one line of JSON, {"modes": [...], "verdict": ...} and the wrench asked if
+// given, the text nlohmann's dump() gives for it (keys in order, no spaces), written as it goes:
+// an answer's letters can pass 10^8, and a document of them would hold them twice more.
+void write_answer(std::ostream& out, const SceneAnswer& a, const nlohmann::json* wrench = nullptr) {
+    out << "{\"modes\":[";
+    for (std::size_t i = 0; i < a.modes.size(); ++i) out << (i ? ",\"" : "\"") << a.modes[i].letters << '"';
+    out << "],\"verdict\":\"" << to_string(a.result.verdict) << '"';
+    if (wrench) out << ",\"wrench\":" << wrench->dump();
+    out << "}\n";
 }
 
 // The lines of a regular file that are not blank (a wrench each, or an error); none for a pipe
@@ -158,9 +163,7 @@ void answer_file(const QueryOptions& o) {
         std::size_t k = 0;
         std::size_t modes = 0, closed_letters = 0;  // the scene's counts, the same in every answer
         walk->answer(std::span<const Vec3>(pending), [&](SceneAnswer&& answer) {
-            nlohmann::json out = answer_json(answer);
-            out["wrench"] = asked[k++];
-            std::cout << out.dump() << "\n";
+            write_answer(std::cout, answer, &asked[k++]);
             walked += static_cast<double>(answer.tested_generators) + static_cast<double>(answer.scanned_generators) / kScannedPerTested;
             modes = answer.mode_count;
             closed_letters = answer.closed_letters;
@@ -225,7 +228,7 @@ int answer_one(const QueryOptions& o) {
     const SceneAnswer a = query_input(scene, e, "query", AnalysisOptions{o.quasi_static, progress.callback()});
     progress.finish();
     if (o.json) {
-        std::cout << answer_json(a).dump() << "\n";
+        write_answer(std::cout, a);
         return 0;
     }
     std::cout << "verdict: " << to_string(a.result.verdict) << "\n";
