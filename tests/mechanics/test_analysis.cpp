@@ -68,6 +68,18 @@ std::set<std::string> direct(const Scene& scene, const Vec3& e, bool quasi_stati
     return out;
 }
 
+// The indices of the modes whose E holds e, by the exact LP mode by mode.
+std::vector<std::size_t> exact_lp_modes(const Scene& scene, const ModeSet& modes, const reference::QVec& e, bool quasi_static) {
+    std::vector<std::size_t> out;
+    for (std::size_t i = 0; i < modes.modes.size(); ++i) {
+        const std::string& letters = modes.modes[i].letters;
+        const bool in = quasi_static ? testing::exact_lp_quasi_static_in_mode(scene, letters, e)
+                                     : testing::exact_lp_applied_in_mode(scene, letters, e);
+        if (in) out.push_back(i);
+    }
+    return out;
+}
+
 // A 1 x 0.5 block on a table (contacts at its bottom corners), mass 1, mu 0.5.
 Scene block_on_table(double mu) {
     Scene s;
@@ -634,13 +646,7 @@ TEST(Analysis, MendedCertificatesOnLongFacesAgreeWithExactLp) {
                                              : minus_contact_generators({0, 0, 0}, c, n, rnd, 3);
             const Vec3 ed = reference::to_vec3(e);
             if (reference::q(ed) != e) continue;  // not an exact double
-            std::vector<std::size_t> expected;
-            for (std::size_t i = 0; i < modes.modes.size(); ++i) {
-                const std::string& letters = modes.modes[i].letters;
-                const bool in = quasi_static ? testing::exact_lp_quasi_static_in_mode(scene, letters, e)
-                                             : testing::exact_lp_applied_in_mode(scene, letters, e);
-                if (in) expected.push_back(i);
-            }
+            const std::vector<std::size_t> expected = exact_lp_modes(scene, modes, e, quasi_static);
             const SceneAnswer a = query_scene(scene, ed, AnalysisOptions{quasi_static});
             EXPECT_EQ(a.result.modes, expected) << "scene " << s << ", wrench " << ed.transpose();
             built += a.built;
@@ -704,13 +710,7 @@ TEST(Analysis, SceneQuestionsAnswersEveryWrenchOfASequenceAsTheExactLp) {
             if (w == 6) e = {0, 0, 0};
             const Vec3 ed = reference::to_vec3(e);
             if (reference::q(ed) != e) continue;  // not an exact double
-            std::vector<std::size_t> expected;
-            for (std::size_t i = 0; i < modes.modes.size(); ++i) {
-                const std::string& letters = modes.modes[i].letters;
-                const bool in = quasi_static ? testing::exact_lp_quasi_static_in_mode(scene, letters, e)
-                                             : testing::exact_lp_applied_in_mode(scene, letters, e);
-                if (in) expected.push_back(i);
-            }
+            const std::vector<std::size_t> expected = exact_lp_modes(scene, modes, e, quasi_static);
             const SceneAnswer a = questions_of.answer(ed);
             ++questions;
             EXPECT_EQ(a.result.modes, expected) << "scene " << s << " (" << n << " contacts), question " << w << ", wrench "
