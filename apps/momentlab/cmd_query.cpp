@@ -70,10 +70,10 @@ nlohmann::json answer_json(const std::vector<ModeForces>& a, const QueryResult& 
     return {{"modes", modes}, {"verdict", to_string(r.verdict)}};
 }
 
-// {"modes", "verdict"} of an answer by the walk (as answer_json of one through the analysis).
-// A walk's answer as one line of JSON, {"modes": [...], "verdict": ...} and the wrench asked if
-// given, the text nlohmann's dump() gives for it (keys in order, no spaces), written as it goes:
-// an answer's letters can pass 10^8, and a document of them would hold them twice more.
+// A walk's answer as one line of JSON, {"modes": [...], "verdict": ...} (as answer_json of one
+// through the analysis) and the wrench asked if given: the text nlohmann's dump() gives for it
+// (keys in order, no spaces), written as it goes, since an answer's letters can pass 10^8 and a
+// document of them would hold them twice more.
 void write_answer(std::ostream& out, const SceneAnswer& a, const nlohmann::json* wrench = nullptr) {
     out << "{\"modes\":[";
     for (std::size_t i = 0; i < a.modes.size(); ++i) out << (i ? ",\"" : "\"") << a.modes[i].letters << '"';
@@ -103,8 +103,9 @@ constexpr double kAnalysedLetters = 1e8;
 // margins need every mode's set). Otherwise the wrenches are answered by the walk, as --wrench
 // is (SceneQuestions), as long as walking for the questions left costs less than an analysis,
 // which then answers each for next to nothing. After each walk, its work (cells walked,
-// generators tested and generators scanned by mends) is weighed against an analysis on two threads (a cone per mode, of about
-// its closed contacts' generators, the modes shared out): for a file, the work per answer so far
+// generators tested and generators scanned by mends) is weighed against an analysis on two
+// threads (a cone per mode, of about its closed contacts' generators, the modes shared out): for
+// a file, the work per answer so far
 // times the questions left; for a pipe, whose length is unknown, the work so far (rent or buy: at
 // most about twice the better of the two). When the analysis wins, it is made at the next wrench
 // (if its letters stay under kAnalysedLetters) and answers the rest from its index. From a

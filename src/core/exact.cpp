@@ -594,10 +594,6 @@ bool force_det_filter(const ExactVector& a, const ExactVector& b, const ExactVec
     return true;
 }
 
-}  // namespace
-
-namespace {
-
 // det_sign of exact vectors given with their approximations (inlined into both entry points).
 inline Sign det_sign_approximated(const ExactVector& a, const ExactVector& b, const ExactVector& c,
                                   const ExactVector::Approximation& pa, const ExactVector::Approximation& pb,

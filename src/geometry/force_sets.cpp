@@ -32,10 +32,11 @@ Exact2 friction_edge(const Vec2& normal, double mu, bool left) { return friction
 std::array<ExactVector, 2> friction_cone_edges(const Vec2& point, const Vec2& normal, double mu) {
     // An edge whose direction is exactly doubles (axis-parallel normals, mu = 0) is kept as
     // ExactVector::wrench keeps it: no Dyadic numbers, and the predicates' filters for forces.
+    const Exact2 p = exact(point);
     const auto edge = [&](bool plus) {
         const Exact2 d = friction_edge(normal, mu, plus);
         if (d[0].fits_double() && d[1].fits_double()) return ExactVector::wrench(point, to_double(d));
-        return ExactVector::from_exact(wrench_through(exact(point), d));
+        return ExactVector::from_exact(wrench_through(p, d));
     };
     return {edge(true), edge(false)};
 }

@@ -337,8 +337,8 @@ private:
                 return false;
             }
         }
+        collect_generators();
         if (cell_->closed.size() >= kMendFace) {
-            collect_generators();
             scanned_ += generators_.size();
             if (const std::optional<bool> answer = mend()) {
                 ++mended_;
@@ -593,30 +593,16 @@ private:
     // e against E (its extreme rays from its generators); a new certificate either way.
     bool build() {
         ++built_;
-        // The images M g of the cell's twists first, then the contacts' edges; a contact's
-        // generator is named by (contact, slot), kept beside it (a twist is named by itself,
-        // when a triangle needs it).
+        // The cell's generators as collect_generators lists them (each named there, for a
+        // triangle that needs it).
         std::vector<ExactVector> generators;
-        if (m_) {
-            for (const Exact3& g : *cell_->closure) generators.push_back(ExactVector::from_exact(g).transformed(*m_));
-        }
-        const std::size_t twists = generators.size();
-        std::vector<std::pair<int, int>> named;
-        generators.reserve(twists + 2 * cell_->closed.size());
-        named.reserve(2 * cell_->closed.size());
-        for (std::size_t t = 0; t < cell_->closed.size(); ++t) {
-            const int j = cell_->closed[t];
-            edges_.for_contact(static_cast<std::size_t>(j), cell_->letters[t], [&](const ExactVector& edge, int slot) {
-                generators.push_back(edge.negated());
-                named.emplace_back(j, slot);
-                return true;
-            });
-        }
+        generators.reserve(generators_.size());
+        for (const Generator& g : generators_) generators.push_back(g.negate ? g.vector->negated() : *g.vector);
         // Its facets are not built: only the one that separates, if any (cone_holds).
         tested_ += generators.size();
         const Held held = cone_holds(generators, e_);
         if (held.member) {
-            if (held.triangle) remember_triangle(*held.triangle, generators, twists, named);
+            if (held.triangle) remember_triangle(*held.triangle, generators);
             return true;
         }
         // A facet or equation of E with h . e < 0 (one exists: e is outside E).
@@ -627,15 +613,11 @@ private:
         return false;
     }
 
-    // Keeps three generators of E whose cone holds e (corners: indices into generators, whose
-    // first `twists` are the images of the cell's twists), named.
-    void remember_triangle(const std::array<std::size_t, 3>& corners, const std::vector<ExactVector>& generators,
-                           std::size_t twists, const std::vector<std::pair<int, int>>& named) {
+    // Keeps three generators of E whose cone holds e (corners: indices into generators, which
+    // are generators_ made vectors), named.
+    void remember_triangle(const std::array<std::size_t, 3>& corners, const std::vector<ExactVector>& generators) {
         std::array<Piece, 3> t;
-        for (std::size_t corner = 0; corner < 3; ++corner) {
-            const std::size_t k = corners[corner];
-            t[corner] = k < twists ? Piece{-1, 0, (*cell_->closure)[k]} : Piece{named[k - twists].first, named[k - twists].second, {}};
-        }
+        for (std::size_t corner = 0; corner < 3; ++corner) t[corner] = generators_[corners[corner]].piece();
         // Kept only when exactly checked: det(a, b, c) > 0 and w on the inner side of each face.
         const ExactVector &a = generators[corners[0]], &b = generators[corners[1]], &c = generators[corners[2]];
         if (det_sign(a, b, c) == Sign::Positive && det_sign(wrench_, b, c) != Sign::Negative &&
@@ -655,8 +637,8 @@ private:
     std::optional<Plane> current_;
     bool current_valid_ = false;  // the current plane held every generator of the previous cell
     bool last_member_ = false;    // the previous cell's answer
-    std::vector<ExactVector> images_;     // this cell's M r, for the mends
-    std::vector<Generator> generators_;  // this cell's generators, for the mends
+    std::vector<ExactVector> images_;     // this cell's M r
+    std::vector<Generator> generators_;  // this cell's generators (for the mends and build)
     std::vector<std::size_t> first_;     // position t's first generator in generators_
     std::vector<Sign> sides_;            // a bridge's side of each generator
     std::size_t last_face_ = static_cast<std::size_t>(-1);  // that cell's face
