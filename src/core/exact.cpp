@@ -497,13 +497,28 @@ Sign dot_sign(const ExactVector& a, const ExactVector& b) {
     return exact_sign(dot(a.exact(), b.exact()));
 }
 
+Sign dot_sign(const ExactVector& a, const ExactVector& b, const ExactVector::Approximation& pa,
+              const ExactVector::Approximation& pb) {
+    if (!a.is_constructed() && !b.is_constructed()) return dot_sign(a.value(), b.value());
+    Sign s = Sign::Zero;
+    if (dot_filter(pa, pb, s)) {
+        ++g_stats.filtered;
+        return s;
+    }
+    return exact_sign(dot(a.exact(), b.exact()));
+}
+
 Sign dot_sign(const ExactVector& a, const Exact3& b) { return dot_sign(a, b, exact_approximation(b)); }
 
 ExactVector::Approximation approximation(const Exact3& b) { return exact_approximation(b); }
 
 Sign dot_sign(const ExactVector& a, const Exact3& b, const ExactVector::Approximation& b_approximation) {
+    return dot_sign(a, b, a.approximation(), b_approximation);
+}
+
+Sign dot_sign(const ExactVector& a, const Exact3& b, const ExactVector::Approximation& pa, const ExactVector::Approximation& pb) {
     Sign s = Sign::Zero;
-    if (dot_filter(a.approximation(), b_approximation, s)) {
+    if (dot_filter(pa, pb, s)) {
         ++g_stats.filtered;
         return s;
     }

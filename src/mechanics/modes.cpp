@@ -484,19 +484,30 @@ ModeSet enumerate_modes(const std::vector<Contact>& contacts, const Progress& pr
     const std::size_t n = contacts.size();
     std::vector<std::string> letters(1, std::string(n, letter(ContactMode::Fixed)));
     std::vector<std::vector<Q3>> closures(1);
+    // The interior of a full-dimensional A, where no contact is closed, is a mode whose closure
+    // is A itself: not built again from A's rays (10^5 of them on the tangent family).
+    std::size_t interior = 0;
     walk.run(progress, [&](const detail::WalkCell& cell) {
         if (cell.index >= letters.size()) {
             letters.resize(cell.index + 1);
             closures.resize(cell.index + 1);
         }
-        auto& gens = closures[cell.index];
-        gens.insert(gens.end(), cell.closure->begin(), cell.closure->end());
+        if (cell.closed.empty() && cell.index != 0) {
+            interior = cell.index;
+        } else {
+            auto& gens = closures[cell.index];
+            gens.insert(gens.end(), cell.closure->begin(), cell.closure->end());
+        }
         if (cell.index != 0) letters[cell.index] = cell.all_letters(n);
     });
     ModeSet out;
     out.feasible_twists = walk.feasible_twists();
     out.modes.resize(letters.size());
     for (std::size_t i = 0; i < letters.size(); ++i) {  // the letters moved, not copied: they are Theta(M n)
+        if (i == interior && i != 0) {
+            out.modes[i] = Mode{std::move(letters[i]), walk.feasible_twists()};
+            continue;
+        }
         std::vector<ExactVector> gens;
         for (const Q3& g : closures[i]) gens.push_back(ExactVector::from_exact(g));
         closures[i] = {};

@@ -662,6 +662,61 @@ TEST(Analysis, MendedCertificatesOnLongFacesAgreeWithExactLp) {
     EXPECT_LT(built * 10, modes_seen);  // (without the mends about half the cells build E)
 }
 
+// Rings of contacts whose faces close one contact each (a body in a cradle: normals tilted from
+// the radius; normal lines tangent to a circle), where the cells' sets turn a little from one face
+// to the next. A facet of E as the certificate has generators on it, which the next cell's turned
+// generators cross; a wide plane (room on both sides, exactly checked) lasts. Every answer of a
+// batch against the exact LP, mode by mode; the batch's answers and counts the same when asked
+// again (the walk's parts have certificates of their own, whichever thread takes them) and as
+// single questions; E built for few cells.
+TEST(Analysis, WidePlanesOnRingsAgreeWithExactLp) {
+    testing::Random rnd(4409);
+    std::size_t built = 0, modes_seen = 0;
+    int wrenches = 0, members = 0;
+    for (int s = 0; s < 4; ++s) {
+        const bool quasi_static = s == 3;
+        const int n = 30;
+        Scene scene;
+        scene.body = Body{1.0, Vec2(0.0, 0.0), 0.5, {}};
+        for (int k = 0; k < n; ++k) {
+            const double a = 3.141592653589793 * (1.0 + (k + 0.5) / n), c = std::cos(a), sn = std::sin(a), t = 0.2;
+            const Vec2 normal = s % 2 == 0 ? Vec2(-(c * std::cos(t) - sn * std::sin(t)), -(c * std::sin(t) + sn * std::cos(t)))
+                                           : Vec2(-sn, c);
+            const auto [mu, mk] = s == 2 ? testing::random_mu(rnd) : std::pair{0.3, 0.3};
+            scene.contacts.push_back(Contact::make(Vec2(c, sn), normal, mu, mk));
+        }
+        const ModeSet modes = enumerate_modes(scene.contacts);
+        const testing::ExactContacts c(scene.contacts);
+        std::vector<Vec3> asked;
+        for (int w = 0; w < 6; ++w) {
+            const reference::QVec e = w % 2 == 0 ? reference::q(Vec3(rnd.integer(-3, 3), rnd.integer(-3, 3), rnd.integer(-3, 3)))
+                                                 : minus_contact_generators({0, 0, 0}, c, n, rnd, 7);
+            asked.push_back(reference::to_vec3(e));  // (near the boundaries: rounded to doubles)
+        }
+        SceneQuestions first(scene, AnalysisOptions{quasi_static}), again(scene, AnalysisOptions{quasi_static});
+        const std::vector<SceneAnswer> batch = first.answer(std::span<const Vec3>(asked));
+        const std::vector<SceneAnswer> repeated = again.answer(std::span<const Vec3>(asked));
+        ASSERT_EQ(batch.size(), asked.size());
+        for (std::size_t w = 0; w < asked.size(); ++w) {
+            const std::vector<std::size_t> expected = exact_lp_modes(scene, modes, reference::q(asked[w]), quasi_static);
+            EXPECT_EQ(batch[w].result.modes, expected) << "scene " << s << ", wrench " << asked[w].transpose();
+            EXPECT_EQ(query_scene(scene, asked[w], AnalysisOptions{quasi_static}).result.modes, expected) << "scene " << s;
+            EXPECT_EQ(repeated[w].result.modes, expected) << "scene " << s;
+            EXPECT_EQ(repeated[w].built, batch[w].built) << "scene " << s;
+            EXPECT_EQ(repeated[w].tested_generators, batch[w].tested_generators) << "scene " << s;
+            built += batch[w].built;
+            modes_seen += batch[w].mode_count;
+            ++wrenches;
+            members += static_cast<int>(expected.size());
+        }
+    }
+    std::cout << "[Analysis] rings: " << wrenches << " wrenches, " << members << " mode answers 'yes'; E built for " << built
+              << " of " << modes_seen << " modes\n";
+    EXPECT_EQ(wrenches, 24);
+    EXPECT_GE(members, 24);
+    EXPECT_LT(built * 20, modes_seen);
+}
+
 // One SceneQuestions asked many wrenches in a row (the first answer walks with no all-f cone, the
 // second builds it, the rest test against it; every answer reuses the walk's set-up), then the same
 // wrenches in batches on fresh objects: each answer, with its indices, against the exact LP mode

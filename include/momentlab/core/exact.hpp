@@ -161,6 +161,13 @@ private:
 [[nodiscard]] ExactVector::Approximation approximation(const Exact3& b);
 /// dot_sign(a, b) with b's approximation(b) given, so that b is not rounded again.
 [[nodiscard]] Sign dot_sign(const ExactVector& a, const Exact3& b, const ExactVector::Approximation& b_approximation);
+/// dot_sign(a, b) with their approximation()s given, so that neither is rounded again (a plane
+/// tested against many vectors).
+[[nodiscard]] Sign dot_sign(const ExactVector& a, const ExactVector& b, const ExactVector::Approximation& pa,
+                            const ExactVector::Approximation& pb);
+/// dot_sign(a, b) for b given by its Dyadic coordinates, with a's approximation() and b's given.
+[[nodiscard]] Sign dot_sign(const ExactVector& a, const Exact3& b, const ExactVector::Approximation& pa,
+                            const ExactVector::Approximation& pb);
 /// The exact sign of det[a b c].
 [[nodiscard]] Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c);
 /// det_sign(a, b, c) with their approximation()s given, so that none is rounded again (a scan of
