@@ -11,6 +11,7 @@
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -197,6 +198,154 @@ private:
     std::vector<ExactVector::Approximation> approximations_;
 };
 
+// A generator of a cell's E: -edge for a contact's edge (negate), M r for a twist r; its
+// vector's approximation kept for the scans that test it.
+struct Generator {
+    const ExactVector* vector;
+    ExactVector::Approximation rounded;
+    bool negate;
+    int contact, slot;    // its name: contact j's edge in `slot`,
+    const Exact3* twist;  // or (contact < 0) the twist r
+    [[nodiscard]] Piece piece() const { return contact < 0 ? Piece{-1, 0, *twist} : Piece{contact, slot, {}}; }
+};
+
+// The contacts' part of E (the generators -edge) of the cells of one long face, reduced: on a 2-D
+// face of A every closed contact has its normal wrench orthogonal to the face, so the closed
+// contacts share one normal line, and their edges with one force (the same doubles: contacts of
+// one mu on a floor) differ only in torque. The cone of such a group is spanned by its edges of
+// least and greatest torque. Each group keeps its edges in the order of their torques and the
+// ranks of the edges the cell has, updated with the contacts that changed (O(log n) each), so
+// that a cell's -T is given by at most two generators a group instead of one or two a contact.
+// Shared by the deciders of a batch; used on faces of at least kGroupFace closed contacts whose
+// edges are forces in at most kGroups groups.
+class GroupedEdges {
+public:
+    static constexpr std::size_t kGroupFace = 16;
+    static constexpr std::size_t kGroups = 8;
+
+    explicit GroupedEdges(const FrictionEdges& edges) : edges_(edges) {}
+
+    // Follows the walk: every cell it visits, in order (the all-f cells too).
+    void next_cell(const detail::WalkCell& cell) {
+        if (cell.first || cell.face != face_) {
+            start(cell);
+        } else if (active_) {
+            for (int t : cell.changed) {
+                const auto position = static_cast<std::size_t>(t);
+                set_alive(position, letters_[position], false);
+                letters_[position] = cell.letters[position];
+                set_alive(position, letters_[position], true);
+            }
+        }
+        if (!active_) return;
+        reduced_.clear();
+        for (const std::set<int>& alive : alive_) {
+            if (alive.empty()) continue;
+            add_reduced(order_[static_cast<std::size_t>(*alive.begin())]);
+            if (alive.size() > 1) add_reduced(order_[static_cast<std::size_t>(*alive.rbegin())]);
+        }
+    }
+
+    // The cell's contact generators reduced, or null when its face is not grouped.
+    [[nodiscard]] const std::vector<Generator>* generators() const { return active_ ? &reduced_ : nullptr; }
+
+private:
+    struct Edge {
+        ExactVector vector;  // -edge
+        ExactVector::Approximation rounded;
+        int contact, slot;
+        std::size_t group;
+        int rank = 0;  // its place in order_ (its group's edges are consecutive there)
+    };
+
+    void start(const detail::WalkCell& cell) {
+        face_ = cell.face;
+        active_ = false;
+        if (cell.closed.size() < kGroupFace) return;
+        edge_list_.clear();
+        at_.assign(cell.closed.size() * 4, -1);
+        std::map<std::pair<double, double>, std::size_t> groups;
+        for (std::size_t t = 0; t < cell.closed.size(); ++t) {
+            const auto j = static_cast<std::size_t>(cell.closed[t]);
+            for (int slot : {0, 1, edges_.sliding_slot(j, 'l'), edges_.sliding_slot(j, 'r')}) {
+                if (at_[t * 4 + static_cast<std::size_t>(slot)] >= 0) continue;
+                Edge e{edges_.edge(j, slot).negated(), edges_.rounded(j, slot), static_cast<int>(j), slot, 0};
+                e.rounded.approx = -e.rounded.approx;
+                // Its force: the vector's first two coordinates, doubles as stored or as the
+                // factors of a wrench() give them (else the face is not grouped).
+                Vec2 point, d;
+                int sign = 0;
+                if (!e.vector.is_constructed()) {
+                    d = e.vector.value().head<2>();
+                } else if (e.vector.force(point, d, sign)) {
+                    d *= sign;
+                } else {
+                    return;
+                }
+                d = d.array() + 0.0;  // (-0 as 0)
+                const auto [it, added] = groups.emplace(std::pair{d.x(), d.y()}, groups.size());
+                if (added && groups.size() > kGroups) return;
+                e.group = it->second;
+                at_[t * 4 + static_cast<std::size_t>(slot)] = static_cast<int>(edge_list_.size());
+                edge_list_.push_back(std::move(e));
+            }
+        }
+        // Each group in the order of its torques: for one force D, det(w_a, w_b, (-D.y, D.x, 0))
+        // = (tau_a - tau_b) |D|^2.
+        order_.resize(edge_list_.size());
+        std::iota(order_.begin(), order_.end(), 0);
+        std::vector<ExactVector> across(groups.size());
+        for (const auto& [d, g] : groups) across[g] = ExactVector::input(Vec3(-d.second, d.first, 0.0));
+        std::sort(order_.begin(), order_.end(), [&](int a, int b) {
+            const Edge &x = edge_list_[static_cast<std::size_t>(a)], &y = edge_list_[static_cast<std::size_t>(b)];
+            if (x.group != y.group) return x.group < y.group;
+            return det_sign(x.vector, y.vector, across[x.group]) == Sign::Negative;
+        });
+        for (std::size_t r = 0; r < order_.size(); ++r) edge_list_[static_cast<std::size_t>(order_[r])].rank = static_cast<int>(r);
+        alive_.assign(groups.size(), {});
+        closed_.assign(cell.closed.begin(), cell.closed.end());
+        letters_.assign(cell.letters.begin(), cell.letters.end());
+        for (std::size_t t = 0; t < letters_.size(); ++t) set_alive(t, letters_[t], true);
+        active_ = true;
+    }
+
+    // Adds (or removes) the generators that position t has with `letter`.
+    void set_alive(std::size_t t, char letter, bool alive) {
+        const auto mark = [&](int slot) {
+            const Edge& e = edge_list_[static_cast<std::size_t>(at_[t * 4 + static_cast<std::size_t>(slot)])];
+            std::set<int>& set = alive_[e.group];
+            if (alive) {
+                set.insert(e.rank);
+            } else {
+                set.erase(e.rank);
+            }
+        };
+        const auto contact = static_cast<std::size_t>(closed_[t]);
+        switch (letter) {
+            case 'f': mark(0), mark(1); break;
+            case 'r': mark(edges_.sliding_slot(contact, 'r')); break;
+            case 'l': mark(edges_.sliding_slot(contact, 'l')); break;
+            default: break;
+        }
+    }
+
+    void add_reduced(int index) {
+        const Edge& e = edge_list_[static_cast<std::size_t>(index)];
+        reduced_.push_back({&e.vector, e.rounded, false, e.contact, e.slot, nullptr});
+    }
+
+    const FrictionEdges& edges_;
+    std::size_t face_ = static_cast<std::size_t>(-1);
+    bool active_ = false;
+    std::vector<Edge> edge_list_;
+    std::vector<int> at_;     // position t's edge in slot s: edge_list_[at_[4 t + s]] (-1: none)
+    std::vector<int> order_;  // the edges by group, then by torque
+    std::vector<std::set<int>> alive_;  // per group, the ranks of the cell's edges
+    std::vector<int> closed_;            // the face's closed contacts
+    std::vector<char> letters_;          // the letters of the face's previous cell
+    std::vector<Generator> reduced_;
+};
+
 // Decides, cell after cell of the walk (mode_walk.hpp), whether e lies in the cell's
 // E = M cl(cell) + (-T), with certificates kept from the cells before:
 //  - the current plane h (h . e < 0) that held every generator of the previous cell's E: along
@@ -226,12 +375,14 @@ public:
     [[nodiscard]] std::size_t tested() const { return tested_; }
     [[nodiscard]] std::size_t mended() const { return mended_; }
     [[nodiscard]] std::size_t scanned() const { return scanned_; }
-    [[nodiscard]] std::size_t widened() const { return widened_; }
+    [[nodiscard]] std::size_t grouped() const { return grouped_; }
 
     // `filters` holds this cell's twists rounded (shared by the deciders of a batch).
-    bool member(const detail::WalkCell& cell, TwistFilters& filters) {
+    // `groups`, when given, follows the walk (its reduced generators are this cell's).
+    bool member(const detail::WalkCell& cell, TwistFilters& filters, const GroupedEdges* groups = nullptr) {
         cell_ = &cell;
         filters_ = &filters;
+        groups_ = groups ? groups->generators() : nullptr;
         const bool answer = decide();
         last_face_ = cell.face;
         last_member_ = answer;
@@ -305,6 +456,14 @@ private:
         return true;
     }
 
+    // holds_all, by the reduced generators on a grouped face (the same cone).
+    bool holds_cell(const Plane& p) const {
+        if (!groups_) return holds_all(p);
+        return holds_images(p) && std::all_of(groups_->begin(), groups_->end(), [&](const Generator& g) {
+                   return side(p, *g.vector, g.rounded) != Sign::Negative;
+               });
+    }
+
     char letter_of_contact(int j) const {
         const auto it = std::lower_bound(cell_->closed.begin(), cell_->closed.end(), j);
         if (it == cell_->closed.end() || *it != j) return 's';
@@ -344,13 +503,13 @@ private:
             if (holds && current_valid_ && !cell_->first && cell_->face == last_face_) {
                 for (int t : cell_->changed) holds = holds && holds_position(*current_, static_cast<std::size_t>(t));
             } else if (holds) {
-                holds = holds_all(*current_);
+                holds = holds_cell(*current_);
             }
             current_valid_ = holds;
             if (holds) return false;
         }
-        if (cell_->closed.size() <= kSmallFace) {
-            const auto found = std::find_if(planes_.begin(), planes_.end(), [&](const Plane& p) { return holds_all(p); });
+        if (cell_->closed.size() <= kSmallFace || groups_) {  // (a grouped face: a few generators)
+            const auto found = std::find_if(planes_.begin(), planes_.end(), [&](const Plane& p) { return holds_cell(p); });
             if (found != planes_.end()) {
                 current_ = *found;
                 current_valid_ = true;
@@ -358,8 +517,13 @@ private:
                 return false;
             }
         }
-        collect_generators();
-        if (cell_->closed.size() >= kMendFace) {
+        if (groups_) {  // a few generators in place of the face's: no mend needed
+            collect_images();
+            for (const Generator& g : *groups_) generators_.push_back(g);
+        } else {
+            collect_generators();
+        }
+        if (!groups_ && cell_->closed.size() >= kMendFace) {
             scanned_ += generators_.size();
             if (const std::optional<bool> answer = mend()) {
                 ++mended_;
@@ -367,7 +531,6 @@ private:
             }
         }
         if (std::optional<Plane> plane = wide_plane()) {
-            ++widened_;
             keep_plane(std::move(*plane));
             return false;
         }
@@ -382,28 +545,11 @@ private:
         return std::nullopt;
     }
 
-    // A generator of the cell's E: -edge for a contact's edge (negate), M r for a twist r; its
-    // vector's approximation kept for the scans below.
-    struct Generator {
-        const ExactVector* vector;
-        ExactVector::Approximation rounded;
-        bool negate;
-        int contact, slot;    // its name: contact j's edge in `slot`,
-        const Exact3* twist;  // or (contact < 0) the twist r
-        [[nodiscard]] Piece piece() const { return contact < 0 ? Piece{-1, 0, *twist} : Piece{contact, slot, {}}; }
-    };
     // The cell's generators: the twists' images, then each closed contact's edges (position t's
     // from first_[t]).
     void collect_generators() {
-        images_.clear();
-        generators_.clear();
+        collect_images();
         first_.clear();
-        if (m_) {
-            for (const Exact3& r : *cell_->closure) images_.push_back(ExactVector::from_exact(r).transformed(*m_));
-            for (std::size_t i = 0; i < images_.size(); ++i) {
-                generators_.push_back({&images_[i], images_[i].approximation(), false, -1, 0, &(*cell_->closure)[i]});
-            }
-        }
         for (std::size_t t = 0; t < cell_->closed.size(); ++t) {
             first_.push_back(generators_.size());
             const int j = cell_->closed[t];
@@ -413,6 +559,16 @@ private:
             });
         }
         first_.push_back(generators_.size());
+    }
+    // The twists' images, the first generators of the cell.
+    void collect_images() {
+        images_.clear();
+        generators_.clear();
+        if (!m_) return;
+        for (const Exact3& r : *cell_->closure) images_.push_back(ExactVector::from_exact(r).transformed(*m_));
+        for (std::size_t i = 0; i < images_.size(); ++i) {
+            generators_.push_back({&images_[i], images_[i].approximation(), false, -1, 0, &(*cell_->closure)[i]});
+        }
     }
     // det(a, b, c) for a, b given with their approximations and c a generator.
     static Sign det_of(const ExactVector& a, const ExactVector::Approximation& pa, const ExactVector& b,
@@ -616,6 +772,7 @@ private:
     // e against E (its extreme rays from its generators); a new certificate either way.
     bool build() {
         ++built_;
+        if (groups_) ++grouped_;
         // The cell's generators as collect_generators lists them (each named there, for a
         // triangle that needs it).
         std::vector<ExactVector> generators;
@@ -669,8 +826,16 @@ private:
         }
         if (!(x.squaredNorm() > 1e-20)) return std::nullopt;
         Plane plane = plane_of(ExactVector::input(x));
-        if (dot_sign(plane.h, wrench_) != Sign::Negative || !holds_all(plane)) return std::nullopt;
+        if (dot_sign(plane.h, wrench_) != Sign::Negative || !holds_generators(plane)) return std::nullopt;
         return plane;
+    }
+
+    // h . g >= 0 for every generator g of generators_ (all of E's, or a grouped face's reduced).
+    bool holds_generators(const Plane& p) const {
+        return std::all_of(generators_.begin(), generators_.end(), [&](const Generator& g) {
+            const Sign s = side(p, *g.vector, g.rounded);
+            return s != (g.negate ? Sign::Positive : Sign::Negative);
+        });
     }
 
     // p as the current plane, and first in the cache.
@@ -702,6 +867,7 @@ private:
     ExactVector wrench_;
     const detail::WalkCell* cell_ = nullptr;
     TwistFilters* filters_ = nullptr;
+    const std::vector<Generator>* groups_ = nullptr;  // the cell's -T reduced, when its face is grouped
     std::optional<Plane> current_;
     bool current_valid_ = false;  // the current plane held every generator of the previous cell
     bool last_member_ = false;    // the previous cell's answer
@@ -717,7 +883,7 @@ private:
     std::size_t tested_ = 0;  // generators of the E's tested
     std::size_t mended_ = 0;   // cells decided by a mended certificate
     std::size_t scanned_ = 0;  // generators of the cells whose certificate a mend tried
-    std::size_t widened_ = 0;  // cells decided by a wide plane
+    std::size_t grouped_ = 0;  // cells decided with a grouped face's generators
 };
 
 // The all-f mode's E once its closure (the twists of the cells merged into it) is known: the
@@ -814,11 +980,11 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
     };
     struct Member {
         std::size_t face, index;           // index within the face (0: the all-f mode)
-        std::shared_ptr<const Kept> mode;  // null for the all-f mode
+        std::shared_ptr<Kept> mode;  // null for the all-f mode
     };
     struct Part {
         std::vector<std::vector<Member>> members;  // per wrench
-        std::vector<std::size_t> built, tested, mended, scanned;  // per wrench
+        std::vector<std::size_t> built, tested, mended, scanned, grouped;  // per wrench
         std::vector<Exact3> fixed_closure;
         std::size_t closed_letters = 0;
     };
@@ -873,27 +1039,29 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
         for (const Vec3& e : wrenches) deciders.emplace_back(walk.feasible_twists(), m, s.edges, e);
         part.members.resize(q);
         TwistFilters filters;
+        GroupedEdges groups(s.edges);
         const std::size_t begin = walk.faces() * (task - 1) / parts.size(), end = walk.faces() * task / parts.size();
         // Progress from the calling thread only (the callback need not be thread-safe), by parts
         // when there are several, else face by face.
         const bool reports = s.progress && std::this_thread::get_id() == caller;
         walk.run_faces(begin, end, reports && parts.size() == 1 ? s.progress : Progress(), counts, [&](const detail::WalkCell& cell) {
+            groups.next_cell(cell);
             if (cell.index == 0) {  // (its letters are counted once, as the all-f mode's)
                 if (!closure_known) part.fixed_closure.insert(part.fixed_closure.end(), cell.closure->begin(), cell.closure->end());
                 return;
             }
             part.closed_letters += cell.closed.size();
             filters.next_cell();
-            std::shared_ptr<const Kept> kept;  // made for the first wrench the mode holds
+            std::shared_ptr<Kept> kept;  // made for the first wrench the mode holds
             for (std::size_t k = 0; k < q; ++k) {
-                if (!deciders[k].member(cell, filters)) continue;
+                if (!deciders[k].member(cell, filters, &groups)) continue;
                 if (!kept && cell.closed.size() * (sizeof(int) + 1) >= n) {  // (a face that closes most contacts)
-                    kept = std::make_shared<const Kept>(Kept{true, {}, cell.all_letters(n), *cell.closure});
+                    kept = std::make_shared<Kept>(Kept{true, {}, cell.all_letters(n), *cell.closure});
                 } else if (!kept) {
-                    kept = std::make_shared<const Kept>(Kept{false,
-                                                             {cell.closed.begin(), cell.closed.end()},
-                                                             {cell.letters.begin(), cell.letters.end()},
-                                                             cell.closed.empty() ? std::vector<Exact3>() : *cell.closure});
+                    kept = std::make_shared<Kept>(Kept{false,
+                                                       {cell.closed.begin(), cell.closed.end()},
+                                                       {cell.letters.begin(), cell.letters.end()},
+                                                       cell.closed.empty() ? std::vector<Exact3>() : *cell.closure});
                 }
                 part.members[k].push_back({cell.face, cell.index, kept});
             }
@@ -903,6 +1071,7 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
             part.tested.push_back(decider.tested());
             part.mended.push_back(decider.mended());
             part.scanned.push_back(decider.scanned());
+            part.grouped.push_back(decider.grouped());
         }
         faces_done += end - begin;
         if (reports && parts.size() > 1) s.progress("faces of the cone of motions", faces_done, walk.faces());
@@ -976,9 +1145,12 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
             part.members[k] = {};
         }
         std::sort(members.begin(), members.end(), [](const Member& a, const Member& b) { return a.index < b.index; });
-        for (const Member& member : members) {
+        for (Member& member : members) {
+            // (a mode's letters moved out of it by the last answer that holds it: this one when no
+            // other answer's list still shares it)
+            const bool last = member.mode && member.mode.use_count() == 1;
             std::string letters = !member.mode        ? std::string(n, letter(ContactMode::Fixed))
-                                  : member.mode->whole ? member.mode->letters
+                                  : member.mode->whole ? (last ? std::move(member.mode->letters) : member.mode->letters)
                                                        : detail::all_letters(member.mode->closed, member.mode->letters, n);
             out.result.modes.push_back(member.index);
             out.modes.push_back(Mode{std::move(letters), twists_of(member.index, member.mode ? member.mode->closure : *s.fixed_closure)});
@@ -996,6 +1168,7 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
             out.tested_generators += part.tested[k];
             out.mended += part.mended[k];
             out.scanned_generators += part.scanned[k];
+            out.grouped += part.grouped[k];
             out.closed_letters += part.closed_letters;
         }
         out.result.verdict = verdict_of(out.result.modes.size());

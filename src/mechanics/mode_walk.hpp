@@ -17,6 +17,7 @@ namespace momentlab::detail {
 /// A mode's letters for all n contacts from its closed contacts (increasing) and their letters:
 /// 's' for every other contact.
 [[nodiscard]] inline std::string all_letters(std::span<const int> closed, std::span<const char> letters, std::size_t n) {
+    if (closed.size() == n) return {letters.begin(), letters.end()};  // (every contact closed, in order)
     std::string s(n, letter(ContactMode::Separating));
     for (std::size_t t = 0; t < closed.size(); ++t) s[static_cast<std::size_t>(closed[t])] = letters[t];
     return s;

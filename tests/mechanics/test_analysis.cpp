@@ -634,7 +634,8 @@ TEST(Analysis, MendedCertificatesOnLongFacesAgreeWithExactLp) {
         Scene scene;
         scene.body = Body{1.0, Vec2(0.0, 0.0), 0.5, {}};
         for (int j = 0; j < n; ++j) {
-            const auto [mu, mk] = s == 0 || s == 3 ? std::pair{0.3, 0.3} : testing::random_mu(rnd);
+            // (mu of its own for each contact: edges of as many forces, so that no face is grouped)
+            const auto [mu, mk] = s == 0 || s == 3 ? std::pair{0.3 + 0.01 * j, 0.3 + 0.01 * j} : testing::random_mu(rnd);
             const double x = s == 1 ? static_cast<double>(j - n / 2) : -1.998 + 0.004 * j * 37;  // (decimal steps)
             scene.contacts.push_back(Contact::make(Vec2(x, 0.0), Vec2(j % 2 == 0 ? 1.0 : -1.0, 0.0), mu, mk));
         }
@@ -715,6 +716,55 @@ TEST(Analysis, WidePlanesOnRingsAgreeWithExactLp) {
     EXPECT_EQ(wrenches, 24);
     EXPECT_GE(members, 24);
     EXPECT_LT(built * 20, modes_seen);
+}
+
+// Contacts on a line with normals along it and few distinct forces among their edges (one mu;
+// two; mu_k != mu), at decimal and integer abscissae, dynamic and quasi-static: the face's edges
+// fall into at most eight groups of one force, each given by its edges of least and greatest
+// torque. Every answer against the exact LP, mode by mode, and most built E grouped.
+TEST(Analysis, GroupedFacesAgreeWithExactLp) {
+    testing::Random rnd(2718);
+    std::size_t built = 0, grouped = 0, scanned = 0;
+    int wrenches = 0, members = 0;
+    for (int s = 0; s < 4; ++s) {
+        const bool quasi_static = s == 3;
+        const int n = 20;
+        Scene scene;
+        scene.body = Body{1.0, Vec2(0.25, 0.5), 0.5, {}};
+        for (int j = 0; j < n; ++j) {
+            const auto [mu, mk] = s == 1 ? std::pair{j % 3 == 0 ? 0.5 : 0.3, j % 3 == 0 ? 0.5 : 0.3}
+                                  : s == 2 ? std::pair{0.5, 0.25}
+                                           : std::pair{0.3, 0.3};
+            const double x = s == 1 ? static_cast<double>(j - n / 2) : -1.998 + 0.004 * j * 37;  // (decimal steps)
+            scene.contacts.push_back(Contact::make(Vec2(x, 0.0), Vec2(j % 2 == 0 ? 1.0 : -1.0, 0.0), mu, mk));
+        }
+        const ModeSet modes = enumerate_modes(scene.contacts);
+        const testing::ExactContacts c(scene.contacts);
+        std::vector<Vec3> asked;
+        for (int w = 0; w < 6; ++w) {
+            const reference::QVec e = w % 2 == 1 ? reference::q(Vec3(rnd.integer(-3, 3), rnd.integer(-3, 3), rnd.integer(-3, 3)))
+                                                 : minus_contact_generators({0, 0, 0}, c, n, rnd, 3);
+            const Vec3 ed = reference::to_vec3(e);
+            if (reference::q(ed) == e) asked.push_back(ed);  // (exact doubles only: on the boundaries)
+        }
+        SceneQuestions questions(scene, AnalysisOptions{quasi_static});
+        const std::vector<SceneAnswer> answers = questions.answer(std::span<const Vec3>(asked));
+        for (std::size_t w = 0; w < asked.size(); ++w) {
+            const std::vector<std::size_t> expected = exact_lp_modes(scene, modes, reference::q(asked[w]), quasi_static);
+            EXPECT_EQ(answers[w].result.modes, expected) << "scene " << s << ", wrench " << asked[w].transpose();
+            EXPECT_EQ(query_scene(scene, asked[w], AnalysisOptions{quasi_static}).result.modes, expected) << "scene " << s;
+            built += answers[w].built;
+            grouped += answers[w].grouped;
+            scanned += answers[w].scanned_generators;
+            ++wrenches;
+            members += static_cast<int>(expected.size());
+        }
+    }
+    std::cout << "[Analysis] grouped faces: " << wrenches << " wrenches, " << members << " mode answers 'yes'; E built for "
+              << built << " cells, " << grouped << " of them grouped; " << scanned << " generators scanned by mends\n";
+    EXPECT_GE(wrenches, 16);
+    EXPECT_GE(members, 200);
+    EXPECT_GT(grouped * 2, built);
 }
 
 // One SceneQuestions asked many wrenches in a row (the first answer walks with no all-f cone, the
