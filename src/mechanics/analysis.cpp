@@ -797,11 +797,13 @@ private:
     // generators on it, which the generators of the next cell, turned a little, may cross; on
     // the cradle of 10^5 contacts such planes made one walk build E 8 times as often.
     std::optional<Plane> wide_plane() const {
-        const double e_norm = e_.norm();
-        if (!(e_norm > 0) || !std::isfinite(e_norm)) return std::nullopt;
+        // (e scaled by a power of two first, so that |e|^2 neither underflows nor overflows)
+        const double largest = e_.cwiseAbs().maxCoeff();
+        if (!(largest > 0) || !std::isfinite(largest)) return std::nullopt;
+        const Vec3 e = e_ * std::ldexp(1.0, -std::ilogb(largest));
         std::vector<Vec3>& points = points_;
         points.clear();
-        points.push_back(-e_ / e_norm);
+        points.push_back(-e / e.norm());
         for (const Generator& g : generators_) {
             const Vec3& a = g.rounded.approx;
             const double norm = a.norm();

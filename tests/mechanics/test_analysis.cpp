@@ -668,8 +668,8 @@ TEST(Analysis, MendedCertificatesOnLongFacesAgreeWithExactLp) {
 // to the next. A facet of E as the certificate has generators on it, which the next cell's turned
 // generators cross; a wide plane (room on both sides, exactly checked) lasts. Every answer of a
 // batch against the exact LP, mode by mode; the batch's answers and counts the same when asked
-// again (the walk's parts have certificates of their own, whichever thread takes them) and as
-// single questions; E built for few cells.
+// again (the walk's parts have certificates of their own, whichever thread takes them), as
+// single questions and for e times 2^600 and 2^-600 (the same work); E built for few cells.
 TEST(Analysis, WidePlanesOnRingsAgreeWithExactLp) {
     testing::Random rnd(4409);
     std::size_t built = 0, modes_seen = 0;
@@ -701,7 +701,14 @@ TEST(Analysis, WidePlanesOnRingsAgreeWithExactLp) {
         for (std::size_t w = 0; w < asked.size(); ++w) {
             const std::vector<std::size_t> expected = exact_lp_modes(scene, modes, reference::q(asked[w]), quasi_static);
             EXPECT_EQ(batch[w].result.modes, expected) << "scene " << s << ", wrench " << asked[w].transpose();
-            EXPECT_EQ(query_scene(scene, asked[w], AnalysisOptions{quasi_static}).result.modes, expected) << "scene " << s;
+            const SceneAnswer single = query_scene(scene, asked[w], AnalysisOptions{quasi_static});
+            EXPECT_EQ(single.result.modes, expected) << "scene " << s;
+            // The same work for e times 2^600 and 2^-600 (|e|^2 out of range: wide planes all the same).
+            for (const int p : {600, -600}) {
+                const SceneAnswer scaled = query_scene(scene, asked[w] * std::ldexp(1.0, p), AnalysisOptions{quasi_static});
+                EXPECT_EQ(scaled.result.modes, expected) << "scene " << s << ", 2^" << p;
+                EXPECT_EQ(scaled.built, single.built) << "scene " << s << ", 2^" << p;
+            }
             EXPECT_EQ(repeated[w].result.modes, expected) << "scene " << s;
             EXPECT_EQ(repeated[w].built, batch[w].built) << "scene " << s;
             EXPECT_EQ(repeated[w].tested_generators, batch[w].tested_generators) << "scene " << s;
