@@ -619,8 +619,9 @@ TEST(Analysis, LargeScenesOnTwoThreadsAgreeWithExactLp) {
 }
 
 // Faces whose every step changes an extreme generator of E: contacts on a line with normals
-// along it (at decimal abscissae, whose differences are not doubles, and at integers), mu 0.3
-// and random mu, mu_k; dynamic and quasi-static. Along such a face the certificate of one cell
+// along it (at decimal abscissae, whose differences are not doubles, and at integers), a mu of
+// its own for each contact and random mu, mu_k (so that no face is grouped: see
+// GroupedFacesAgreeWithExactLp); dynamic and quasi-static. Along such a face the certificate of one cell
 // breaks at the next, and is mended (a triangle's lost corner replaced or bridged, a plane
 // turned about the generator that broke it) instead of testing e against E. Every answer
 // against the exact LP, mode by mode; the mends must decide most cells.
