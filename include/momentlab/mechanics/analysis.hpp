@@ -100,12 +100,14 @@ struct SceneAnswer {
 /// latest plane), and three generators of an earlier E whose cone holds e, when this cell has all
 /// three, prove e is in it. Only a cell that no certificate decides has e tested against its E
 /// (cone_holds: E's extreme rays, with no facet built but the separating one; this gives a new
-/// certificate). Every sign is exact. O(n log n + M + C + B k log k) for n contacts, M modes,
-/// C letter changes along the walks (at most the number of closed contacts per face times its
-/// cells), B modes tested so and k closed contacts per face; memory O(n + the answer's letters)
-/// (docs/benchmarks.md, "Nearly degenerate scenes"). From 20 contacts on two threads: the walk's
-/// set-up beside the friction edges, then the all-f mode and the two halves of the faces; the
-/// result is the same.
+/// certificate; before it, a plane found in doubles with room on both sides is tried, and kept
+/// when exact signs confirm it). On a face of many closed contacts whose edges have few distinct
+/// forces, each group of one force counts by its edges of least and greatest torque. Every sign
+/// is exact. O(n log n + M + C log n + (B log k + R) k + L) for n contacts, M modes, C letter
+/// changes along the walks, B modes tested so and R certificates mended on faces not grouped, k
+/// closed contacts per face and L letters in the answer; memory O(n + L) (docs/benchmarks.md,
+/// "Nearly degenerate scenes"). From 20 contacts on two threads: the walk's set-up beside the
+/// friction edges, then the all-f mode and up to 32 parts of the faces; the result is the same.
 /// Throws as analyze does, and std::invalid_argument for a non-finite wrench.
 [[nodiscard]] SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions& options = {});
 
