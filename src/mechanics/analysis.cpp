@@ -320,13 +320,10 @@ private:
                 set.erase(e.rank);
             }
         };
-        const auto contact = static_cast<std::size_t>(closed_[t]);
-        switch (letter) {
-            case 'f': mark(0), mark(1); break;
-            case 'r': mark(edges_.sliding_slot(contact, 'r')); break;
-            case 'l': mark(edges_.sliding_slot(contact, 'l')); break;
-            default: break;
-        }
+        edges_.for_contact(static_cast<std::size_t>(closed_[t]), letter, [&](const ExactVector&, int slot) {
+            mark(slot);
+            return true;
+        });
     }
 
     void add_reduced(int index) {
@@ -790,7 +787,7 @@ private:
         return false;
     }
 
-    // A plane h in doubles with h . e < 0 and h . g > 0 for every generator g of the cell, kept
+    // A plane h in doubles with h . e < 0 and h . g >= 0 for every generator g of the cell, kept
     // only when exactly checked: near the widest such plane, found in doubles as the point x of
     // the hull of -e/|e| and the g/|g| nearest the origin (max over |h| = 1 of the least
     // h . p is |x|, at h = x/|x|), by a few steps of Gilbert's algorithm. A facet of E has
@@ -828,16 +825,8 @@ private:
         }
         if (!(x.squaredNorm() > 1e-20)) return std::nullopt;
         Plane plane = plane_of(ExactVector::input(x));
-        if (dot_sign(plane.h, wrench_) != Sign::Negative || !holds_generators(plane)) return std::nullopt;
+        if (dot_sign(plane.h, wrench_) != Sign::Negative || !holds_cell(plane)) return std::nullopt;
         return plane;
-    }
-
-    // h . g >= 0 for every generator g of generators_ (all of E's, or a grouped face's reduced).
-    bool holds_generators(const Plane& p) const {
-        return std::all_of(generators_.begin(), generators_.end(), [&](const Generator& g) {
-            const Sign s = side(p, *g.vector, g.rounded);
-            return s != (g.negate ? Sign::Positive : Sign::Negative);
-        });
     }
 
     // p as the current plane, and first in the cache.
