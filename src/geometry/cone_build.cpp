@@ -381,7 +381,8 @@ Parts build_planar(std::span<const G> g, const G& a, const G& b) {
 // ---------------------------------------------------------------------------------------------
 // Rank 3, pointed, with a known extreme ray p: Graham's scan around p.
 template <class G>
-Parts pointed_from_cycle(std::span<const G> g, std::span<const int> cycle, bool facets);
+void pointed_from_cycle(std::span<const G> g, std::span<const int> cycle, bool facets, Parts& parts,
+                        std::size_t first = 0);
 
 // What the angular order around a pivot p tells:
 //  * a gap wider than pi: p is on an edge of the cone. Without -p among the generators p is an
@@ -551,28 +552,35 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     for (std::int64_t k : stack) hull.push_back(k < 0 ? static_cast<int>(pivot) : items[static_cast<std::size_t>(k)].index);
     // The cycle starts at the extreme generator given first, whichever pivot found it.
     std::rotate(hull.begin(), std::min_element(hull.begin(), hull.end()), hull.end());
-    out.parts = pointed_from_cycle(g, hull, facets);
+    pointed_from_cycle(g, hull, facets, out.parts.emplace());
     return out;
 }
 
+// Fills `parts` (empty) in place: a small cone's cost is mostly its own representation, and
+// moving four vectors and an incidence from one Parts to another was a tenth of it. The cycle
+// is read from cycle[first] on (and round), so that a caller need not rotate it.
 template <class G>
-Parts pointed_from_cycle(std::span<const G> g, std::span<const int> cycle, bool facets) {
-    Parts parts;
-    if (!facets) {  // the cycle is all cone_holds needs
-        parts.cycle.assign(cycle.begin(), cycle.end());
-        return parts;
-    }
+void pointed_from_cycle(std::span<const G> g, std::span<const int> cycle, bool facets, Parts& parts,
+                        std::size_t first) {
     const std::size_t k = cycle.size();
+    const auto at = [&](std::size_t i) -> const G& {
+        const std::size_t j = first + i;
+        return g[static_cast<std::size_t>(cycle[j < k ? j : j - k])];
+    };
+    if (!facets) {  // the cycle is all cone_holds needs
+        parts.cycle.reserve(k);
+        for (std::size_t i = 0; i < k; ++i) parts.cycle.push_back(cycle[first + i < k ? first + i : first + i - k]);
+        return;
+    }
     parts.rays.reserve(k);
     parts.facets.reserve(k);
     for (std::size_t i = 0; i < k; ++i) {
-        const G& a = g[static_cast<std::size_t>(cycle[i])];
-        const G& b = g[static_cast<std::size_t>(cycle[i + 1 < k ? i + 1 : 0])];
+        const G& a = at(i);
+        const G& b = at(i + 1 < k ? i + 1 : 0);
         parts.rays.push_back(in(a));
         parts.facets.push_back(ExactVector::cross(a, b, 1));
     }
     parts.facet_rays = Incidence::cyclic(k);
-    return parts;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -735,10 +743,10 @@ bool pointed_by_chart(std::span<const G> g, bool facets, Parts& out) {
     }
     --h;  // the first point again
     if (h < 3) return false;
-    hull.resize(h);
-    std::rotate(hull.begin(), std::min_element(hull.begin(), hull.end()), hull.end());
     ++ConeBuilder::stats().by_chart;
-    out = pointed_from_cycle(g, hull, facets);
+    // From the generator given first, as the pivot path's cycle starts.
+    const auto first = static_cast<std::size_t>(std::min_element(hull.begin(), hull.begin() + static_cast<std::ptrdiff_t>(h)) - hull.begin());
+    pointed_from_cycle(g, std::span<const int>(hull.data(), h), facets, out, first);
     return true;
 }
 
@@ -840,7 +848,8 @@ Parts build_by_dual_clip(std::span<const G> g, std::size_t i0, std::size_t i1, s
     for (std::size_t t : edges) cycle.push_back(poly[t]);
     // The cycle starts at the extreme generator given first, as from a pivot or the chart.
     std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end()), cycle.end());
-    return pointed_from_cycle(g, cycle, facets);
+    pointed_from_cycle(g, cycle, facets, parts);  // parts is still empty here
+    return parts;
 }
 
 // Floating-point guesses of an extreme ray; only the running time depends on them, every
@@ -921,10 +930,10 @@ Parts build_spatial(std::span<const G> g, std::size_t ia, std::size_t ib, std::s
 
 // The parts of cone(g) for nonzero generators g (at least one); without a pointed
 // full-dimensional cone's facets (and rays) when `facets` is false: its cycle only.
+// (Filled in place, as pointed_from_cycle fills it.)
 template <class G>
-Parts parts_of(std::span<const G> g, bool facets) {
-    Parts parts;
-    if (pointed_by_chart(g, facets, parts)) return parts;
+void parts_of(std::span<const G> g, bool facets, Parts& parts) {
+    if (pointed_by_chart(g, facets, parts)) return;
     const G& a = g[0];
     std::size_t ib = g.size();
     for (std::size_t i = 1; i < g.size(); ++i) {
@@ -945,7 +954,7 @@ Parts parts_of(std::span<const G> g, bool facets) {
             parts.facets = {in(a)};
             parts.facet_rays.add_row({});
         }
-        return parts;
+        return;
     }
     std::size_t ic = g.size();
     for (std::size_t i = ib + 1; i < g.size(); ++i) {
@@ -954,7 +963,7 @@ Parts parts_of(std::span<const G> g, bool facets) {
             break;
         }
     }
-    return ic == g.size() ? build_planar(g, a, g[ib]) : build_spatial(g, 0, ib, ic, facets);
+    parts = ic == g.size() ? build_planar(g, a, g[ib]) : build_spatial(g, 0, ib, ic, facets);
 }
 
 template <class G>
@@ -969,7 +978,8 @@ Cone build_cone(std::span<const G> generators) {
         g = nonzero;
     }
     if (g.empty()) return Cone();  // {0}
-    Parts parts = parts_of(g, true);
+    Parts parts;
+    parts_of(g, true, parts);
     return ConeBuilder::assemble(std::move(parts.rays), std::move(parts.lineality), std::move(parts.facets),
                                  std::move(parts.equations), std::move(parts.facet_rays));
 }
@@ -986,17 +996,11 @@ ConePathStats& ConeBuilder::stats() {
     return stats;
 }
 
-Cone ConeBuilder::assemble(std::vector<ExactVector> rays, std::vector<ExactVector> lineality,
-                           std::vector<ExactVector> facets, std::vector<ExactVector> equations, Incidence facet_rays,
-                           Representation exact) {
-    Cone cone{Cone::Unset{}};
-    cone.rays_ = std::move(rays);
-    cone.lineality_ = std::move(lineality);
-    cone.facets_ = std::move(facets);
-    cone.equations_ = std::move(equations);
-    cone.facet_rays_ = std::move(facet_rays);
-    cone.exact_ = exact;
-    return cone;
+Cone ConeBuilder::assemble(std::vector<ExactVector>&& rays, std::vector<ExactVector>&& lineality,
+                           std::vector<ExactVector>&& facets, std::vector<ExactVector>&& equations,
+                           Incidence&& facet_rays, Representation exact) {
+    return Cone(std::move(rays), std::move(lineality), std::move(facets), std::move(equations), std::move(facet_rays),
+                exact);
 }
 
 Cone ConeBuilder::build(std::span<const Vec3> generators) { return build_cone(generators); }
@@ -1061,7 +1065,8 @@ std::vector<std::size_t> drop_zeros(std::vector<ExactVector>& g) {
 // Cone itself. Nothing for no generators ({0}).
 void held_form(std::span<const ExactVector> g, std::vector<int>& cycle, std::optional<Cone>& cone) {
     if (g.empty()) return;
-    Parts parts = parts_of(g, false);
+    Parts parts;
+    parts_of(g, false, parts);
     if (parts.cycle.empty()) {
         cone = ConeBuilder::assemble(std::move(parts.rays), std::move(parts.lineality), std::move(parts.facets),
                                      std::move(parts.equations), std::move(parts.facet_rays));

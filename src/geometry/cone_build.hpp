@@ -21,9 +21,10 @@ struct ConePathStats {
 struct ConeBuilder {
     static Cone build(std::span<const Vec3> generators);
     static Cone build(std::span<const ExactVector> generators);
-    static Cone assemble(std::vector<ExactVector> rays, std::vector<ExactVector> lineality,
-                         std::vector<ExactVector> facets, std::vector<ExactVector> equations, Incidence facet_rays,
-                         Representation exact = Representation::Generators);
+    /// The cone of these lists, moved in (each must already be minimal).
+    static Cone assemble(std::vector<ExactVector>&& rays, std::vector<ExactVector>&& lineality,
+                         std::vector<ExactVector>&& facets, std::vector<ExactVector>&& equations,
+                         Incidence&& facet_rays, Representation exact = Representation::Generators);
     static ConePathStats& stats();
     /// Whether pointed cones of up to 128 generators may be found in a chart (per thread;
     /// true). Tests and benchmarks set it to false to compare with the pivot path.

@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "momentlab/core/exact.hpp"
@@ -179,8 +180,11 @@ public:
     [[nodiscard]] std::vector<Vec3> halfspace_values() const;
 
 private:
-    struct Unset {};
-    explicit Cone(Unset) {}  // no representation yet: for ConeBuilder, which fills every member
+    // Every member moved in, for ConeBuilder (which has made each list minimal).
+    Cone(std::vector<ExactVector>&& rays, std::vector<ExactVector>&& lineality, std::vector<ExactVector>&& facets,
+         std::vector<ExactVector>&& equations, Incidence&& facet_rays, Representation exact)
+        : rays_(std::move(rays)), lineality_(std::move(lineality)), facets_(std::move(facets)),
+          equations_(std::move(equations)), facet_rays_(std::move(facet_rays)), exact_(exact) {}
 
     std::vector<ExactVector> rays_;
     std::vector<ExactVector> lineality_;
