@@ -50,10 +50,12 @@ public:
     // The cells of the relatively open face spanned by `rays` and `lineality`.
     // `ray` is the face's ray as A stores it, for a 1-D face with a ray (its letters need no
     // new exact vector).
+    // `normal`, for a wedge, is A's facet on it.
     void run(int dimension, const std::vector<Q3>& rays, const std::vector<Q3>& lineality, const ExactVector* ray,
-             const ExactVector* start, const ExactVector* finish) {
+             const ExactVector* start, const ExactVector* finish, const ExactVector* normal = nullptr) {
         start_vector_ = start;
         finish_vector_ = finish;
+        normal_vector_ = normal;
         auto with_lines = [&](std::vector<Q3> gens) {
             for (const Q3& l : lineality) {
                 gens.push_back(l);
@@ -142,7 +144,17 @@ private:
             shape = Shape::Wedge;
             start = rays[0];
             finish = rays[1];
-            e = cross(start, finish);  // det(start, finish, e) = |e|^2 > 0: counter-clockwise about e
+            // A positive multiple of start x finish (det(start, finish, e) > 0: counter-clockwise
+            // about e): the facet of A on the wedge, signed, where A gives it. A's rays are
+            // products of its facets, so start x finish has twice their degree and the crossings
+            // u = e x T_j below twice theirs again; the facet keeps both small.
+            if (normal_vector_ != nullptr) {
+                const Sign turn = det_sign(*start_vector_, *finish_vector_, *normal_vector_);
+                assert(turn != Sign::Zero);
+                e = turn == Sign::Positive ? normal_vector_->exact() : -normal_vector_->exact();
+            } else {
+                e = cross(start, finish);
+            }
         } else if (lineality.size() == 1) {
             shape = Shape::HalfPlane;
             start = lineality[0];
@@ -288,6 +300,7 @@ private:
     std::size_t face_;
     const ExactVector* start_vector_ = nullptr;   // a 2-D face: its first ray, or its line
     const ExactVector* finish_vector_ = nullptr;  // a wedge: its second ray; a half-plane: its ray
+    const ExactVector* normal_vector_ = nullptr;  // a wedge: A's facet on it (or none)
     std::span<const int> closed_;
     const std::vector<ExactVector>& tangents_;
     std::size_t contacts_;
@@ -442,11 +455,16 @@ void ModeWalk::run_faces(std::size_t begin, std::size_t end, const Progress& pro
             const ExactVector* ray = face.dimension == 1 && face.rays.size() == 1 ? a_ray(0) : nullptr;
             const ExactVector* start = nullptr;
             const ExactVector* finish = nullptr;
+            const ExactVector* normal = nullptr;
             if (face.dimension == 2) {
                 start = a_.lineality().empty() ? a_ray(0) : &a_.lineality().front();
                 finish = a_.lineality().empty() ? a_ray(1) : (a_.lineality().size() == 1 ? a_ray(0) : nullptr);
+                if (a_.lineality().empty() && face.facets.size() == 1) {
+                    normal = &a_.facets()[static_cast<std::size_t>(face.facets.front())];
+                }
             }
-            FaceWalk(i, closed_[i], tangents_, normals_.size(), next, visit).run(face.dimension, rays, lineality_, ray, start, finish);
+            FaceWalk(i, closed_[i], tangents_, normals_.size(), next, visit)
+                .run(face.dimension, rays, lineality_, ray, start, finish, normal);
         }
         counts[i] = next - 1;
     }
