@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # The table of nearly degenerate and big scenes (docs/benchmarks.md, "Nearly degenerate
 # scenes"): each row through the real command with /usr/bin/time (wall time, peak memory), the
-# modes and letters of the output, and the bound docs/benchmarks.md states for it. A run that
-# takes longer than TIMEOUT seconds (default 60) is stopped and shown as "> TIMEOUT s".
-# Usage: tools/degenerate_table.sh [momentlab binary] [work directory]
+# modes and letters of the output, and the bound docs/benchmarks.md states for it. Each row is
+# run RUNS times (default 3) and shows the median time and the largest peak: on a shared machine
+# one run can take 1.5x another of the same command. A run that takes longer than TIMEOUT
+# seconds (default 60) is stopped and shown as "> TIMEOUT s" (and the row not run again).
+# Usage: [RUNS=n] [TIMEOUT=s] tools/degenerate_table.sh [momentlab binary] [work directory]
 set -uo pipefail
 bin=${1:-build/release/momentlab}
 dir=${2:-build/degenerate}
 timeout_s=${TIMEOUT:-60}
+runs=${RUNS:-3}
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$dir"
 need() {  # family size: writes the scene once
@@ -31,18 +34,25 @@ printf "%-44s %10s %12s %10s %14s\n" "input" "time (s)" "peak (MB)" "modes" "let
 row() {  # label, then the command; prints time, peak memory and the size of the output
     local label=$1; shift
     local out="$dir/out.txt" err="$dir/err.txt"
-    /usr/bin/time -f "%e %M" -o "$dir/time.txt" timeout "$timeout_s" "$@" > "$out" 2> "$err"
-    local rc=$?
-    local secs kb
-    read -r secs kb < <(tail -1 "$dir/time.txt")
-    if (( rc == 124 )); then
-        printf "%-44s %10s %12s %10s %14s\n" "$label" "> $timeout_s" "-" "-" "-"
-        return
-    fi
-    if (( rc != 0 )); then
-        echo "FAIL: $label exited with $rc: $(head -c 300 "$err")"
-        exit 1
-    fi
+    local times=() kb=0 run
+    for (( run = 0; run < runs; ++run )); do
+        /usr/bin/time -f "%e %M" -o "$dir/time.txt" timeout "$timeout_s" "$@" > "$out" 2> "$err"
+        local rc=$?
+        if (( rc == 124 )); then
+            printf "%-44s %10s %12s %10s %14s\n" "$label" "> $timeout_s" "-" "-" "-"
+            return
+        fi
+        if (( rc != 0 )); then
+            echo "FAIL: $label exited with $rc: $(head -c 300 "$err")"
+            exit 1
+        fi
+        local t k
+        read -r t k < <(tail -1 "$dir/time.txt")
+        times+=("$t")
+        (( k > kb )) && kb=$k
+    done
+    local secs
+    secs=$(printf '%s\n' "${times[@]}" | sort -g | sed -n "$(( (runs + 1) / 2 ))p")  # the median
     local modes letters
     case $count in
         analyze) modes=$(grep -c '"mode":' "$out") ;;

@@ -420,12 +420,21 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     PivotAnalysis out;
     const G& p = g[pivot];
     bool antiparallel = false;
+    // Of the generators along p, the one given first stands for them (as in the chart).
+    std::size_t p_first = pivot;
+    const auto along_p = [&](std::size_t i) {
+        if (dot_sign(p, g[i]) == Sign::Negative) {
+            antiparallel = true;
+        } else if (i < p_first) {
+            p_first = i;
+        }
+    };
     // The reference direction r: the first generator not parallel to p (the rank is 3).
     std::size_t reference = 0;
     for (;; ++reference) {
         if (reference == pivot) continue;  // p itself: parallel, and the test would take the exact path
         if (!parallel(p, g[reference])) break;
-        if (dot_sign(p, g[reference]) == Sign::Negative) antiparallel = true;
+        along_p(reference);
     }
     const G& r = g[reference];
     // A witness w with det(p, r, w) != 0 tells r from -r around p.
@@ -455,7 +464,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
             if (s != Sign::Zero) {
                 half = s == Sign::Positive ? 1 : 3;
             } else if (parallel(p, g[i])) {
-                if (dot_sign(p, g[i]) == Sign::Negative) antiparallel = true;
+                along_p(i);
                 continue;
             } else {
                 half = det_sign(p, g[i], *witness) == witness_side ? 0 : 2;
@@ -532,9 +541,19 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     // The stack holds positions in `items` (-1 for p), which the scan visits in order.
     ScratchVector<std::int64_t> stack({-1}, &scratch);
     auto at = [&](std::int64_t k) -> const G& { return k < 0 ? p : items[static_cast<std::size_t>(k)].v; };
+    // Generators along one ray are next to each other in the scan (one angle, and a tie in the
+    // group's order); the one given first stands for them.
     auto push = [&](std::size_t k) {
         const G& x = items[k].v;
-        while (stack.size() >= 2 && det_sign(at(stack[stack.size() - 2]), at(stack.back()), x) != Sign::Positive) {
+        while (stack.size() >= 2) {
+            const Sign turn = det_sign(at(stack[stack.size() - 2]), at(stack.back()), x);
+            if (turn == Sign::Positive) break;
+            const std::int64_t top = stack.back();
+            if (turn == Sign::Zero && top >= 0 && parallel(items[static_cast<std::size_t>(top)].v, x) &&
+                dot_sign(items[static_cast<std::size_t>(top)].v, x) == Sign::Positive) {
+                if (items[k].index < items[static_cast<std::size_t>(top)].index) stack.back() = static_cast<std::int64_t>(k);
+                return;
+            }
             stack.pop_back();
         }
         stack.push_back(static_cast<std::int64_t>(k));
@@ -549,7 +568,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     assert(stack.size() >= 3);
     ScratchVector<int> hull(&scratch);
     hull.reserve(stack.size());
-    for (std::int64_t k : stack) hull.push_back(k < 0 ? static_cast<int>(pivot) : items[static_cast<std::size_t>(k)].index);
+    for (std::int64_t k : stack) hull.push_back(k < 0 ? static_cast<int>(p_first) : items[static_cast<std::size_t>(k)].index);
     // The cycle starts at the extreme generator given first, whichever pivot found it.
     std::rotate(hull.begin(), std::min_element(hull.begin(), hull.end()), hull.end());
     pointed_from_cycle(g, hull, facets, out.parts.emplace());
@@ -782,7 +801,19 @@ Parts build_by_dual_clip(std::span<const G> g, std::size_t i0, std::size_t i1, s
             side[i] = det_sign(gen(poly[i]), gen(poly[(i + 1) % m]), h);
             if (side[i] == Sign::Negative) any_out = true; else any_in = true;
         }
-        if (!any_out) continue;
+        if (!any_out) {
+            // h along a constraint c_i of the polygon (a generator given again) is zero at both
+            // vertices of c_i; of such generators the one given first stands for them, as in
+            // the chart and around a pivot, whichever the shuffle met first.
+            for (std::size_t i = 0; i < m; ++i) {
+                if (side[i] == Sign::Zero && side[(i + m - 1) % m] == Sign::Zero && static_cast<int>(idx) < poly[i] &&
+                    parallel(gen(poly[i]), h) && dot_sign(gen(poly[i]), h) == Sign::Positive) {
+                    poly[i] = static_cast<int>(idx);
+                    break;
+                }
+            }
+            continue;
+        }
         if (!any_in) return Parts{{}, {in(Vec3::UnitX()), in(Vec3::UnitY()), in(Vec3::UnitZ())}, {}, {}, {}, {}};
         // The vertices strictly outside form one cyclic run j .. k.
         std::size_t j = 0;

@@ -222,8 +222,8 @@ TEST(ConeLaws, ManyGeneratorsAgreeWithExactOracle) {
 // Pointed cones of 3 .. 128 generators are found as a convex hull in a chart d . x = 1
 // (pointed_by_chart, src/geometry/cone_build.cpp). Against the pivot path (use_chart() false) and
 // the exact oracle (cddlib in GMP rationals, on the raw numbers): the same representation, ray
-// for ray and facet for facet, when no two generators are parallel; otherwise the same cone
-// with as many rays, the parallel generator given first standing for its direction. Families:
+// for ray and facet for facet, the generator given first standing for parallel ones: the rays
+// are exactly such generators, and the cycle starts at the first of them. Families:
 // doubles in a cone around a random axis, wide flat cones (where the pivot path often ends in the
 // dual clip, whose cycle now starts at the generator given first too), integer points on a
 // pyramid's faces (ties in the
@@ -306,12 +306,29 @@ TEST(ConeLaws, PointedConesFoundInAChartEqualThoseFromAPivot) {
         const std::string why = testing::compare_with_oracle(chart, o);
         ASSERT_TRUE(why.empty()) << why << " for case " << i << ": " << testing::describe(g);
         // (Rounded wrenches may be parallel where the exact ones are not: parallel_pair only
-        // selects which comparison is made; both are exact.)
-        if (parallel_pair(g)) {
-            ++with_parallel;
-            EXPECT_EQ(chart.rays().size(), pivot.rays().size()) << "case " << i;
-            EXPECT_EQ(chart.kind(), "pointed cone");
-            continue;
+        // counts the cases.)
+        with_parallel += parallel_pair(g);
+        ASSERT_EQ(chart.kind(), "pointed cone");
+        // Each ray is, exactly, the generator given first along its direction (raw numbers), and
+        // ray 0 the first of those: on both paths (the pivot's scan and its dual clip kept a later
+        // copy of a generator given twice, and started there; helper-13).
+        const std::vector<reference::QVec> raw = wrenches.empty() ? testing::exact_list(g) : exact_wrenches;
+        const auto along = [](const reference::QVec& a, const reference::QVec& b) {
+            return a[1] * b[2] == a[2] * b[1] && a[2] * b[0] == a[0] * b[2] && a[0] * b[1] == a[1] * b[0] &&
+                   a[0] * b[0] + a[1] * b[1] + a[2] * b[2] > 0;
+        };
+        for (const Cone* c : {&chart, &pivot}) {
+            std::size_t ray0_first = raw.size();
+            for (std::size_t r = 0; r < c->rays().size(); ++r) {
+                const reference::QVec ray = reference::to_q(c->rays()[r]);
+                std::size_t first = 0;
+                while (first < raw.size() && !along(raw[first], ray)) ++first;
+                ASSERT_LT(first, raw.size()) << "case " << i << ", ray " << r;
+                ASSERT_TRUE(raw[first] == ray) << "case " << i << ", ray " << r << " is not generator " << first << ": "
+                                               << testing::describe(g);
+                if (r == 0) ray0_first = first;
+                ASSERT_GE(first, ray0_first) << "case " << i << ": the cycle does not start at the generator given first";
+            }
         }
         ASSERT_TRUE(same(chart.rays(), pivot.rays())) << "case " << i << ": " << testing::describe(g);
         ASSERT_TRUE(same(chart.facets(), pivot.facets())) << "case " << i;
@@ -332,6 +349,61 @@ TEST(ConeLaws, PointedConesFoundInAChartEqualThoseFromAPivot) {
     EXPECT_GT(by_chart, cases * 8 / 10);
     EXPECT_GT(identical, cases / 2);
     EXPECT_GT(with_parallel, cases / 10);
+}
+
+// Cones the chart does not take (more than 128 generators, or a guessed direction with some
+// generator behind it) go to the pivot path, and from there sometimes to the dual clip; there
+// too the generator given first stands for parallel copies, and the cycle starts at the first
+// such generator that is extreme (helper-13: both kept a later copy of a generator given twice
+// and started the cycle there). Integer points z = 1 of a few hull shapes, each point given up
+// to three times at lengths 1-3, in random order, with zero vectors among them; the cone is
+// cddlib's of the raw numbers and each ray is exactly the first generator along it.
+TEST(ConeLaws, TheGeneratorGivenFirstStandsForParallelCopiesOnEveryPath) {
+    testing::Random rnd(2026);
+    const ConePathStats before = ConeBuilder::stats();
+    for (int i = 0; i < testing::sized(300); ++i) {
+        std::vector<Vec3> g;
+        if (i == 0) {  // helper-13's case: the pivot path started at the second (330, 600, 1)
+            g = {Vec3(330, 600, 1), Vec3(-424, -910, 1), Vec3(330, 600, 1), Vec3(-65, -546, 1)};
+        } else {
+            const int points = i % 3 == 0 ? rnd.integer(3, 8) : rnd.integer(40, 90);
+            const int range = rnd.integer(2, 1000);
+            for (int j = 0; j < points; ++j) {
+                const Vec3 v(rnd.integer(-range, range), rnd.integer(-range, range), 1);
+                for (int copies = rnd.integer(1, 3); copies > 0; --copies) g.push_back(v * rnd.integer(1, 3));
+                if (rnd.integer(0, 9) == 0) g.push_back(Vec3::Zero());
+            }
+            for (std::size_t j = g.size(); j > 1; --j) std::swap(g[j - 1], g[static_cast<std::size_t>(rnd.integer(0, static_cast<int>(j) - 1))]);
+        }
+        const Cone c = Cone::from_generators(g);
+        const oracle::OracleCone o = oracle::from_generators(g);
+        const std::string why = testing::compare_with_oracle(c, o);
+        ASSERT_TRUE(why.empty()) << why << " for case " << i << ": " << testing::describe(g);
+        if (c.kind() != "pointed cone") continue;
+        const std::vector<reference::QVec> raw = testing::exact_list(g);
+        std::size_t ray0_first = raw.size();
+        for (std::size_t r = 0; r < c.rays().size(); ++r) {
+            const reference::QVec ray = reference::to_q(c.rays()[r]);
+            std::size_t first = 0;
+            while (first < raw.size() && !(raw[first][1] * ray[2] == raw[first][2] * ray[1] &&
+                                           raw[first][2] * ray[0] == raw[first][0] * ray[2] &&
+                                           raw[first][0] * ray[1] == raw[first][1] * ray[0] &&
+                                           raw[first][0] * ray[0] + raw[first][1] * ray[1] + raw[first][2] * ray[2] > 0)) {
+                ++first;
+            }
+            ASSERT_LT(first, raw.size()) << "case " << i << ", ray " << r;
+            ASSERT_TRUE(raw[first] == ray) << "case " << i << ", ray " << r << " is not generator " << first << ": "
+                                           << testing::describe(g);
+            if (r == 0) ray0_first = first;
+            ASSERT_GE(first, ray0_first) << "case " << i << ": the cycle does not start at the generator given first: "
+                                         << testing::describe(g);
+        }
+    }
+    const ConePathStats& after = ConeBuilder::stats();
+    std::cout << "[ConeLaws] parallel copies: by chart " << after.by_chart - before.by_chart << ", by pivot "
+              << after.by_pivot - before.by_pivot << ", dual clip " << after.dual_clip - before.dual_clip << "\n";
+    EXPECT_GT(after.by_pivot - before.by_pivot, 0);
+    EXPECT_GT(after.dual_clip - before.dual_clip, 0);
 }
 
 // Every signed permutation P (48, half of them reflections) keeps a pointed cone's cycle
