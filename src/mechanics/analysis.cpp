@@ -807,6 +807,23 @@ private:
             if (!(norm > 0) || !std::isfinite(norm)) continue;  // (zero, or out of range: the check decides)
             points.push_back(g.negate ? Vec3(-a / norm) : Vec3(a / norm));
         }
+        // Each coordinate times a power of two s_k that brings its largest |p_k| to [1, 2), then
+        // each point back to unit length: a scene 2^-40 long has torques 2^-40 times its forces,
+        // and in the points as they are the widest plane's margin is about 2^-40 (turned down
+        // below: one query on the tangent of 10^5 contacts then built E from 2 x 10^5 edges).
+        // x found among the scaled points gives h = S x (h . g = x . S g, exactly).
+        Vec3 scale = Vec3::Ones();
+        for (int k = 0; k < 3; ++k) {
+            double top = 0;
+            for (const Vec3& p : points) top = std::max(top, std::fabs(p[k]));
+            if (top > 0 && std::isnormal(top)) scale[k] = std::ldexp(1.0, -std::ilogb(top));
+        }
+        if (scale != Vec3::Ones()) {
+            for (Vec3& p : points) {
+                p = p.cwiseProduct(scale);
+                p /= p.norm();
+            }
+        }
         Vec3 x = points.front();
         for (int step = 0; step < kWideSteps; ++step) {
             const Vec3* nearest = &points.front();
@@ -824,7 +841,9 @@ private:
             x += std::clamp(-x.dot(d) / d.squaredNorm(), 0.0, 1.0) * d;
         }
         if (!(x.squaredNorm() > 1e-20)) return std::nullopt;
-        Plane plane = plane_of(ExactVector::input(x));
+        const Vec3 h = x.cwiseProduct(scale);
+        if (!h.allFinite()) return std::nullopt;
+        Plane plane = plane_of(ExactVector::input(h));
         if (dot_sign(plane.h, wrench_) != Sign::Negative || !holds_cell(plane)) return std::nullopt;
         return plane;
     }

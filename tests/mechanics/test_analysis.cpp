@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -674,6 +675,7 @@ TEST(Analysis, MendedCertificatesOnLongFacesAgreeWithExactLp) {
 TEST(Analysis, WidePlanesOnRingsAgreeWithExactLp) {
     testing::Random rnd(4409);
     std::size_t built = 0, modes_seen = 0;
+    std::array<std::size_t, 2> built_scaled{};  // lengths times 2^40, 2^-40
     int wrenches = 0, members = 0;
     for (int s = 0; s < 4; ++s) {
         const bool quasi_static = s == 3;
@@ -695,6 +697,18 @@ TEST(Analysis, WidePlanesOnRingsAgreeWithExactLp) {
                                                  : minus_contact_generators({0, 0, 0}, c, n, rnd, 7);
             asked.push_back(reference::to_vec3(e));  // (near the boundaries: rounded to doubles)
         }
+        // The same ring with every length times 2^40 and 2^-40 (inertia times 2^80 and 2^-80),
+        // asked each wrench with its torque scaled alike: the same modes, and E built as often
+        // (the wide planes' points balanced coordinate by coordinate; without that, torques
+        // 2^-40 times the forces left every wide plane's margin below its threshold).
+        std::vector<Scene> scaled_scenes;
+        for (const int p : {40, -40}) {
+            Scene t = scene;
+            const double f = std::ldexp(1.0, p);
+            t.body = Body{1.0, scene.body->com * f, scene.body->inertia * f * f, {}};
+            for (Contact& k : t.contacts) k = Contact::make(k.point * f, k.normal, k.mu, k.mu_kinetic);
+            scaled_scenes.push_back(std::move(t));
+        }
         SceneQuestions first(scene, AnalysisOptions{quasi_static}), again(scene, AnalysisOptions{quasi_static});
         const std::vector<SceneAnswer> batch = first.answer(std::span<const Vec3>(asked));
         const std::vector<SceneAnswer> repeated = again.answer(std::span<const Vec3>(asked));
@@ -710,6 +724,12 @@ TEST(Analysis, WidePlanesOnRingsAgreeWithExactLp) {
                 EXPECT_EQ(scaled.result.modes, expected) << "scene " << s << ", 2^" << p;
                 EXPECT_EQ(scaled.built, single.built) << "scene " << s << ", 2^" << p;
             }
+            for (std::size_t k = 0; k < scaled_scenes.size(); ++k) {
+                const Vec3 e(asked[w].x(), asked[w].y(), asked[w].z() * std::ldexp(1.0, k == 0 ? 40 : -40));
+                const SceneAnswer longer = query_scene(scaled_scenes[k], e, AnalysisOptions{quasi_static});
+                EXPECT_EQ(longer.result.modes, expected) << "scene " << s << ", lengths times 2^" << (k == 0 ? 40 : -40);
+                built_scaled[k] += longer.built;
+            }
             EXPECT_EQ(repeated[w].result.modes, expected) << "scene " << s;
             EXPECT_EQ(repeated[w].built, batch[w].built) << "scene " << s;
             EXPECT_EQ(repeated[w].tested_generators, batch[w].tested_generators) << "scene " << s;
@@ -720,10 +740,12 @@ TEST(Analysis, WidePlanesOnRingsAgreeWithExactLp) {
         }
     }
     std::cout << "[Analysis] rings: " << wrenches << " wrenches, " << members << " mode answers 'yes'; E built for " << built
-              << " of " << modes_seen << " modes\n";
+              << " of " << modes_seen << " modes (lengths times 2^40: " << built_scaled[0] << ", 2^-40: " << built_scaled[1]
+              << ")\n";
     EXPECT_EQ(wrenches, 24);
     EXPECT_GE(members, 24);
     EXPECT_LT(built * 20, modes_seen);
+    for (const std::size_t b : built_scaled) EXPECT_LT(b * 20, modes_seen);
 }
 
 // Contacts on a line with normals along it and few distinct forces among their edges (one mu;
