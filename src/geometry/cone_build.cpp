@@ -582,13 +582,14 @@ template <class G>
 void pointed_from_cycle(std::span<const G> g, std::span<const int> cycle, bool facets, Parts& parts,
                         std::size_t first) {
     const std::size_t k = cycle.size();
-    const auto at = [&](std::size_t i) -> const G& {
+    const auto index = [&](std::size_t i) {  // the i-th generator of the cycle from `first`
         const std::size_t j = first + i;
-        return g[static_cast<std::size_t>(cycle[j < k ? j : j - k])];
+        return cycle[j < k ? j : j - k];
     };
+    const auto at = [&](std::size_t i) -> const G& { return g[static_cast<std::size_t>(index(i))]; };
     if (!facets) {  // the cycle is all cone_holds needs
         parts.cycle.reserve(k);
-        for (std::size_t i = 0; i < k; ++i) parts.cycle.push_back(cycle[first + i < k ? first + i : first + i - k]);
+        for (std::size_t i = 0; i < k; ++i) parts.cycle.push_back(index(i));
         return;
     }
     parts.rays.reserve(k);

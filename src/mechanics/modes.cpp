@@ -50,9 +50,9 @@ public:
     // The cells of the relatively open face spanned by `rays` and `lineality`.
     // `ray` is the face's ray as A stores it, for a 1-D face with a ray (its letters need no
     // new exact vector).
-    // `normal`, for a wedge, is A's facet on it.
+    // `normal`, for a wedge of a full-dimensional A, is A's facet on it (else null).
     void run(int dimension, const std::vector<Q3>& rays, const std::vector<Q3>& lineality, const ExactVector* ray,
-             const ExactVector* start, const ExactVector* finish, const ExactVector* normal = nullptr) {
+             const ExactVector* start, const ExactVector* finish, const ExactVector* normal) {
         start_vector_ = start;
         finish_vector_ = finish;
         normal_vector_ = normal;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <iostream>
 #include <map>
+#include <string>
 
 #include "../common/sizes.hpp"
 #include "cone_checks.hpp"
@@ -230,6 +231,26 @@ TEST(ConeLaws, ManyGeneratorsAgreeWithExactOracle) {
 // chart, collinear points, parallel copies of different lengths), narrow cones 2^20 .. 2^40
 // high and cones 2^-40 small, and contact wrenches of forces in a half-plane (constructions,
 // some 10^3 from the origin).
+// Empty when each ray of the pointed cone c is exactly the generator given first along its
+// direction (raw: the generators' exact numbers) and ray 0 the first of those; else why not.
+std::string rays_are_first_given(const Cone& c, const std::vector<reference::QVec>& raw) {
+    const auto along = [](const reference::QVec& a, const reference::QVec& b) {
+        return a[1] * b[2] == a[2] * b[1] && a[2] * b[0] == a[0] * b[2] && a[0] * b[1] == a[1] * b[0] &&
+               a[0] * b[0] + a[1] * b[1] + a[2] * b[2] > 0;
+    };
+    std::size_t ray0_first = raw.size();
+    for (std::size_t r = 0; r < c.rays().size(); ++r) {
+        const reference::QVec ray = reference::to_q(c.rays()[r]);
+        std::size_t first = 0;
+        while (first < raw.size() && !along(raw[first], ray)) ++first;
+        if (first == raw.size()) return "ray " + std::to_string(r) + " is along no generator";
+        if (!(raw[first] == ray)) return "ray " + std::to_string(r) + " is not generator " + std::to_string(first);
+        if (r == 0) ray0_first = first;
+        if (first < ray0_first) return "the cycle does not start at the generator given first";
+    }
+    return "";
+}
+
 TEST(ConeLaws, PointedConesFoundInAChartEqualThoseFromAPivot) {
     testing::Random rnd(1991);
     const long chart_before = ConeBuilder::stats().by_chart;
@@ -313,22 +334,9 @@ TEST(ConeLaws, PointedConesFoundInAChartEqualThoseFromAPivot) {
         // ray 0 the first of those: on both paths (the pivot's scan and its dual clip kept a later
         // copy of a generator given twice, and started there; helper-13).
         const std::vector<reference::QVec> raw = wrenches.empty() ? testing::exact_list(g) : exact_wrenches;
-        const auto along = [](const reference::QVec& a, const reference::QVec& b) {
-            return a[1] * b[2] == a[2] * b[1] && a[2] * b[0] == a[0] * b[2] && a[0] * b[1] == a[1] * b[0] &&
-                   a[0] * b[0] + a[1] * b[1] + a[2] * b[2] > 0;
-        };
         for (const Cone* c : {&chart, &pivot}) {
-            std::size_t ray0_first = raw.size();
-            for (std::size_t r = 0; r < c->rays().size(); ++r) {
-                const reference::QVec ray = reference::to_q(c->rays()[r]);
-                std::size_t first = 0;
-                while (first < raw.size() && !along(raw[first], ray)) ++first;
-                ASSERT_LT(first, raw.size()) << "case " << i << ", ray " << r;
-                ASSERT_TRUE(raw[first] == ray) << "case " << i << ", ray " << r << " is not generator " << first << ": "
-                                               << testing::describe(g);
-                if (r == 0) ray0_first = first;
-                ASSERT_GE(first, ray0_first) << "case " << i << ": the cycle does not start at the generator given first";
-            }
+            const std::string first_given = rays_are_first_given(*c, raw);
+            ASSERT_TRUE(first_given.empty()) << "case " << i << ": " << first_given << ": " << testing::describe(g);
         }
         ASSERT_TRUE(same(chart.rays(), pivot.rays())) << "case " << i << ": " << testing::describe(g);
         ASSERT_TRUE(same(chart.facets(), pivot.facets())) << "case " << i;
@@ -380,24 +388,8 @@ TEST(ConeLaws, TheGeneratorGivenFirstStandsForParallelCopiesOnEveryPath) {
         const std::string why = testing::compare_with_oracle(c, o);
         ASSERT_TRUE(why.empty()) << why << " for case " << i << ": " << testing::describe(g);
         if (c.kind() != "pointed cone") continue;
-        const std::vector<reference::QVec> raw = testing::exact_list(g);
-        std::size_t ray0_first = raw.size();
-        for (std::size_t r = 0; r < c.rays().size(); ++r) {
-            const reference::QVec ray = reference::to_q(c.rays()[r]);
-            std::size_t first = 0;
-            while (first < raw.size() && !(raw[first][1] * ray[2] == raw[first][2] * ray[1] &&
-                                           raw[first][2] * ray[0] == raw[first][0] * ray[2] &&
-                                           raw[first][0] * ray[1] == raw[first][1] * ray[0] &&
-                                           raw[first][0] * ray[0] + raw[first][1] * ray[1] + raw[first][2] * ray[2] > 0)) {
-                ++first;
-            }
-            ASSERT_LT(first, raw.size()) << "case " << i << ", ray " << r;
-            ASSERT_TRUE(raw[first] == ray) << "case " << i << ", ray " << r << " is not generator " << first << ": "
-                                           << testing::describe(g);
-            if (r == 0) ray0_first = first;
-            ASSERT_GE(first, ray0_first) << "case " << i << ": the cycle does not start at the generator given first: "
-                                         << testing::describe(g);
-        }
+        const std::string first_given = rays_are_first_given(c, testing::exact_list(g));
+        ASSERT_TRUE(first_given.empty()) << "case " << i << ": " << first_given << ": " << testing::describe(g);
     }
     const ConePathStats& after = ConeBuilder::stats();
     std::cout << "[ConeLaws] parallel copies: by chart " << after.by_chart - before.by_chart << ", by pivot "

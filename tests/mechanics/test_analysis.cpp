@@ -698,9 +698,10 @@ TEST(Analysis, WidePlanesOnRingsAgreeWithExactLp) {
             asked.push_back(reference::to_vec3(e));  // (near the boundaries: rounded to doubles)
         }
         // The same ring with every length times 2^40 and 2^-40 (inertia times 2^80 and 2^-80),
-        // asked each wrench with its torque scaled alike: the same modes, and E built as often
-        // (the wide planes' points balanced coordinate by coordinate; without that, torques
-        // 2^-40 times the forces left every wide plane's margin below its threshold).
+        // asked each wrench with its torque scaled alike: the same modes, and E built for under
+        // 1/20 of the modes there too (the wide planes' points balanced coordinate by coordinate;
+        // without that, torques 2^-40 times the forces left every wide plane's margin below its
+        // threshold).
         std::vector<Scene> scaled_scenes;
         for (const int p : {40, -40}) {
             Scene t = scene;
