@@ -70,8 +70,8 @@ Vec3 readable(const Vec3& v) {
     // integers (a conversion instead of std::floor, which is a call without SSE4.1).
     const double limit = 0x1p53;
     bool integral = true;
-    for (int i = 0; i < 3; ++i) {
-        if (!(std::fabs(v[i]) < limit) || static_cast<double>(static_cast<long long>(v[i])) != v[i]) integral = false;
+    for (int i = 0; i < 3 && integral; ++i) {
+        integral = std::fabs(v[i]) < limit && static_cast<double>(static_cast<long long>(v[i])) == v[i];
     }
     if (integral) {
         long long g = 0;
@@ -230,12 +230,13 @@ ExactVector ExactVector::cross(const Vec3& u, const Vec3& v, int sign) {
     e.v_ = v;
     e.sign_ = sign >= 0 ? 1 : -1;
     // The plain product is exact for small integers; if it overflows (or underflows to zero),
-    // scaling the factors first by powers of two keeps it finite for any finite input.
-    // (allFinite first: a coordinate inf - inf is NaN, which maxCoeff passes over.)
+    // scaling the factors first by powers of two keeps it finite for any finite input. (The sum
+    // of the magnitudes is NaN or infinite when a coordinate is: the test catches both.)
     Vec3 raw = u.cross(v);
-    const double m = raw.cwiseAbs().maxCoeff();
-    if (!(raw.allFinite() && m > 0x1p-900 && m < 0x1p900)) raw = scaled_by_power_of_two(u).cross(scaled_by_power_of_two(v));
-    e.value_ = readable(raw) * static_cast<double>(e.sign_);
+    const double s = std::fabs(raw.x()) + std::fabs(raw.y()) + std::fabs(raw.z());
+    if (!(s > 0x1p-900 && s < 0x1p900)) raw = scaled_by_power_of_two(u).cross(scaled_by_power_of_two(v));
+    e.value_ = readable(raw);
+    if (e.sign_ < 0) e.value_ = -e.value_;
     return e;
 }
 

@@ -13,13 +13,46 @@
 #include "cone_build.hpp"
 
 namespace momentlab {
+namespace {
+
+// The rows of cyclic incidences of up to kShared facets: steps[2j, 2j + 2) = {j, j + 1} and
+// last[2j, 2j + 2) = {0, j}.
+constexpr std::size_t kShared = 1024;
+struct CyclicTables {
+    std::array<int, 2 * kShared> steps{}, last{};
+    constexpr CyclicTables() {
+        for (std::size_t j = 0; j < kShared; ++j) {
+            steps[2 * j] = static_cast<int>(j);
+            steps[2 * j + 1] = static_cast<int>(j + 1);
+            last[2 * j + 1] = static_cast<int>(j);
+        }
+    }
+};
+constexpr CyclicTables kCyclic;
+
+}  // namespace
+
+void Incidence::own() {
+    std::vector<int> rows;
+    rows.reserve(2 * static_cast<std::size_t>(rows_));
+    for (std::size_t j = 0; j < size(); ++j) {
+        for (int i : row(j)) rows.push_back(i);
+    }
+    indices_ = std::move(rows);
+    shared_ = last_ = nullptr;
+}
+
 Incidence Incidence::transposed(std::size_t columns) const {
     std::vector<int> count(columns + 1, 0);
-    for (int i : indices_) ++count[static_cast<std::size_t>(i) + 1];
+    std::size_t entries = 0;
+    for (std::size_t j = 0; j < size(); ++j) {
+        for (int i : row(j)) ++count[static_cast<std::size_t>(i) + 1];
+        entries += row(j).size();
+    }
     Incidence t;
     t.offsets_.assign(columns + 1, 0);
     for (std::size_t c = 0; c < columns; ++c) t.offsets_[c + 1] = t.offsets_[c] + count[c + 1];
-    t.indices_.resize(indices_.size());
+    t.indices_.resize(entries);
     t.rows_ = static_cast<int>(columns);
     std::vector<int> fill(t.offsets_.begin(), t.offsets_.end() - 1);
     for (std::size_t j = 0; j < size(); ++j) {
@@ -30,6 +63,13 @@ Incidence Incidence::transposed(std::size_t columns) const {
 
 Incidence Incidence::cyclic(std::size_t k) {
     Incidence c;
+    c.rows_ = static_cast<int>(k);
+    c.stride_ = 2;
+    if (k <= kShared) {
+        c.shared_ = kCyclic.steps.data();
+        c.last_ = kCyclic.last.data() + 2 * (k - 1);
+        return c;
+    }
     c.indices_.resize(2 * k);
     for (std::size_t i = 0; i + 1 < k; ++i) {
         c.indices_[2 * i] = static_cast<int>(i);
@@ -37,8 +77,6 @@ Incidence Incidence::cyclic(std::size_t k) {
     }
     c.indices_[2 * k - 2] = 0;  // the last facet: rays 0 and k - 1, increasing
     c.indices_[2 * k - 1] = static_cast<int>(k - 1);
-    c.rows_ = static_cast<int>(k);
-    c.stride_ = 2;
     return c;
 }
 

@@ -359,6 +359,71 @@ TEST(ConeLaws, PointedConesFoundInAChartEqualThoseFromAPivot) {
     EXPECT_GT(with_parallel, cases / 10);
 }
 
+// The chart decides d . g > 0, the order of its x keys and the chain's turns on rounded chart
+// points with certified error bounds, and takes the exact predicates only where those cannot
+// decide. Generators whose chart points lie on a line (exactly, or off it by a few units in the
+// last place of the generators), points a few ulps apart, each generator at its own length
+// (2^k and odd multipliers, so that its chart point rounds differently), the whole at 2^-300,
+// 1 and 2^300, and wrenches of forces through points on a line or about a common point (chart
+// points of exact vectors, known up to their approximations' errors): the cone is the GMP oracle's
+// of the raw numbers and the pivot path's, rays and facets alike.
+TEST(ConeLaws, ChartFiltersDecideNearlyDegenerateCharts) {
+    testing::Random rnd(1126);
+    const long chart_before = ConeBuilder::stats().by_chart;
+    int cases = 0;
+    for (int i = 0; i < testing::sized(900); ++i) {
+        const int n = rnd.integer(4, 40);
+        std::vector<Vec3> g;
+        std::vector<ExactVector> wrenches;
+        std::vector<reference::QVec> exact_wrenches;
+        if (i % 3 == 2) {  // forces through points on a line, or about a common point
+            const Vec2 base(rnd.uniform(-1, 1), rnd.uniform(-1, 1)), along(rnd.uniform(-1, 1), rnd.uniform(-1, 1));
+            for (int j = 0; j < n; ++j) {
+                const double t = rnd.uniform(-1.2, 1.2);
+                const Vec2 d(std::cos(t), std::sin(t));
+                Vec2 p = i % 2 ? base : base + rnd.uniform(0, 1) * along;
+                if (j % 5 == 1) p.x() = std::nextafter(p.x(), 2.0);  // a few ulps off
+                wrenches.push_back(ExactVector::wrench(p, d));
+                g.push_back(wrenches.back().value());
+                const mpq_class px(p.x()), py(p.y()), dx(d.x()), dy(d.y());
+                exact_wrenches.push_back({dx, dy, px * dy - py * dx});
+            }
+        } else {  // chart points on a segment and a few above it, z > 0
+            const Vec3 a(rnd.uniform(-1, 1), rnd.uniform(-1, 1), 1), b(rnd.uniform(-1, 1), rnd.uniform(-1, 1), 0);
+            const double scale = std::ldexp(1.0, i % 3 == 0 ? 0 : (i % 2 ? 300 : -300));
+            for (int j = 0; j < n; ++j) {
+                Vec3 v = j < 3 ? Vec3(rnd.uniform(-2, 2), rnd.uniform(-2, 2), 1) : Vec3(a + rnd.uniform(0, 1) * b);
+                const int ulps = j % 4 == 0 ? 0 : rnd.integer(-3, 3);
+                for (int k = 0; k < std::abs(ulps); ++k) v.y() = std::nextafter(v.y(), ulps > 0 ? 4.0 : -4.0);
+                if (j % 6 == 5) v = g.back();  // the same point, then a few ulps from it
+                if (j % 6 == 0 && !g.empty()) v.x() = std::nextafter(g.back().x(), 4.0);
+                // Its own length: the chart point is the same, its rounding is not.
+                v *= std::ldexp(1.0, rnd.integer(-20, 20)) * (j % 3 == 0 ? 3.0 : 1.0);
+                g.push_back(v * scale);
+            }
+        }
+        const long chart_count = ConeBuilder::stats().by_chart;
+        const Cone chart = wrenches.empty() ? Cone::from_generators(g) : Cone::from_generators(wrenches);
+        const bool took_chart = ConeBuilder::stats().by_chart > chart_count;
+        const oracle::OracleCone o = wrenches.empty() ? oracle::from_generators(g) : oracle::from_generators(exact_wrenches);
+        const std::string why = testing::compare_with_oracle(chart, o);
+        ASSERT_TRUE(why.empty()) << why << " for case " << i << ": " << testing::describe(g);
+        if (!took_chart) continue;
+        ++cases;
+        ConeBuilder::use_chart() = false;
+        const Cone pivot = wrenches.empty() ? Cone::from_generators(g) : Cone::from_generators(wrenches);
+        ConeBuilder::use_chart() = true;
+        ASSERT_EQ(chart.rays().size(), pivot.rays().size()) << "case " << i;
+        for (std::size_t j = 0; j < chart.rays().size(); ++j) {
+            ASSERT_EQ(reference::to_q(chart.rays()[j]), reference::to_q(pivot.rays()[j])) << "case " << i << ", ray " << j;
+            ASSERT_EQ(reference::to_q(chart.facets()[j]), reference::to_q(pivot.facets()[j])) << "case " << i << ", facet " << j;
+        }
+    }
+    std::cout << "[ConeLaws] nearly degenerate charts: " << cases << " cones by the chart\n";
+    EXPECT_EQ(ConeBuilder::stats().by_chart - chart_before, cases);
+    EXPECT_GT(cases, testing::sized(900) / 2);
+}
+
 // Cones the chart does not take (more than 128 generators, or a guessed direction with some
 // generator behind it) go to the pivot path, and from there sometimes to the dual clip; there
 // too the generator given first stands for parallel copies, and the cycle starts at the first
