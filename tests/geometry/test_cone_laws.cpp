@@ -363,8 +363,8 @@ TEST(ConeLaws, PointedConesFoundInAChartEqualThoseFromAPivot) {
 // points with certified error bounds, and takes the exact predicates only where those cannot
 // decide. Generators whose chart points lie on a line (exactly, or off it by a few units in the
 // last place of the generators), points a few ulps apart, each generator at its own length
-// (2^k and odd multipliers, so that its chart point rounds differently), the whole at 2^-300,
-// 1 and 2^300, and wrenches of forces through points on a line or about a common point (chart
+// (times 2^k, some also times 3, which rounds: their chart points round differently), the
+// whole at 2^-300, 1 and 2^300, and wrenches of forces through points on a line or about a common point (chart
 // points of exact vectors, known up to their approximations' errors): the cone is the GMP oracle's
 // of the raw numbers and the pivot path's, rays and facets alike.
 TEST(ConeLaws, ChartFiltersDecideNearlyDegenerateCharts) {
