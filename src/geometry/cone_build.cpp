@@ -382,8 +382,7 @@ Parts build_planar(std::span<const G> g, const G& a, const G& b) {
 // ---------------------------------------------------------------------------------------------
 // Rank 3, pointed, with a known extreme ray p: Graham's scan around p.
 template <class G>
-void pointed_from_cycle(std::span<const G> g, std::span<const int> cycle, bool facets, Parts& parts,
-                        std::size_t first = 0);
+void pointed_from_cycle(std::span<const G> g, std::span<const int> cycle, bool facets, Parts& parts);
 
 // What the angular order around a pivot p tells:
 //  * a gap wider than pi: p is on an edge of the cone. Without -p among the generators p is an
@@ -570,19 +569,18 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     ScratchVector<int> hull(&scratch);
     hull.reserve(stack.size());
     for (std::int64_t k : stack) hull.push_back(k < 0 ? static_cast<int>(p_first) : items[static_cast<std::size_t>(k)].index);
-    // The cycle starts at the extreme generator given first, whichever pivot found it.
-    std::rotate(hull.begin(), std::min_element(hull.begin(), hull.end()), hull.end());
     pointed_from_cycle(g, hull, facets, out.parts.emplace());
     return out;
 }
 
 // Fills `parts` (empty) in place: a small cone's cost is mostly its own representation, and
 // moving four vectors and an incidence from one Parts to another was a tenth of it. The cycle
-// is read from cycle[first] on (and round), so that a caller need not rotate it.
+// (counter-clockwise, any start) is read from the extreme generator given first on, and round:
+// the same representation whichever path (chart, pivot, dual clip) found the cycle.
 template <class G>
-void pointed_from_cycle(std::span<const G> g, std::span<const int> cycle, bool facets, Parts& parts,
-                        std::size_t first) {
+void pointed_from_cycle(std::span<const G> g, std::span<const int> cycle, bool facets, Parts& parts) {
     const std::size_t k = cycle.size();
+    const auto first = static_cast<std::size_t>(std::min_element(cycle.begin(), cycle.end()) - cycle.begin());
     const auto index = [&](std::size_t i) {  // the i-th generator of the cycle from `first`
         const std::size_t j = first + i;
         return cycle[j < k ? j : j - k];
@@ -812,8 +810,8 @@ bool pointed_by_chart(std::span<const G> g, bool facets, Parts& out) {
             --j;
         }
     }
-    // One item per point: of parallel generators the one given first, as the pivot path's
-    // cycle starts at the extreme generator given first.
+    // One item per point: of parallel generators the one given first, as every
+    // cycle starts at the extreme generator given first (pointed_from_cycle).
     std::size_t m = 0;
     for (std::size_t i = 0; i < n; ++i) {
         if (items[i].same && m > 0) {
@@ -875,9 +873,7 @@ bool pointed_by_chart(std::span<const G> g, bool facets, Parts& out) {
     --h;  // the first point again
     if (h < 3) return false;
     ++ConeBuilder::stats().by_chart;
-    // From the generator given first, as the pivot path's cycle starts.
-    const auto first = static_cast<std::size_t>(std::min_element(hull.begin(), hull.begin() + static_cast<std::ptrdiff_t>(h)) - hull.begin());
-    pointed_from_cycle(g, std::span<const int>(hull.data(), h), facets, out, first);
+    pointed_from_cycle(g, std::span<const int>(hull.data(), h), facets, out);
     return true;
 }
 
@@ -989,8 +985,6 @@ Parts build_by_dual_clip(std::span<const G> g, std::size_t i0, std::size_t i1, s
     }
     std::vector<int> cycle;
     for (std::size_t t : edges) cycle.push_back(poly[t]);
-    // The cycle starts at the extreme generator given first, as from a pivot or the chart.
-    std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end()), cycle.end());
     pointed_from_cycle(g, cycle, facets, parts);  // parts is still empty here
     return parts;
 }
