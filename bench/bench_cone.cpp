@@ -1,6 +1,7 @@
 // bench_cone: the cone of n generators, n = 4 .. 10^6, three families, beside cddlib
-// (floating point and GMP, where they finish within about a minute) and a plain 2-D
-// monotone-chain hull of the same n points (the generators seen in the chart z = 1).
+// (floating point and GMP, where they finish within about a minute), a plain 2-D
+// monotone-chain hull of the same n points (the generators seen in the chart z = 1) and, for
+// small cones, a plain hull of the cone in doubles (plain_cone_hull).
 // Run `make bench`; the ratios are printed after the Google Benchmark table.
 #include <benchmark/benchmark.h>
 #include <setoper.h>
@@ -121,6 +122,83 @@ void BM_hull2d(benchmark::State& state) {
     state.counters["facets"] = static_cast<double>(facets);
 }
 
+// A plain (non-robust) hull of the cone: the job Cone::from_generators does for a pointed cone,
+// in doubles, written as a user would write it. The chart: the mean of the generators' directions
+// (moved towards any generator behind it, as the library's chart is), then Andrew's monotone chain
+// on the points (f . g, e . g) / (d . g), and the cone's two lists: its extreme rays and the facet
+// normals r_i x r_i+1. The speed baseline for small cones beside the 2-D chain above, which is
+// given its points already in the chart z = 1 and returns a count.
+struct PlainCone {
+    std::vector<Vec3> rays, facets;
+};
+struct ChartPoint {
+    double x, y;
+    int index;
+};
+PlainCone plain_cone_hull(const std::vector<Vec3>& g) {
+    Vec3 d = Vec3::Zero();
+    for (const Vec3& v : g) d += v / v.cwiseAbs().sum();
+    for (int pass = 0; pass < 8; ++pass) {
+        bool moved = false;
+        for (const Vec3& v : g) {
+            if (!(d.dot(v) > 0)) {
+                d += v / v.cwiseAbs().sum();
+                moved = true;
+            }
+        }
+        if (!moved) break;
+    }
+    int k = 0;
+    for (int i = 1; i < 3; ++i) {
+        if (std::fabs(d[i]) < std::fabs(d[k])) k = i;
+    }
+    const Vec3 e = Vec3::Unit(k).cross(d), f = e.cross(d);
+    std::vector<ChartPoint> p;
+    p.reserve(g.size());
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        const double w = d.dot(g[i]);
+        p.push_back({f.dot(g[i]) / w, e.dot(g[i]) / w, static_cast<int>(i)});
+    }
+    std::sort(p.begin(), p.end(), [](const ChartPoint& a, const ChartPoint& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    std::vector<int> h(2 * p.size());
+    std::size_t m = 0;
+    auto turn = [&](int o, int a, int b) {
+        const ChartPoint &po = p[static_cast<std::size_t>(o)], &pa = p[static_cast<std::size_t>(a)], &pb = p[static_cast<std::size_t>(b)];
+        return (pa.x - po.x) * (pb.y - po.y) - (pa.y - po.y) * (pb.x - po.x);
+    };
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        while (m >= 2 && turn(h[m - 2], h[m - 1], static_cast<int>(i)) <= 0) --m;
+        h[m++] = static_cast<int>(i);
+    }
+    for (std::size_t i = p.size() - 1, t = m + 1; i > 0; --i) {
+        while (m >= t && turn(h[m - 2], h[m - 1], static_cast<int>(i - 1)) <= 0) --m;
+        h[m++] = static_cast<int>(i - 1);
+    }
+    --m;  // the first point again
+    PlainCone c;
+    c.rays.reserve(m);
+    c.facets.reserve(m);
+    for (std::size_t i = 0; i < m; ++i) {
+        const Vec3& a = g[static_cast<std::size_t>(p[static_cast<std::size_t>(h[i])].index)];
+        const Vec3& b = g[static_cast<std::size_t>(p[static_cast<std::size_t>(h[i + 1 < m ? i + 1 : 0])].index)];
+        c.rays.push_back(a);
+        c.facets.push_back(a.cross(b));
+    }
+    return c;
+}
+
+void BM_cone_hull(benchmark::State& state) {
+    const auto f = static_cast<Family>(state.range(0));
+    const auto g = make(f, state.range(1));
+    std::size_t facets = 0;
+    for (auto _ : state) {
+        const PlainCone c = plain_cone_hull(g);
+        facets = c.facets.size();
+        benchmark::DoNotOptimize(facets);
+    }
+    state.counters["facets"] = static_cast<double>(facets);
+}
+
 // cddlib: V-representation (origin + rays) to H-representation.
 template <bool kExact>
 void BM_cdd(benchmark::State& state) {
@@ -180,6 +258,7 @@ void sizes(benchmark::internal::Benchmark* b, std::int64_t max_n) {
 BENCHMARK(BM_momentlab)->Apply([](auto* b) { sizes(b, 1000000); });
 BENCHMARK(BM_momentlab_pivot)->Apply([](auto* b) { sizes(b, 100); });
 BENCHMARK(BM_hull2d)->Apply([](auto* b) { sizes(b, 1000000); });
+BENCHMARK(BM_cone_hull)->Apply([](auto* b) { sizes(b, 100); });
 BENCHMARK(BM_cdd<false>)->Name("BM_cdd_float")->Apply([](auto* b) { sizes(b, 10000); })->Iterations(1);
 BENCHMARK(BM_cdd<true>)->Name("BM_cdd_gmp")->Apply([](auto* b) { sizes(b, 1000); })->Iterations(1);
 
@@ -248,6 +327,22 @@ public:
                         kFamilyNames[key.first], static_cast<long long>(key.second), hull, row.ms,
                         row.ms / hull, pv_ms, pv_r, cf_ms, cf_r, cg_ms, cg_r, row.facets, cf_n,
                         std::to_string(expected).c_str());
+        }
+        // Small cones beside the plain hull of the cone (the same job in doubles).
+        const auto plain = rows.find("BM_cone_hull");
+        if (plain == rows.end()) return;
+        std::printf("\nSmall cones: ratios (time / time of the plain hull of the cone: the chart found, the"
+                    " rays and facets listed, in doubles); facets found\n");
+        std::printf("%-28s %8s %13s %11s %9s  %s\n", "family", "n", "plain hull ms", "momentlab", "ratio",
+                    "facets: ours / plain hull / expected");
+        for (const auto& [key, hull] : plain->second) {
+            const auto it = ours.find(key);
+            if (it == ours.end()) continue;
+            auto expected = expected_facets(static_cast<Family>(key.first), key.second);
+            if (expected < 0) expected = static_cast<std::int64_t>(rows.at("BM_hull2d").at(key).facets);
+            std::printf("%-28s %8lld %13.4g %11.4g %9.2f  %.0f / %.0f / %lld\n", kFamilyNames[key.first],
+                        static_cast<long long>(key.second), hull.ms, it->second.ms, it->second.ms / hull.ms,
+                        it->second.facets, hull.facets, static_cast<long long>(expected));
         }
     }
 };

@@ -19,13 +19,14 @@
 #include "error_free.hpp"
 #include "power_of_two.hpp"
 
+#include <bit>
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
-#include <numeric>
 #include <optional>
+#include <utility>
 
 namespace momentlab {
 namespace {
@@ -65,6 +66,21 @@ Vec3 scaled_by_power_of_two(const Vec3& v) {
 // For display: integer vectors are divided by the gcd of their coordinates (exact), others are
 // left as they are unless far from 1, then scaled by a power of two. Neither changes the
 // direction.
+// Stein's binary gcd: shifts and subtractions, no division (a facet of integer generators is
+// divided by the gcd of its coordinates in every construction).
+std::uint64_t binary_gcd(std::uint64_t a, std::uint64_t b) {
+    if (a == 0) return b;
+    if (b == 0) return a;
+    const int shift = std::countr_zero(a | b);
+    a >>= std::countr_zero(a);
+    do {
+        b >>= std::countr_zero(b);
+        if (a > b) std::swap(a, b);
+        b -= a;
+    } while (b != 0);
+    return a << shift;
+}
+
 Vec3 readable(const Vec3& v) {
     // |v_i| < 2^53 first, so that the conversion to a 64-bit integer is defined and exact for
     // integers (a conversion instead of std::floor, which is a call without SSE4.1).
@@ -74,8 +90,8 @@ Vec3 readable(const Vec3& v) {
         integral = std::fabs(v[i]) < limit && static_cast<double>(static_cast<long long>(v[i])) == v[i];
     }
     if (integral) {
-        long long g = 0;
-        for (int i = 0; i < 3; ++i) g = std::gcd(g, std::llabs(static_cast<long long>(v[i])));
+        std::uint64_t g = 0;
+        for (int i = 0; i < 3; ++i) g = binary_gcd(g, static_cast<std::uint64_t>(std::llabs(static_cast<long long>(v[i]))));
         if (g > 1) return v / static_cast<double>(g);
         return v;
     }
@@ -217,27 +233,16 @@ Exact3 wrench_through(const Exact2& p, const Exact2& d) { return {d[0], d[1], cr
 // ---------------------------------------------------------------------------------------------
 // ExactVector.
 
-ExactVector ExactVector::input(const Vec3& v) {
-    ExactVector e;
-    e.value_ = v;
-    return e;
-}
-
-ExactVector ExactVector::cross(const Vec3& u, const Vec3& v, int sign) {
-    ExactVector e;
-    e.kind_ = Kind::Cross;
-    e.u_ = u;
-    e.v_ = v;
-    e.sign_ = sign >= 0 ? 1 : -1;
+ExactVector::ExactVector(const Vec3& u, const Vec3& v, int sign)
+    : u_(u), v_(v), sign_(sign >= 0 ? 1 : -1), kind_(Kind::Cross) {
     // The plain product is exact for small integers; if it overflows (or underflows to zero),
     // scaling the factors first by powers of two keeps it finite for any finite input. (The sum
     // of the magnitudes is NaN or infinite when a coordinate is: the test catches both.)
     Vec3 raw = u.cross(v);
     const double s = std::fabs(raw.x()) + std::fabs(raw.y()) + std::fabs(raw.z());
     if (!(s > 0x1p-900 && s < 0x1p900)) raw = scaled_by_power_of_two(u).cross(scaled_by_power_of_two(v));
-    e.value_ = readable(raw);
-    if (e.sign_ < 0) e.value_ = -e.value_;
-    return e;
+    value_ = readable(raw);
+    if (sign_ < 0) value_ = -value_;
 }
 
 ExactVector ExactVector::cross(const ExactVector& u, const ExactVector& v, int sign) {

@@ -596,8 +596,13 @@ void pointed_from_cycle(std::span<const G> g, std::span<const int> cycle, bool f
     for (std::size_t i = 0; i < k; ++i) {
         const G& a = at(i);
         const G& b = at(i + 1 < k ? i + 1 : 0);
-        parts.rays.push_back(in(a));
-        parts.facets.push_back(ExactVector::cross(a, b, 1));
+        if constexpr (std::is_same_v<G, Vec3>) {  // made in place
+            parts.rays.emplace_back(a);
+            parts.facets.emplace_back(a, b, 1);
+        } else {
+            parts.rays.push_back(a);
+            parts.facets.push_back(ExactVector::cross(a, b, 1));
+        }
     }
     parts.facet_rays = Incidence::cyclic(k);
 }

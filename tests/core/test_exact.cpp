@@ -371,6 +371,34 @@ TEST(ExactVector, CrossValueIsFinite) {
     }
 }
 
+// The printed value of an integer cross product is the product divided by the gcd of its
+// coordinates (GMP's gcd of the exact product here), with the construction's sign; the
+// constructor that makes it in place gives the same vector as the factory.
+TEST(ExactVector, IntegerCrossValueIsReducedByTheGcd) {
+    testing::Random r(601);
+    for (int i = 0; i < 20000; ++i) {
+        const int range = i % 2 ? 40 : 1 << 20;
+        Vec3 u, v;
+        for (int k = 0; k < 3; ++k) {
+            u[k] = r.integer(-range, range) * (i % 3 == 0 ? 6 : 1);
+            v[k] = r.integer(-range, range) * (i % 5 == 0 ? 12 : 1);
+        }
+        const int sign = i % 4 == 0 ? -1 : 1;
+        const reference::QVec q = reference::cross(reference::q(u), reference::q(v));
+        if (q == reference::QVec{0, 0, 0}) continue;
+        mpz_class g = 0;
+        for (const Q& c : q) g = gcd(g, mpz_class(c.get_num()));
+        const Vec3 value = ExactVector::cross(u, v, sign).value();
+        const ExactVector in_place(u, v, sign);
+        for (int k = 0; k < 3; ++k) {
+            const Q expected = Q(sign) * q[static_cast<std::size_t>(k)] / Q(g);
+            ASSERT_EQ(Q(value[k]), expected) << i << " coordinate " << k;
+            ASSERT_EQ(in_place.value()[k], value[k]) << i;
+        }
+        ASSERT_TRUE(in_place.same_construction(ExactVector::cross(u, v, sign))) << i;
+    }
+}
+
 // Every kind's approximation certifies each coordinate on its own: |exact 2^-k - approx_i| <=
 // err_i (GMP), for inputs, wrenches, computed vectors (friction edges, crosses of those) and
 // their signed permutations, with coordinates of very different sizes.

@@ -64,10 +64,14 @@ class ExactVector {
 public:
     /// Zero.
     ExactVector() = default;
+    /// A stored input vector (as input(v); a constructor, so that a list makes it in place).
+    explicit ExactVector(const Vec3& v) : value_(v) {}
+    /// sign * (u x v) of two stored vectors, as cross(u, v, sign) makes it (in place).
+    ExactVector(const Vec3& u, const Vec3& v, int sign);
     /// A stored input vector.
-    static ExactVector input(const Vec3& v);
+    static ExactVector input(const Vec3& v) { return ExactVector(v); }
     /// The construction sign * (u x v) of two stored vectors; `sign` is +1 or -1.
-    static ExactVector cross(const Vec3& u, const Vec3& v, int sign);
+    static ExactVector cross(const Vec3& u, const Vec3& v, int sign) { return {u, v, sign}; }
     /// sign * (u x v) for any exact u, v.
     static ExactVector cross(const ExactVector& u, const ExactVector& v, int sign = 1);
     /// The exact vector e (an input when every coordinate is a double).
