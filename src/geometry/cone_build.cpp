@@ -666,7 +666,7 @@ inline void certified(const ExactVector& v, Vec3& a, Vec3& err) {
 }
 
 // The chart point (f . v, e . v) / (d . v) of a generator, rounded, with a bound on its error,
-// and whether d . v > 0 is certified. d, e and f are integer vectors below 2^42 (exact); the frame
+// and whether d . v > 0 is certified. d, e and f are integer vectors below 2^44 (exact); the frame
 // holds |d| and max(|e|, |f|) coordinate by coordinate (one bound serves both coordinates of the
 // point). With a = the approximation and t its error, c . a evaluated in doubles errs by at most
 // 3u sum |c_i a_i| (u = 2^-53; taken as 4u), and c . t is at most sum |c_i| t_i; below the
@@ -725,10 +725,13 @@ bool pointed_by_chart(std::span<const G> g, bool facets, Parts& out) {
         for (int i = 0; i < 3; ++i) to[i] = static_cast<double>(static_cast<std::int64_t>(scaled[i] + (scaled[i] < 0 ? -0.5 : 0.5)));
         return true;
     };
-    // The chart of d: e = e_k x d for the axis k where d is smallest (e . d = 0 exactly: its
-    // coordinates are +-d_i or 0, and e is not small beside d), f = e x d (exact: integers below
-    // 2^42), and each generator's point (f . v, e . v) / (d . v) with its error bound. False
-    // unless d . v > 0 for every generator (certified by the bound, or else exactly).
+    // The chart of d: e = u x d for u = 2 e_k + e_k+1, k the axis where d is smallest (e . d = 0
+    // exactly: e's coordinates are integers below 3 * 2^20; u is never parallel to d, whose
+    // coordinate k is its smallest where u's is its largest, so e is not small beside d; and a
+    // u off the axes leaves no two corners of an axis-aligned integer cone at one X, a tie the
+    // exact predicates would decide), f = e x d (exact: integers below 2^44), and each
+    // generator's point (f . v, e . v) / (d . v) with its error bound. False unless d . v > 0 for
+    // every generator (certified by the bound, or else exactly).
     Vec3 d;
     ChartFrame frame;
     Scratch scratch;
@@ -740,7 +743,7 @@ bool pointed_by_chart(std::span<const G> g, bool facets, Parts& out) {
             if (std::fabs(d[i]) < std::fabs(d[k])) k = i;
         }
         frame.d = d;
-        frame.e = Vec3::Unit(k).cross(d);
+        frame.e = (2 * Vec3::Unit(k) + Vec3::Unit((k + 1) % 3)).cross(d);
         frame.f = frame.e.cross(d);
         frame.abs_d = frame.d.cwiseAbs();
         frame.abs_ef = frame.e.cwiseAbs().cwiseMax(frame.f.cwiseAbs());
