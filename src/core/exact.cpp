@@ -63,9 +63,6 @@ Vec3 scaled_by_power_of_two(const Vec3& v) {
     return times_power_of_two(v, 1 - binary_exponent(m));
 }
 
-// For display: integer vectors are divided by the gcd of their coordinates (exact), others are
-// left as they are unless far from 1, then scaled by a power of two. Neither changes the
-// direction.
 // Stein's binary gcd: shifts and subtractions, no division (a facet of integer generators is
 // divided by the gcd of its coordinates in every construction).
 std::uint64_t binary_gcd(std::uint64_t a, std::uint64_t b) {
@@ -81,6 +78,9 @@ std::uint64_t binary_gcd(std::uint64_t a, std::uint64_t b) {
     return a << shift;
 }
 
+// For display: integer vectors are divided by the gcd of their coordinates (exact), others are
+// left as they are unless far from 1, then scaled by a power of two. Neither changes the
+// direction.
 Vec3 readable(const Vec3& v) {
     // |v_i| < 2^53 first, so that the conversion to a 64-bit integer is defined and exact for
     // integers (a conversion instead of std::floor, which is a call without SSE4.1).
