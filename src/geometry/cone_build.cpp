@@ -455,12 +455,26 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     ScratchVector<Item<G>> items(&scratch);
     items.reserve(g.size() - reference);
     // Each generator's half around p from one determinant det(p, r, x); only where it is zero
-    // is x tested for being parallel to p (dropped) or told from -r by the witness.
+    // is x tested for being parallel to p (dropped) or told from -r by the witness. (Of exact
+    // vectors, p's and r's approximations are made once for all x.)
+    [[maybe_unused]] ExactVector::Approximation p_approx, r_approx;
+    if constexpr (std::is_same_v<G, ExactVector>) {
+        p_approx = p.approximation();
+        r_approx = r.approximation();
+    }
+    const auto det_p_r = [&](const G& x) {
+        if constexpr (std::is_same_v<G, ExactVector>) {
+            if (p.is_constructed() || r.is_constructed() || x.is_constructed()) {
+                return det_sign(p, r, x, p_approx, r_approx, x.approximation());
+            }
+        }
+        return det_sign(p, r, x);
+    };
     for (std::size_t i = reference; i < g.size(); ++i) {
         if (i == pivot) continue;
         int half = 0;
         if (i != reference) {  // r itself: along r, no det(p, r, r)
-            const Sign s = det_sign(p, r, g[i]);
+            const Sign s = det_p_r(g[i]);
             if (s != Sign::Zero) {
                 half = s == Sign::Positive ? 1 : 3;
             } else if (parallel(p, g[i])) {

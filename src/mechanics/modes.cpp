@@ -365,16 +365,20 @@ std::vector<std::vector<int>> ModeWalk::closed_sets(const std::vector<Face>& fac
     const ExactVector& reference = f[order[0]];
     const ExactVector c = ExactVector::from_exact(f[order[0]].exact() + f[order[k / 3]].exact() + f[order[2 * k / 3]].exact());
     const Exact3 c_reference = cross(c.exact(), reference.exact());
+    // The approximations of c and of the facets, made once: every search below tests them again.
+    const ExactVector::Approximation pc = c.approximation();
+    std::vector<ExactVector::Approximation> pf(k);
+    for (std::size_t t = 0; t < k; ++t) pf[t] = f[t].approximation();
     // 0: along the reference; 1: counter-clockwise from it by less than pi; 2: opposite; 3: the
     // rest; -1: along c.
-    const auto half = [&](const ExactVector& v) {
-        const Sign s = det_sign(c, reference, v);
+    const auto half = [&](const ExactVector& v, const ExactVector::Approximation& pv) {
+        const Sign s = det_sign(c, reference, v, pc, pf[order[0]], pv);
         if (s != Sign::Zero) return s == Sign::Positive ? 1 : 3;
         const int along = sign(dot(cross(c.exact(), v.exact()), c_reference));
         return along > 0 ? 0 : (along < 0 ? 2 : -1);
     };
     std::vector<int> ray_half(k);
-    for (std::size_t t = 0; t < k; ++t) ray_half[t] = half(f[order[t]]);
+    for (std::size_t t = 0; t < k; ++t) ray_half[t] = half(f[order[t]], pf[order[t]]);
     // The ray of A on facets i and i' (each ray of A lies on exactly two facets).
     std::unordered_map<std::uint64_t, int> ray_between;
     const Incidence facets_of_ray = a_.facet_rays().transposed(a_.rays().size());
@@ -396,11 +400,12 @@ std::vector<std::vector<int>> ModeWalk::closed_sets(const std::vector<Face>& fac
         mine.on_ray.resize(a_.rays().size());
         for (std::size_t j = n * part / 2; j < n * (part + 1) / 2; ++j) {
             const ExactVector& v = normals_[j];
-            const int hv = half(v);
+            const ExactVector::Approximation pv = v.approximation();
+            const int hv = half(v, pv);
             if (hv < 0) continue;  // along c: inside A*
             const auto not_after = [&](std::size_t t) {  // the angle of ray t is at most v's
                 if (ray_half[t] != hv) return ray_half[t] < hv;
-                return hv == 0 || hv == 2 || det_sign(c, f[order[t]], v) != Sign::Negative;
+                return hv == 0 || hv == 2 || det_sign(c, f[order[t]], v, pc, pf[order[t]], pv) != Sign::Negative;
             };
             std::size_t lo = 0, hi = k;  // not_after(lo), !not_after(hi) (hi = k: past the end)
             while (hi - lo > 1) {
@@ -410,7 +415,7 @@ std::vector<std::vector<int>> ModeWalk::closed_sets(const std::vector<Face>& fac
             const std::size_t i = order[lo], i2 = order[(lo + 1) % k];
             if (parallel(v, f[i])) {
                 mine.on_facet[i].push_back(static_cast<int>(j));
-            } else if (det_sign(f[i], f[i2], v) == Sign::Zero) {
+            } else if (det_sign(f[i], f[i2], v, pf[i], pf[i2], pv) == Sign::Zero) {
                 const auto it = ray_between.find(key(i, i2));
                 assert(it != ray_between.end());
                 mine.on_ray[static_cast<std::size_t>(it->second)].push_back(static_cast<int>(j));
