@@ -641,6 +641,7 @@ Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c) 
 
 Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c, const ExactVector::Approximation& pa,
               const ExactVector::Approximation& pb, const ExactVector::Approximation& pc) {
+    if (!a.is_constructed() && !b.is_constructed() && !c.is_constructed()) return det_sign(a.value(), b.value(), c.value());
     return det_sign_approximated(a, b, c, pa, pb, pc);
 }
 

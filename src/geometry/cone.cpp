@@ -44,15 +44,13 @@ void Incidence::own() {
 
 Incidence Incidence::transposed(std::size_t columns) const {
     std::vector<int> count(columns + 1, 0);
-    std::size_t entries = 0;
     for (std::size_t j = 0; j < size(); ++j) {
         for (int i : row(j)) ++count[static_cast<std::size_t>(i) + 1];
-        entries += row(j).size();
     }
     Incidence t;
     t.offsets_.assign(columns + 1, 0);
     for (std::size_t c = 0; c < columns; ++c) t.offsets_[c + 1] = t.offsets_[c] + count[c + 1];
-    t.indices_.resize(entries);
+    t.indices_.resize(static_cast<std::size_t>(t.offsets_[columns]));
     t.rows_ = static_cast<int>(columns);
     std::vector<int> fill(t.offsets_.begin(), t.offsets_.end() - 1);
     for (std::size_t j = 0; j < size(); ++j) {

@@ -464,11 +464,10 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     }
     const auto det_p_r = [&](const G& x) {
         if constexpr (std::is_same_v<G, ExactVector>) {
-            if (p.is_constructed() || r.is_constructed() || x.is_constructed()) {
-                return det_sign(p, r, x, p_approx, r_approx, x.approximation());
-            }
+            return det_sign(p, r, x, p_approx, r_approx, x.approximation());
+        } else {
+            return det_sign(p, r, x);
         }
-        return det_sign(p, r, x);
     };
     for (std::size_t i = reference; i < g.size(); ++i) {
         if (i == pivot) continue;
@@ -610,11 +609,10 @@ void pointed_from_cycle(std::span<const G> g, std::span<const int> cycle, bool f
     for (std::size_t i = 0; i < k; ++i) {
         const G& a = at(i);
         const G& b = at(i + 1 < k ? i + 1 : 0);
-        if constexpr (std::is_same_v<G, Vec3>) {  // made in place
-            parts.rays.emplace_back(a);
+        parts.rays.emplace_back(a);  // made in place
+        if constexpr (std::is_same_v<G, Vec3>) {
             parts.facets.emplace_back(a, b, 1);
         } else {
-            parts.rays.push_back(a);
             parts.facets.push_back(ExactVector::cross(a, b, 1));
         }
     }
