@@ -31,10 +31,17 @@
 namespace momentlab {
 namespace {
 
-constexpr double kU = 0x1p-53;
-constexpr double kUnderflow = 0x1p-1000;
+constexpr double kU = detail::kApproximationUnit;
+constexpr double kUnderflow = detail::kApproximationFloor;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// Every filtered predicate counts itself here: in the initial-exec model on ELF systems, where
+// the count is one instruction rather than a call to __tls_get_addr per predicate (the library
+// is loaded with the program or, as the Python module loads it, by dlopen into the static TLS
+// block's spare room: 16 bytes).
+#if defined(__ELF__) && !defined(__EMSCRIPTEN__)
+__attribute__((tls_model("initial-exec")))
+#endif
 thread_local ExactStats g_stats;
 
 // e with m = f 2^e, f in [0.5, 1), for finite m > 0: what std::frexp gives, read from the bits
@@ -115,18 +122,6 @@ bool det_filter(const ExactVector::Approximation& pa, const ExactVector::Approxi
     const double permanent1 = permanent(a.cwiseAbs() + pa.err, b.cwiseAbs() + pb.err, c.cwiseAbs() + pc.err);
     // (+inf or NaN when an operand has no approximation: then no sign is returned.)
     const double bound = (permanent1 - permanent0 + 8 * kU * permanent0 + 10 * kU * permanent1 + kUnderflow) * (1 + 0x1p-40);
-    if (!(std::fabs(value) > bound)) return false;
-    out = sign_of(value);
-    return true;
-}
-
-bool dot_filter(const ExactVector::Approximation& pa, const ExactVector::Approximation& pb, Sign& out) {
-    const Vec3 &a = pa.approx, &b = pb.approx;
-    const double p0 = a.x() * b.x(), p1 = a.y() * b.y(), p2 = a.z() * b.z();
-    const double value = p0 + p1 + p2;
-    const double permanent0 = std::fabs(p0) + std::fabs(p1) + std::fabs(p2);
-    const double permanent1 = (a.cwiseAbs() + pa.err).dot(b.cwiseAbs() + pb.err);
-    const double bound = (permanent1 - permanent0 + 4 * kU * permanent0 + 10 * kU * permanent1 + kUnderflow) * (1 + 0x1p-40);
     if (!(std::fabs(value) > bound)) return false;
     out = sign_of(value);
     return true;
@@ -496,7 +491,7 @@ ExactVector ExactVector::transformed(const ExactMatrix& m) const { return from_e
 Sign dot_sign(const ExactVector& a, const ExactVector& b) {
     if (!a.is_constructed() && !b.is_constructed()) return dot_sign(a.value(), b.value());
     Sign s = Sign::Zero;
-    if (dot_filter(a.approximation(), b.approximation(), s)) {
+    if (dot_sign_by_approximations(a.approximation(), b.approximation(), s)) {
         ++g_stats.filtered;
         return s;
     }
@@ -507,7 +502,7 @@ Sign dot_sign(const ExactVector& a, const ExactVector& b, const ExactVector::App
               const ExactVector::Approximation& pb) {
     if (!a.is_constructed() && !b.is_constructed()) return dot_sign(a.value(), b.value());
     Sign s = Sign::Zero;
-    if (dot_filter(pa, pb, s)) {
+    if (dot_sign_by_approximations(pa, pb, s)) {
         ++g_stats.filtered;
         return s;
     }
@@ -524,7 +519,7 @@ Sign dot_sign(const ExactVector& a, const Exact3& b, const ExactVector::Approxim
 
 Sign dot_sign(const ExactVector& a, const Exact3& b, const ExactVector::Approximation& pa, const ExactVector::Approximation& pb) {
     Sign s = Sign::Zero;
-    if (dot_filter(pa, pb, s)) {
+    if (dot_sign_by_approximations(pa, pb, s)) {
         ++g_stats.filtered;
         return s;
     }
@@ -677,6 +672,12 @@ bool is_zero(const ExactVector& v) {
     // Constructions that are exactly doubles are stored as inputs, so a computed vector is
     // never zero; a lazy cross product is zero when its factors are parallel.
     if (!v.is_constructed()) return is_zero(v.value());
+    // A coordinate whose approximation is further from 0 than its error bound is not 0 (no
+    // Dyadic coordinates made for the many that are not: the cones' generators are tested).
+    const ExactVector::Approximation p = v.approximation();
+    for (int i = 0; i < 3; ++i) {
+        if (std::abs(p.approx[i]) > p.err[i]) return false;
+    }
     return is_zero(v.exact());
 }
 

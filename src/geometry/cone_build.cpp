@@ -146,6 +146,39 @@ ExactVector exact_normal_towards(const G& r1, const G& r2, int k) {
 // transversal to the plane (orientation = sign of (u x v)[k]); for the quotient by a pivot p it
 // is p itself (orientation = det(p, u, v)). `half` places a vector in one of four classes
 // relative to a reference direction r: 0 along r, 1 strictly left, 2 along -r, 3 strictly right.
+// An exact vector's approximation, kept beside it where it meets many determinants (doubles need
+// none). Its default has an infinite error bound: the exact path, never a wrong filter.
+struct NoRounding {};
+template <class G>
+using RoundingOf = std::conditional_t<std::is_same_v<G, ExactVector>, ExactVector::Approximation, NoRounding>;
+template <class G>
+RoundingOf<G> unrounded() {
+    if constexpr (std::is_same_v<G, ExactVector>) {
+        return {Vec3::Zero(), Vec3::Constant(std::numeric_limits<double>::infinity())};
+    } else {
+        return {};
+    }
+}
+template <class G>
+RoundingOf<G> rounding(const G& v) {
+    if constexpr (std::is_same_v<G, ExactVector>) {
+        return v.approximation();
+    } else {
+        (void)v;
+        return {};
+    }
+}
+// det(a, b, c) with their approximations given.
+template <class G>
+Sign det_rounded(const G& a, const G& b, const G& c, const RoundingOf<G>& ra, const RoundingOf<G>& rb,
+                 const RoundingOf<G>& rc) {
+    if constexpr (std::is_same_v<G, ExactVector>) {
+        return det_sign(a, b, c, ra, rb, rc);
+    } else {
+        return det_sign(a, b, c);
+    }
+}
+
 template <class G>
 struct AngularOrder {
     enum class Mode { PlaneAxis, Pivot } mode;
@@ -153,6 +186,7 @@ struct AngularOrder {
     G pivot{};
     G reference{};
     G witness{};  // pivot mode: a vector with det(p, r, witness) != 0
+    RoundingOf<G> pivot_rounding = unrounded<G>();  // pivot mode: the pivot's approximation
 
     Sign orient(const G& u, const G& v) const {
         return mode == Mode::PlaneAxis ? cross_component_sign(u, v, axis) : det_sign(pivot, u, v);
@@ -179,7 +213,18 @@ struct Item {
     double key;  // 4 * half + a floating-point pseudo-angle inside the half; only a hint for the sort
     int index;
     int half;
+    // Pivot mode: v's approximation, made once for the determinants of the sort and the scan.
+    [[no_unique_address]] RoundingOf<G> rounding = unrounded<G>();
 };
+
+// ord.orient(a.v, b.v), with the items' approximations in pivot mode.
+template <class G>
+Sign orient(const AngularOrder<G>& ord, const Item<G>& a, const Item<G>& b) {
+    if (ord.mode == AngularOrder<G>::Mode::Pivot) {
+        return det_rounded(ord.pivot, a.v, b.v, ord.pivot_rounding, a.rounding, b.rounding);
+    }
+    return ord.orient(a.v, b.v);
+}
 
 // The working vectors of one angular analysis (items, their ties, groups, the scan's stack) come
 // from a buffer on the stack while they fit, so a cone of a few generators makes no allocation
@@ -263,7 +308,7 @@ Groups angular_sort(ScratchVector<Item<G>>& items, const AngularOrder<G>& ord, T
     auto compare = [&](const Item& a, const Item& b) {
         if (a.half != b.half) return a.half < b.half ? Sign::Negative : Sign::Positive;
         if (a.half == 0 || a.half == 2) return Sign::Zero;
-        return -ord.orient(a.v, b.v);
+        return -orient(ord, a, b);
     };
     // One exact comparison per neighbouring pair; an item found out of order is moved back
     // (insertion), which is rare when the keys are good. When they are not (generators almost
@@ -316,8 +361,8 @@ Groups angular_sort(ScratchVector<Item<G>>& items, const AngularOrder<G>& ord, T
 // The angular gap from direction u to the next direction v (counter-clockwise), compared with
 // pi: -1 smaller, 0 equal, +1 larger. u and v are distinct directions.
 template <class G>
-int gap_vs_pi(const G& u, const G& v, const AngularOrder<G>& ord) {
-    const Sign s = ord.orient(u, v);
+int gap_vs_pi(const Item<G>& u, const Item<G>& v, const AngularOrder<G>& ord) {
+    const Sign s = orient(ord, u, v);
     if (s == Sign::Positive) return -1;
     if (s == Sign::Negative) return 1;
     return 0;
@@ -348,10 +393,11 @@ Parts build_planar(std::span<const G> g, const G& a, const G& b) {
     const Groups groups = angular_sort(items, ord, [](const G&) { return [](const G&, const G&) { return false; }; });
     const std::size_t m = groups.size();
     assert(m >= 2);
-    auto rep = [&](std::size_t group) -> const G& { return items[groups[group % m].first].v; };
+    auto rep_item = [&](std::size_t group) -> const Item<G>& { return items[groups[group % m].first]; };
+    auto rep = [&](std::size_t group) -> const G& { return rep_item(group).v; };
     std::size_t wide = m, flat = m;
     for (std::size_t i = 0; i < m; ++i) {
-        const int c = gap_vs_pi(rep(i), rep(i + 1), ord);
+        const int c = gap_vs_pi(rep_item(i), rep_item(i + 1), ord);
         if (c > 0) wide = i;
         if (c == 0 && flat == m) flat = i;
     }
@@ -445,7 +491,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
         witness = &g[i];
         witness_side = det_sign(p, r, g[i]);
     }
-    AngularOrder<G> ord{AngularOrder<G>::Mode::Pivot, 0, p, r, *witness};
+    AngularOrder<G> ord{AngularOrder<G>::Mode::Pivot, 0, p, r, *witness, rounding(p)};
     // An orthonormal frame (e1, e2) of the quotient by D p, e1 along D r: hints for the keys.
     const Vec3 ph = hint(p, scale).normalized();
     const Vec3 hr = hint(r, scale);
@@ -456,24 +502,16 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     items.reserve(g.size() - reference);
     // Each generator's half around p from one determinant det(p, r, x); only where it is zero
     // is x tested for being parallel to p (dropped) or told from -r by the witness. (Of exact
-    // vectors, p's and r's approximations are made once for all x.)
-    [[maybe_unused]] ExactVector::Approximation p_approx, r_approx;
-    if constexpr (std::is_same_v<G, ExactVector>) {
-        p_approx = p.approximation();
-        r_approx = r.approximation();
-    }
-    const auto det_p_r = [&](const G& x) {
-        if constexpr (std::is_same_v<G, ExactVector>) {
-            return det_sign(p, r, x, p_approx, r_approx, x.approximation());
-        } else {
-            return det_sign(p, r, x);
-        }
-    };
+    // vectors, the approximations are made once: p's and r's for all x, each x's for this and
+    // the determinants of the sort and the scan.)
+    const RoundingOf<G>& p_rounding = ord.pivot_rounding;
+    const RoundingOf<G> r_rounding = rounding(r);
     for (std::size_t i = reference; i < g.size(); ++i) {
         if (i == pivot) continue;
         int half = 0;
+        const RoundingOf<G> x_rounding = i == reference ? r_rounding : rounding(g[i]);
         if (i != reference) {  // r itself: along r, no det(p, r, r)
-            const Sign s = det_p_r(g[i]);
+            const Sign s = det_rounded(p, r, g[i], p_rounding, r_rounding, x_rounding);
             if (s != Sign::Zero) {
                 half = s == Sign::Positive ? 1 : 3;
             } else if (parallel(p, g[i])) {
@@ -484,7 +522,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
             }
         }
         const Vec3 u = hint(g[i], scale);
-        items.push_back({g[i], pseudo_angle(u.dot(e1), u.dot(e2), half), static_cast<int>(i), half});
+        items.push_back({g[i], pseudo_angle(u.dot(e1), u.dot(e2), half), static_cast<int>(i), half, x_rounding});
     }
     // Ties: nearer to p (along the great circle through p) first. In the plane of p and u,
     // u is nearer than v iff u lies inside cone(p, v). The items of a group lie on one half-plane
@@ -500,10 +538,11 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     };
     const Groups groups = angular_sort(items, ord, tie_order);
     const std::size_t m = groups.size();
-    auto rep = [&](std::size_t group) -> const G& { return items[groups[group % m].first].v; };
+    auto rep_item = [&](std::size_t group) -> const Item<G>& { return items[groups[group % m].first]; };
+    auto rep = [&](std::size_t group) -> const G& { return rep_item(group).v; };
     std::size_t wide = m, flat = m;
     for (std::size_t i = 0; i < m; ++i) {
-        const int c = m == 1 ? 1 : gap_vs_pi(rep(i), rep(i + 1), ord);
+        const int c = m == 1 ? 1 : gap_vs_pi(rep_item(i), rep_item(i + 1), ord);
         if (c > 0) wide = i;
         if (c == 0 && flat == m) flat = i;
     }
@@ -554,12 +593,20 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     // The stack holds positions in `items` (-1 for p), which the scan visits in order.
     ScratchVector<std::int64_t> stack({-1}, &scratch);
     auto at = [&](std::int64_t k) -> const G& { return k < 0 ? p : items[static_cast<std::size_t>(k)].v; };
+    auto rounding_at = [&](std::int64_t k) -> const RoundingOf<G>& {
+        return k < 0 ? p_rounding : items[static_cast<std::size_t>(k)].rounding;
+    };
+    // det(stack[-2], stack[-1], x)
+    auto turn_to = [&](const G& x, const RoundingOf<G>& rx) {
+        const std::int64_t a = stack[stack.size() - 2], b = stack.back();
+        return det_rounded(at(a), at(b), x, rounding_at(a), rounding_at(b), rx);
+    };
     // Generators along one ray are next to each other in the scan (one angle, and a tie in the
     // group's order); the one given first stands for them.
     auto push = [&](std::size_t k) {
         const G& x = items[k].v;
         while (stack.size() >= 2) {
-            const Sign turn = det_sign(at(stack[stack.size() - 2]), at(stack.back()), x);
+            const Sign turn = turn_to(x, items[k].rounding);
             if (turn == Sign::Positive) break;
             const std::int64_t top = stack.back();
             if (turn == Sign::Zero && top >= 0 && parallel(items[static_cast<std::size_t>(top)].v, x) &&
@@ -575,7 +622,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
         const auto [b, e] = groups[(wide + t) % m];
         for (std::size_t i = b; i < e; ++i) push(i);
     }
-    while (stack.size() >= 3 && det_sign(at(stack[stack.size() - 2]), at(stack.back()), p) != Sign::Positive) {
+    while (stack.size() >= 3 && turn_to(p, p_rounding) != Sign::Positive) {
         stack.pop_back();
     }
     assert(stack.size() >= 3);

@@ -412,7 +412,10 @@ private:
         int sign = 0;
     };
     static Sign side(const Plane& p, const ExactVector& y, const ExactVector::Approximation& ry) {
-        if (p.sign == 0) return dot_sign(p.h, y, p.rh, ry);
+        if (p.sign == 0) {
+            Sign s = Sign::Zero;
+            return dot_sign_by_approximations(p.rh, ry, s) ? s : dot_sign(p.h, y, p.rh, ry);
+        }
         const Sign s = det_sign(p.u, p.v, y, p.ru, p.rv, ry);
         return p.sign > 0 ? s : -s;
     }
@@ -434,7 +437,9 @@ private:
         const std::vector<Exact3>& closure = *cell_->closure;
         const std::vector<ExactVector::Approximation>& rounded = filters_->of(closure);
         for (std::size_t i = 0; i < closure.size(); ++i) {
-            if (dot_sign(p.pulled, closure[i], p.rpulled, rounded[i]) == Sign::Negative) return false;
+            Sign s = Sign::Zero;  // (the filter inline: half a million tests on the tangent family of 10^4 contacts)
+            if (!dot_sign_by_approximations(p.rpulled, rounded[i], s)) s = dot_sign(p.pulled, closure[i], p.rpulled, rounded[i]);
+            if (s == Sign::Negative) return false;
         }
         return true;
     }

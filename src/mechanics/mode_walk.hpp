@@ -30,7 +30,9 @@ struct WalkCell {
     std::size_t index = 0;
     /// The face (an index into the walk's faces, A.faces() order).
     std::size_t face = 0;
-    /// Generators of the cell's closure (rays; a line as +-).
+    /// Generators of the cell's closure (rays; a line as +-). Empty for the interior of a
+    /// full-dimensional A when there are contacts (no contact closed): that closure is A itself,
+    /// feasible_twists(), not listed again.
     const std::vector<Exact3>* closure = nullptr;
     /// The contacts closed on the face (N_j . xi = 0 there), increasing; every other contact
     /// separates ('s').

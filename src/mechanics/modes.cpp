@@ -64,9 +64,17 @@ public:
             return gens;
         };
         if (dimension == 3) {
-            // The interior of a full-dimensional A: no contact is closed there. The sum of the
-            // rays is interior (pointed cone, wedge x line, half-space); for R^3 any vector.
+            // The interior of a full-dimensional A: no contact is closed there, so every letter
+            // is 's' and the cell's closure is A itself. With contacts, no closure is given (the
+            // callers take A for it: 10^5 rays on the tangent family, which `rays` then leaves
+            // out); with none, A is R^3 and the cell is the all-f mode, xi = 0 included: its
+            // closure is A's lines, +- each. The sum of the rays is interior (pointed cone,
+            // wedge x line, half-space); for R^3 any vector.
             assert(closed_.empty());
+            if (contacts_ > 0) {
+                emit(index_of(false), {}, true);
+                return;
+            }
             Q3 inside = rays.empty() ? lineality.front() : rays.front();
             for (std::size_t i = 1; i < rays.size(); ++i) inside = inside + rays[i];
             single(inside, with_lines(rays));
@@ -117,10 +125,13 @@ private:
               const Q3* representative = nullptr) {
         closure_ = std::move(closure);
 #ifndef NDEBUG
-        // The letters kept up to date along the walk are the signs at the cell's representative.
-        const std::vector<char> walked = letters_;
-        direct(representative ? *representative : rep_of(closure_));
-        assert(walked == letters_);
+        // The letters kept up to date along the walk are the signs at the cell's representative
+        // (none to check for the interior of A, which has no letter but 's').
+        if (representative || !closure_.empty()) {
+            const std::vector<char> walked = letters_;
+            direct(representative ? *representative : rep_of(closure_));
+            assert(walked == letters_);
+        }
 #else
         (void)representative;
 #endif
@@ -453,8 +464,11 @@ void ModeWalk::run_faces(std::size_t begin, std::size_t end, const Progress& pro
         const Face& face = faces_[i];
         std::size_t next = 1;
         if (face.dimension > 0) {
+            // (The interior of A needs its rays only when there is no contact: FaceWalk::run.)
             std::vector<Q3> rays;
-            for (int r : face.rays) rays.push_back(a_.rays()[static_cast<std::size_t>(r)].exact());
+            if (face.dimension < 3 || normals_.empty()) {
+                for (int r : face.rays) rays.push_back(a_.rays()[static_cast<std::size_t>(r)].exact());
+            }
             // A's own vectors for the face's generators: filtered signs against them.
             const auto a_ray = [&](std::size_t k) { return &a_.rays()[static_cast<std::size_t>(face.rays[k])]; };
             const ExactVector* ray = face.dimension == 1 && face.rays.size() == 1 ? a_ray(0) : nullptr;

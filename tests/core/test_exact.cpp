@@ -176,7 +176,7 @@ TEST(Dyadic, PowerOfTwoScalingIsLdexp) {
 TEST(ExactVector, PredicatesAgreeWithGmpOnHardCases) {
     testing::Random r(4);
     exact_stats() = {};
-    int zeros = 0;
+    int zeros = 0, decided_by_filter = 0;
     for (int i = 0; i < 20000; ++i) {
         // Three forces through one point (exactly: the wrenches are dependent) or nearly.
         const double scale = std::ldexp(1.0, r.integer(-40, 40));
@@ -201,12 +201,26 @@ TEST(ExactVector, PredicatesAgreeWithGmpOnHardCases) {
         ASSERT_EQ(to_int(f.dot_sign(c)), expected);
         ASSERT_EQ(to_int(dot_sign(f, w3)), expected);  // against c's Dyadic coordinates as they are
         ASSERT_EQ(to_int(dot_sign(f, w3, approximation(w3))), expected);  // with their rounding kept
+        // The filter alone (inline, as the walk's plane tests call it): right whenever it decides,
+        // against c (nearly or exactly on f's plane) and against a force through a point apart.
+        const Vec2 q(r.uniform(-1, 1) * scale, r.uniform(-1, 1) * scale);
+        const Exact3 w4 = wrench_through(exact(q), exact(d1));
+        for (const auto& [w, sign] : {std::pair{w3, expected},
+                                      std::pair{w4, sgn(reference::dot(reference::cross(qa, qb), to_q(ExactVector::from_exact(w4))))}}) {
+            Sign by_filter = Sign::Zero;
+            if (dot_sign_by_approximations(f.approximation(), approximation(w), by_filter)) {
+                ASSERT_EQ(to_int(by_filter), sign) << i;
+                ++decided_by_filter;
+            }
+        }
         ASSERT_EQ(to_int(dot_sign(f, w2, approximation(w2))), sgn(reference::dot(reference::cross(qa, qb), qb)));
         ASSERT_EQ(to_int(dot_sign(f, ExactVector::cross(b, c))), sgn(reference::dot(reference::cross(qa, qb), reference::cross(qb, qc))));
         ASSERT_EQ(to_int(minor_sign(a, c, 0, 2)), sgn(qa[0] * qc[2] - qa[2] * qc[0]));
         ASSERT_EQ(parallel(a, c), reference::is_zero(reference::cross(qa, qc)));
     }
     EXPECT_GT(zeros, 5000);
+    EXPECT_GT(decided_by_filter, 15000);
+    EXPECT_LT(decided_by_filter, 40000 - zeros);  // (never an exact zero)
     EXPECT_GT(exact_stats().filtered, 20000);
     EXPECT_GT(exact_stats().exact, 5000);
 }

@@ -14,6 +14,7 @@
 /// (docs/robustness.md).
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 
@@ -154,6 +155,32 @@ private:
     std::int16_t approx_shift_ = kNoShift;
     void keep_approximation_shift(const Vec3& base);
 };
+
+namespace detail {
+/// The unit roundoff, and the absolute floor of the approximations' error bounds.
+inline constexpr double kApproximationUnit = 0x1p-53;
+inline constexpr double kApproximationFloor = 0x1p-1000;
+}  // namespace detail
+
+/// The sign of a . b from the approximations of a and b alone: true (and the sign in `out`)
+/// when their error bounds decide it, false when only exact arithmetic can. It is the filter
+/// of every dot_sign below, here inline for a loop that tests one plane against many vectors
+/// and calls dot_sign only where this fails (the signs such a loop decides itself are not
+/// counted in exact_stats()).
+[[nodiscard]] inline bool dot_sign_by_approximations(const ExactVector::Approximation& pa,
+                                                     const ExactVector::Approximation& pb, Sign& out) {
+    constexpr double u = detail::kApproximationUnit;
+    const Vec3 &a = pa.approx, &b = pb.approx;
+    const double p0 = a.x() * b.x(), p1 = a.y() * b.y(), p2 = a.z() * b.z();
+    const double value = p0 + p1 + p2;
+    const double permanent0 = std::fabs(p0) + std::fabs(p1) + std::fabs(p2);
+    const double permanent1 = (a.cwiseAbs() + pa.err).dot(b.cwiseAbs() + pb.err);
+    const double bound =
+        (permanent1 - permanent0 + 4 * u * permanent0 + 10 * u * permanent1 + detail::kApproximationFloor) * (1 + 0x1p-40);
+    if (!(std::fabs(value) > bound)) return false;
+    out = sign_of(value);
+    return true;
+}
 
 /// The exact sign of a . b.
 [[nodiscard]] Sign dot_sign(const ExactVector& a, const ExactVector& b);
