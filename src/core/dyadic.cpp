@@ -137,23 +137,10 @@ Dyadic Dyadic::from_limbs(Sign sign, std::span<const Limb> magnitude, std::int64
     return d;
 }
 
-Dyadic::Dyadic(const Dyadic& other) : exponent_(other.exponent_), sign_(other.sign_), inline_{} {
+void Dyadic::copy_from_heap(const Dyadic& other) {
     Limb* p = reserve(other.size_);
     std::copy(other.data(), other.data() + other.size_, p);
     size_ = other.size_;
-}
-
-Dyadic::Dyadic(Dyadic&& other) noexcept
-    : exponent_(other.exponent_), size_(other.size_), capacity_(other.capacity_), sign_(other.sign_) {
-    if (other.capacity_ > kInline) {
-        heap_ = other.heap_;
-        other.capacity_ = kInline;
-    } else {
-        std::copy(other.inline_, other.inline_ + kInline, inline_);
-    }
-    other.size_ = 0;
-    other.sign_ = 0;
-    other.exponent_ = 0;
 }
 
 Dyadic& Dyadic::operator=(const Dyadic& other) {
@@ -183,10 +170,6 @@ Dyadic& Dyadic::operator=(Dyadic&& other) noexcept {
     other.sign_ = 0;
     other.exponent_ = 0;
     return *this;
-}
-
-Dyadic::~Dyadic() {
-    if (capacity_ > kInline) delete[] heap_;
 }
 
 void Dyadic::normalize() {

@@ -450,21 +450,20 @@ private:
             return side(p, edge, edges_.rounded(j, slot)) != Sign::Positive;
         });
     }
-    bool holds_all(const Plane& p) const {
-        if (!holds_images(p)) return false;
-        for (std::size_t t = 0; t < cell_->closed.size(); ++t) {
-            if (!holds_position(p, t)) return false;
+    // h holds the cell's generators other than the twists' images: every closed contact's, or
+    // the reduced ones of a grouped face (the same cone).
+    bool holds_edges(const Plane& p) const {
+        if (!groups_) {
+            for (std::size_t t = 0; t < cell_->closed.size(); ++t) {
+                if (!holds_position(p, t)) return false;
+            }
+            return true;
         }
-        return true;
+        return std::all_of(groups_->begin(), groups_->end(),
+                           [&](const Generator& g) { return side(p, *g.vector, g.rounded) != Sign::Negative; });
     }
-
-    // holds_all, by the reduced generators on a grouped face (the same cone).
-    bool holds_cell(const Plane& p) const {
-        if (!groups_) return holds_all(p);
-        return holds_images(p) && std::all_of(groups_->begin(), groups_->end(), [&](const Generator& g) {
-                   return side(p, *g.vector, g.rounded) != Sign::Negative;
-               });
-    }
+    // h holds every generator of the cell's E.
+    bool holds_cell(const Plane& p) const { return holds_images(p) && holds_edges(p); }
 
     char letter_of_contact(int j) const {
         const auto it = std::lower_bound(cell_->closed.begin(), cell_->closed.end(), j);
@@ -505,7 +504,7 @@ private:
             if (holds && current_valid_ && !cell_->first && cell_->face == last_face_) {
                 for (int t : cell_->changed) holds = holds && holds_position(*current_, static_cast<std::size_t>(t));
             } else if (holds) {
-                holds = holds_cell(*current_);
+                holds = holds_edges(*current_);  // (the images were checked above)
             }
             current_valid_ = holds;
             if (holds) return false;

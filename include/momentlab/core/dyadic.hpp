@@ -8,7 +8,7 @@
 /// I + m |c|^2, a determinant of such) is computed exactly, with no overflow, underflow or
 /// rounding, and no division (there is none in momentlab's exact paths). This is momentlab's
 /// own arithmetic: the library needs no GMP, and the same code runs natively and in
-/// WebAssembly (docs/robustness.md, "Exact numbers"). Magnitudes of up to four 64-bit limbs
+/// WebAssembly (docs/robustness.md, "Exact numbers"). Magnitudes of up to six 64-bit limbs
 /// live inside the object; larger ones on the heap.
 
 #include <cstdint>
@@ -31,11 +31,34 @@ public:
     /// The integer v, exactly.
     static Dyadic from_integer(std::int64_t v);
 
-    Dyadic(const Dyadic& other);
-    Dyadic(Dyadic&& other) noexcept;
+    // Copies, moves and destruction inline for the magnitudes held in the object (the exact
+    // paths copy Dyadic numbers by the hundred thousand), out of line for those on the heap.
+    Dyadic(const Dyadic& other) : exponent_(other.exponent_), sign_(other.sign_), inline_{} {
+        if (other.size_ > kInline) {
+            copy_from_heap(other);
+            return;
+        }
+        const Limb* from = other.data();
+        for (std::uint32_t i = 0; i < other.size_; ++i) inline_[i] = from[i];
+        size_ = other.size_;
+    }
+    Dyadic(Dyadic&& other) noexcept
+        : exponent_(other.exponent_), size_(other.size_), capacity_(other.capacity_), sign_(other.sign_) {
+        if (other.capacity_ > kInline) {
+            heap_ = other.heap_;
+            other.capacity_ = kInline;
+        } else {
+            for (std::uint32_t i = 0; i < kInline; ++i) inline_[i] = other.inline_[i];
+        }
+        other.size_ = 0;
+        other.sign_ = 0;
+        other.exponent_ = 0;
+    }
     Dyadic& operator=(const Dyadic& other);
     Dyadic& operator=(Dyadic&& other) noexcept;
-    ~Dyadic();
+    ~Dyadic() {
+        if (capacity_ > kInline) delete[] heap_;
+    }
 
     /// The exact sign.
     [[nodiscard]] Sign sign() const { return sign_of_int(sign_); }
@@ -84,6 +107,8 @@ private:
     [[nodiscard]] const Limb* data() const { return capacity_ > kInline ? heap_ : inline_; }
     // Room for n limbs (contents not kept); size_ untouched.
     Limb* reserve(std::uint32_t n);
+    // The copy constructor's path for a magnitude beyond kInline limbs.
+    void copy_from_heap(const Dyadic& other);
     // Strips leading zero limbs and trailing zero bits (into the exponent); zero becomes 0.
     void normalize();
     friend Dyadic add_magnitudes(const Dyadic& a, const Dyadic& b, bool subtract);
