@@ -141,11 +141,7 @@ ExactVector exact_normal_towards(const G& r1, const G& r2, int k) {
     const ExactVector h = axis_cross(r1, k);
     return cross_component_sign(r1, r2, k) == Sign::Positive ? h.negated() : h;
 }
-// ---------------------------------------------------------------------------------------------
-// Angular order around an axis. For the plane case the axis is a coordinate direction e_k
-// transversal to the plane (orientation = sign of (u x v)[k]); for the quotient by a pivot p it
-// is p itself (orientation = det(p, u, v)). `half` places a vector in one of four classes
-// relative to a reference direction r: 0 along r, 1 strictly left, 2 along -r, 3 strictly right.
+
 // An exact vector's approximation, kept beside it where it meets many determinants (doubles need
 // none). Its default has an infinite error bound: the exact path, never a wrong filter.
 struct NoRounding {};
@@ -179,6 +175,11 @@ Sign det_rounded(const G& a, const G& b, const G& c, const RoundingOf<G>& ra, co
     }
 }
 
+// ---------------------------------------------------------------------------------------------
+// Angular order around an axis. For the plane case the axis is a coordinate direction e_k
+// transversal to the plane (orientation = sign of (u x v)[k]); for the quotient by a pivot p it
+// is p itself (orientation = det(p, u, v)). `half` places a vector in one of four classes
+// relative to a reference direction r: 0 along r, 1 strictly left, 2 along -r, 3 strictly right.
 template <class G>
 struct AngularOrder {
     enum class Mode { PlaneAxis, Pivot } mode;

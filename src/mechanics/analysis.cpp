@@ -411,11 +411,16 @@ private:
         ExactVector::Approximation rh, rpulled, ru, rv;
         int sign = 0;
     };
+    // dot_sign(a, b) with the filter inline: the planes' tests make half a million of them on
+    // the tangent family of 10^4 contacts, nearly all decided by the filter.
+    template <class B>
+    static Sign dot_filtered(const ExactVector& a, const B& b, const ExactVector::Approximation& pa,
+                             const ExactVector::Approximation& pb) {
+        Sign s = Sign::Zero;
+        return dot_sign_by_approximations(pa, pb, s) ? s : dot_sign(a, b, pa, pb);
+    }
     static Sign side(const Plane& p, const ExactVector& y, const ExactVector::Approximation& ry) {
-        if (p.sign == 0) {
-            Sign s = Sign::Zero;
-            return dot_sign_by_approximations(p.rh, ry, s) ? s : dot_sign(p.h, y, p.rh, ry);
-        }
+        if (p.sign == 0) return dot_filtered(p.h, y, p.rh, ry);
         const Sign s = det_sign(p.u, p.v, y, p.ru, p.rv, ry);
         return p.sign > 0 ? s : -s;
     }
@@ -437,9 +442,7 @@ private:
         const std::vector<Exact3>& closure = *cell_->closure;
         const std::vector<ExactVector::Approximation>& rounded = filters_->of(closure);
         for (std::size_t i = 0; i < closure.size(); ++i) {
-            Sign s = Sign::Zero;  // (the filter inline: half a million tests on the tangent family of 10^4 contacts)
-            if (!dot_sign_by_approximations(p.rpulled, rounded[i], s)) s = dot_sign(p.pulled, closure[i], p.rpulled, rounded[i]);
-            if (s == Sign::Negative) return false;
+            if (dot_filtered(p.pulled, closure[i], p.rpulled, rounded[i]) == Sign::Negative) return false;
         }
         return true;
     }
