@@ -137,6 +137,32 @@ OracleCone from_halfspaces(const std::vector<QVec>& normals) {
 
 OracleCone from_halfspaces(const std::vector<Vec3>& normals) { return from_halfspaces(exact_all(normals)); }
 
+std::vector<std::pair<mpq_class, QVec>> hull_facets(const std::vector<Vec3>& points) {
+    init();
+    dd_MatrixPtr m = dd_CreateMatrix(static_cast<long>(points.size()), 4);
+    m->representation = dd_Generator;
+    m->numbtype = dd_Rational;
+    for (std::size_t r = 0; r < points.size(); ++r) {
+        dd_set_si(m->matrix[r][0], 1);  // a point, not a ray
+        for (int j = 0; j < 3; ++j) mpq_set(m->matrix[r][j + 1], mpq_class(points[r][j]).get_mpq_t());
+    }
+    dd_PolyhedraPtr poly = convert(m);
+    dd_MatrixPtr h = dd_CopyInequalities(poly);
+    std::vector<std::pair<mpq_class, QVec>> out;
+    bool equations = false;
+    for (long r = 0; r < h->rowsize; ++r) {
+        const QVec a = row(h, r);
+        if (is_zero(a)) continue;  // 1 >= 0
+        equations = equations || set_member(r + 1, h->linset);
+        out.emplace_back(mpq_class(h->matrix[r][0]), a);
+    }
+    dd_FreeMatrix(h);
+    dd_FreePolyhedra(poly);
+    dd_FreeMatrix(m);
+    if (equations) out.clear();
+    return out;
+}
+
 bool same_span(const std::vector<QVec>& a, const std::vector<QVec>& b) {
     std::vector<QVec> both = a;
     both.insert(both.end(), b.begin(), b.end());

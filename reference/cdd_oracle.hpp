@@ -7,6 +7,7 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "exact_scene.hpp"
@@ -27,6 +28,10 @@ OracleCone from_generators(const std::vector<Vec3>& generators);
 /// {x : n . x >= 0 for all normals}, minimal V and H representations.
 OracleCone from_halfspaces(const std::vector<QVec>& normals);
 OracleCone from_halfspaces(const std::vector<Vec3>& normals);
+
+/// The facets of the convex hull of points (their doubles read as exact rationals): each as
+/// (b, a) with b + a . x >= 0 on the hull's side; none when the hull is not full-dimensional.
+std::vector<std::pair<mpq_class, QVec>> hull_facets(const std::vector<Vec3>& points);
 
 /// True when the span of `a` equals the span of `b` (exact ranks).
 bool same_span(const std::vector<QVec>& a, const std::vector<QVec>& b);

@@ -4,6 +4,7 @@
 #include <cdd.h>
 
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 
 namespace momentlab::oracle {
@@ -22,17 +23,17 @@ void set_row(dd_MatrixPtr m, long r, const QVec& a, int slack, int b, bool equal
     if (equal) set_addelem(m->linset, r + 1);
 }
 
-}  // namespace
-
-bool realisable(const std::vector<QVec>& n, const std::vector<QVec>& t, const std::string& labels) {
+// The LP of `realisable`: maximise a slack t <= 1 on the strict conditions; the twist it finds
+// when t > 0, or none. 'z' is N_j . xi = 0 alone (any sliding), used to prune.
+std::optional<QVec> interior_twist(const std::vector<QVec>& n, const std::vector<QVec>& t, const std::string& labels) {
     init();
     long rows = 1;  // t <= 1
     bool strict = false;
     for (char c : labels) {
-        rows += c == 's' ? 1 : 2;
-        strict = strict || c != 'f';
+        rows += c == 's' || c == 'z' ? 1 : 2;
+        strict = strict || (c != 'f' && c != 'z');
     }
-    if (!strict) return true;  // xi = 0
+    if (!strict) return QVec{0, 0, 0};  // xi = 0
     dd_MatrixPtr m = dd_CreateMatrix(rows, 5);
     m->representation = dd_Inequality;
     m->numbtype = dd_Rational;
@@ -41,6 +42,7 @@ bool realisable(const std::vector<QVec>& n, const std::vector<QVec>& t, const st
     for (std::size_t j = 0; j < labels.size(); ++j) {
         switch (labels[j]) {
             case 's': set_row(m, r++, n[j], -1, 0, false); break;
+            case 'z': set_row(m, r++, n[j], 0, 0, true); break;
             case 'f':
                 set_row(m, r++, n[j], 0, 0, true);
                 set_row(m, r++, t[j], 0, 0, true);
@@ -62,10 +64,27 @@ bool realisable(const std::vector<QVec>& n, const std::vector<QVec>& t, const st
     if (err != dd_NoError) throw std::runtime_error("cdd Matrix2LP failed");
     dd_LPSolve(lp, dd_DualSimplex, &err);
     if (err != dd_NoError) throw std::runtime_error("cdd LPSolve failed");
-    const bool ok = lp->LPS == dd_Optimal && mpq_sgn(lp->optvalue) > 0;
+    std::optional<QVec> out;
+    if (lp->LPS == dd_Optimal && mpq_sgn(lp->optvalue) > 0) {
+        out = QVec{mpq_class(lp->sol[1]), mpq_class(lp->sol[2]), mpq_class(lp->sol[3])};
+    }
     dd_FreeLPData(lp);
     dd_FreeMatrix(m);
-    return ok;
+    return out;
+}
+
+// The letter of contact j for the twist xi, from the definitions; 'x' when it penetrates.
+char letter_of(const QVec& n, const QVec& t, const QVec& xi) {
+    const int vn = sgn(reference::dot(n, xi)), vt = sgn(reference::dot(t, xi));
+    if (vn < 0) return 'x';
+    if (vn > 0) return 's';
+    return vt == 0 ? 'f' : (vt > 0 ? 'r' : 'l');
+}
+
+}  // namespace
+
+bool realisable(const std::vector<QVec>& n, const std::vector<QVec>& t, const std::string& labels) {
+    return interior_twist(n, t, labels).has_value();
 }
 
 bool applied_in_mode(const QMat& m, const std::vector<QVec>& n, const std::vector<QVec>& t,
@@ -122,19 +141,58 @@ bool applied_in_mode(const QMat& m, const std::vector<QVec>& n, const std::vecto
 }
 
 std::set<std::string> all_modes(const std::vector<QVec>& n, const std::vector<QVec>& t) {
+    // Depth-first over prefixes, each with a twist that realises it (the witness). A child whose
+    // letter the witness already has is realisable with the same twist; the others take one LP
+    // each, after one LP for N_j . xi = 0 alone, which rules out f, r and l together when the
+    // contact must separate. Every witness is checked against its letters exactly.
     std::set<std::string> out;
-    std::vector<std::string> stack = {""};
+    struct Node {
+        std::string prefix;
+        QVec xi;
+    };
+    std::vector<Node> stack = {{"", QVec{0, 0, 0}}};
     while (!stack.empty()) {
-        const std::string prefix = stack.back();
+        const Node node = stack.back();
         stack.pop_back();
-        if (prefix.size() == n.size()) {
-            out.insert(prefix);
+        const std::size_t j = node.prefix.size();
+        for (std::size_t k = 0; k < j; ++k) {
+            if (letter_of(n[k], t[k], node.xi) != node.prefix[k]) throw std::logic_error("all_modes: a witness does not realise its letters");
+        }
+        if (j == n.size()) {
+            out.insert(node.prefix);
             continue;
         }
-        for (char c : {'s', 'f', 'r', 'l'}) {
-            std::string next = prefix;
+        const auto extend = [&](char c, const QVec& xi) {
+            std::string next = node.prefix;
             next.push_back(c);  // (prefix + c trips GCC 12's -Wrestrict false positive)
-            if (realisable(n, t, next)) stack.push_back(next);
+            stack.push_back({std::move(next), xi});
+        };
+        const char own = letter_of(n[j], t[j], node.xi);
+        const auto with = [&](char c) {
+            std::string next = node.prefix;
+            next.push_back(c);
+            return next;
+        };
+        if (own == 's') {
+            extend('s', node.xi);
+        } else if (const auto xi = interior_twist(n, t, with('s'))) {
+            extend('s', *xi);
+        }
+        // f, r, l: all need N_j . xi = 0.
+        std::optional<QVec> on_plane;
+        if (own != 's' && own != 'x') {
+            on_plane = node.xi;
+        } else {
+            on_plane = interior_twist(n, t, with('z'));
+        }
+        if (!on_plane) continue;
+        const char free = letter_of(n[j], t[j], *on_plane);
+        for (char c : {'f', 'r', 'l'}) {
+            if (c == free) {
+                extend(c, *on_plane);
+            } else if (const auto xi = interior_twist(n, t, with(c))) {
+                extend(c, *xi);
+            }
         }
     }
     return out;

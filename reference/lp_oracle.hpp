@@ -21,7 +21,8 @@ using reference::QVec;
 bool realisable(const std::vector<QVec>& n, const std::vector<QVec>& t, const std::string& labels);
 
 /// Every realisable full labelling, by depth-first search over prefixes (a prefix that is not
-/// realisable has no realisable extension).
+/// realisable has no realisable extension), each prefix carried with a twist that realises it
+/// (checked exactly), so that the child with that twist's letter needs no LP.
 std::set<std::string> all_modes(const std::vector<QVec>& n, const std::vector<QVec>& t);
 
 /// True when the applied wrench e is in the closed set E of the mode `labels`: some twist xi

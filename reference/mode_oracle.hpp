@@ -57,4 +57,17 @@ inline bool exact_lp_quasi_static_in_mode(const Scene& scene, const std::string&
     return oracle::applied_in_mode(reference::QMat{zero, zero, zero}, c.n, c.t, generators, letters, e);
 }
 
+/// The oracle's answer to "which modes does e produce": every mode of `modes` (the brute-force
+/// list, exact_modes) whose closed E holds e, by one exact LP each, sorted by letters.
+inline std::vector<std::string> exact_answer(const Scene& scene, const std::set<std::string>& modes,
+                                             const reference::QVec& e, bool quasi_static) {
+    std::vector<std::string> out;
+    for (const std::string& letters : modes) {
+        const bool in = quasi_static ? exact_lp_quasi_static_in_mode(scene, letters, e)
+                                     : exact_lp_applied_in_mode(scene, letters, e);
+        if (in) out.push_back(letters);
+    }
+    return out;  // (a std::set iterates in sorted order)
+}
+
 }  // namespace momentlab::testing

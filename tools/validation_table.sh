@@ -2,8 +2,27 @@
 # Runs the validators (validation/) and writes their agreement table into docs/validation.md,
 # between the markers of the run: `standard` (the sizes `make test` runs) or `long`.
 # Usage: tools/validation_table.sh standard|long BUILD_DIR
+#        tools/validation_table.sh check ROWS_DIR
+# `check` compares the rows the validators wrote to ROWS_DIR/{lcp,box2d,cdd}.md (ctest runs them
+# at the sizes of `standard` with --markdown there) with the standard table in docs/validation.md,
+# so that the figures the page quotes are those the validators give; exits 1 on a difference.
 set -euo pipefail
 run=$1
+
+if [ "$run" = check ]; then
+    rows=$2
+    doc=$(dirname "$0")/../docs/validation.md
+    documented=$(awk '/<!-- validation:standard:begin/ { on = 1; next } /<!-- validation:standard:end/ { on = 0 }
+                      on && /^\| / && !/^\| engine \|/' "$doc")
+    measured=$(cat "$rows/lcp.md" "$rows/box2d.md" "$rows/cdd.md")
+    if [ "$documented" != "$measured" ]; then
+        echo "docs/validation.md's standard table differs from the validators' rows (make validate rewrites it):"
+        diff <(echo "$documented") <(echo "$measured") || true
+        exit 1
+    fi
+    echo "docs/validation.md's standard table: the validators' $(echo "$measured" | wc -l) rows, the same"
+    exit 0
+fi
 bin=$2/validation
 doc=docs/validation.md
 out=$2/validation-$run

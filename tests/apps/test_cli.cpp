@@ -23,8 +23,30 @@ struct Result {
     std::string out;
 };
 
+// A scratch directory of this process (removed at exit), so that two runs at once (the release
+// and the sanitizer builds' tests) never share a file.
+class Scratch {
+public:
+    Scratch() : dir_(std::filesystem::temp_directory_path() / ("momentlab-cli-" + std::to_string(::getpid()))) {
+        std::filesystem::create_directories(dir_);
+    }
+    ~Scratch() {
+        std::error_code ignored;
+        std::filesystem::remove_all(dir_, ignored);
+    }
+    [[nodiscard]] std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+private:
+    std::filesystem::path dir_;
+};
+
+std::string scratch(const std::string& name) {
+    static const Scratch dir;
+    return dir.path(name);
+}
+
 Result run(const std::string& args) {
-    const std::string cmd = std::string(MOMENTLAB_BIN) + " " + args + " 2>/tmp/momentlab_test_stderr";
+    const std::string cmd = std::string(MOMENTLAB_BIN) + " " + args + " 2>" + scratch("stderr");
     FILE* p = popen(cmd.c_str(), "r");
     std::string out;
     std::array<char, 4096> buf{};
@@ -34,7 +56,7 @@ Result run(const std::string& args) {
 }
 
 std::string stderr_text() {
-    std::ifstream in("/tmp/momentlab_test_stderr");
+    std::ifstream in(scratch("stderr"));
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
@@ -59,8 +81,8 @@ TEST(Cli, LabelPlainForFigure2) {
 }
 
 TEST(Cli, BadInputExitsTwoWithOneLineNamingTheField) {
-    std::ofstream("/tmp/momentlab_bad.json") << R"([{"type": "friction_cone", "point": [0, 0], "normal": [0, 1], "mu": -0.5}])";
-    const Result r = run("label /tmp/momentlab_bad.json");
+    std::ofstream(scratch("bad.json")) << R"([{"type": "friction_cone", "point": [0, 0], "normal": [0, 1], "mu": -0.5}])";
+    const Result r = run("label " + scratch("bad.json"));
     EXPECT_EQ(r.status, 2);
     const std::string err = stderr_text();
     EXPECT_NE(err.find("$[0].mu"), std::string::npos) << err;
@@ -70,9 +92,9 @@ TEST(Cli, BadInputExitsTwoWithOneLineNamingTheField) {
 }
 
 TEST(Cli, ModesJsonForThreeFloorContacts) {
-    std::ofstream("/tmp/momentlab_floor.json") << R"({"contacts": [{"point": [0, 0], "normal": [0, 1]},
+    std::ofstream(scratch("floor.json")) << R"({"contacts": [{"point": [0, 0], "normal": [0, 1]},
         {"point": [1, 0], "normal": [0, 1]}, {"point": [2, 0], "normal": [0, 1]}]})";
-    const Result r = run("modes /tmp/momentlab_floor.json --json");
+    const Result r = run("modes " + scratch("floor.json") + " --json");
     ASSERT_EQ(r.status, 0);
     auto modes = nlohmann::json::parse(r.out)["modes"].get<std::vector<std::string>>();
     std::vector<std::string> expected = {"fff", "sss", "fss", "ssf", "rss", "lss", "ssr", "ssl", "rrr", "lll"};
@@ -88,8 +110,8 @@ TEST(Cli, QueryJsonAndJsonLines) {
     auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["verdict"], "unique");
     EXPECT_EQ(j["modes"], nlohmann::json::array({"ff"}));
-    std::ofstream("/tmp/momentlab_wrenches.txt") << "[0, -9.81, -4.905]\n[20, -9.81, -5.105]\n\n[0, 9.81, 4.905]\n";
-    r = run("query " + scene + " --wrenches /tmp/momentlab_wrenches.txt");
+    std::ofstream(scratch("wrenches.txt")) << "[0, -9.81, -4.905]\n[20, -9.81, -5.105]\n\n[0, 9.81, 4.905]\n";
+    r = run("query " + scene + " --wrenches " + scratch("wrenches.txt"));
     ASSERT_EQ(r.status, 0);
     std::istringstream lines(r.out);
     std::vector<nlohmann::json> answers;
@@ -98,9 +120,9 @@ TEST(Cli, QueryJsonAndJsonLines) {
     EXPECT_EQ(answers[0]["modes"], nlohmann::json::array({"ff"}));
     EXPECT_EQ(answers[1]["modes"], nlohmann::json::array({"rr"}));  // 20 N along the base
     EXPECT_EQ(answers[2]["modes"], nlohmann::json::array({"ss"}));  // net force up through the centre
-    std::ofstream("/tmp/momentlab_bad_wrenches.txt") << "[1, 2]\n";
-    EXPECT_EQ(run("query " + scene + " --wrenches /tmp/momentlab_bad_wrenches.txt").status, 2);
-    EXPECT_NE(stderr_text().find("momentlab_bad_wrenches.txt:1"), std::string::npos) << stderr_text();
+    std::ofstream(scratch("bad_wrenches.txt")) << "[1, 2]\n";
+    EXPECT_EQ(run("query " + scene + " --wrenches " + scratch("bad_wrenches.txt")).status, 2);
+    EXPECT_NE(stderr_text().find(scratch("bad_wrenches.txt") + ":1"), std::string::npos) << stderr_text();
 }
 
 // A scene with too many modes to analyse (a cradle of 12,000 contacts: more than 12,000 modes
@@ -120,7 +142,7 @@ TEST(Cli, WrenchFilesOnSceneTooBigToAnalyseAnswerAsOneByOne) {
               << ", " << -(c * std::sin(t) + s * std::cos(t)) << "], \"mu\": 0.3}";
     }
     scene << "]}";
-    const std::string path = ::testing::TempDir() + "momentlab_cradle_12000.json";
+    const std::string path = scratch("cradle_12000.json");
     std::ofstream(path) << scene.str();
     const std::vector<std::string> wrenches = {"[0.1, 1, 0.2]", "[0.5, 2, 0.1]", "[2, 0.5, -0.4]", "[0.2, -1, 0.3]", "[0, 0, 1]"};
     std::vector<nlohmann::json> alone;
@@ -138,7 +160,7 @@ TEST(Cli, WrenchFilesOnSceneTooBigToAnalyseAnswerAsOneByOne) {
     int modes = 0;
     for (const nlohmann::json& a : alone) modes += static_cast<int>(a["modes"].size());
     EXPECT_GE(modes, 4);  // not every answer empty
-    const std::string file = ::testing::TempDir() + "momentlab_cradle_wrenches.txt";
+    const std::string file = scratch("cradle_wrenches.txt");
     // After the good lines: nothing, a wrench of two numbers, a line too long to read (2 MiB).
     const std::string endings[] = {"", "[1, 2]\n[0, 0, 1]\n", "[" + std::string(2 << 20, ' ') + "0, 0, 1]\n"};
     const std::string errors[] = {"", ":11: expected [fx, fy, tau]", ":11: a line longer than 1 MiB"};
@@ -156,7 +178,7 @@ TEST(Cli, WrenchFilesOnSceneTooBigToAnalyseAnswerAsOneByOne) {
         EXPECT_EQ(answers, alone) << "ending " << bad;
         if (bad) {
             const std::string err = stderr_text();
-            EXPECT_NE(err.find("momentlab_cradle_wrenches.txt" + errors[bad]), std::string::npos) << err;
+            EXPECT_NE(err.find("cradle_wrenches.txt" + errors[bad]), std::string::npos) << err;
             EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
         }
     }
@@ -174,12 +196,12 @@ TEST(Cli, BigWrenchFilesAreAnsweredOnceEachInOrder) {
     const char* expected[] = {"ff", "rr", "ss"};
     const int n = 60000;
     {
-        std::ofstream out("/tmp/momentlab_many_wrenches.txt");
+        std::ofstream out(scratch("many_wrenches.txt"));
         for (int i = 0; i < n; ++i) out << lines[i % 3];
     }
-    ASSERT_GE(std::filesystem::file_size("/tmp/momentlab_many_wrenches.txt"), 1u << 20);
+    ASSERT_GE(std::filesystem::file_size(scratch("many_wrenches.txt")), 1u << 20);
     for (const std::string env : {"", "GLIBC_TUNABLES=glibc.malloc.check=0 "}) {
-        const std::string cmd = env + MOMENTLAB_BIN + " query " + scene + " --wrenches /tmp/momentlab_many_wrenches.txt";
+        const std::string cmd = env + MOMENTLAB_BIN + " query " + scene + " --wrenches " + scratch("many_wrenches.txt");
         FILE* p = popen(cmd.c_str(), "r");
         std::string out;
         std::array<char, 4096> buf{};
@@ -227,12 +249,12 @@ TEST(Cli, AnalyzeJsonIsLaidOutAsDump) {
 }
 
 TEST(Cli, SceneErrorsNameTheField) {
-    std::ofstream("/tmp/momentlab_bad_scene.json") << R"({"body": {"mass": -1, "com": [0, 0], "inertia": 1},
+    std::ofstream(scratch("bad_scene.json")) << R"({"body": {"mass": -1, "com": [0, 0], "inertia": 1},
         "contacts": [{"point": [0, 0], "normal": [0, 1]}]})";
-    EXPECT_EQ(run("modes /tmp/momentlab_bad_scene.json").status, 2);
+    EXPECT_EQ(run("modes " + scratch("bad_scene.json")).status, 2);
     EXPECT_NE(stderr_text().find("$.body.mass"), std::string::npos) << stderr_text();
-    std::ofstream("/tmp/momentlab_bad_scene.json") << R"({"contacts": [{"point": [0, 0], "normal": [0, 0]}]})";
-    EXPECT_EQ(run("modes /tmp/momentlab_bad_scene.json").status, 2);
+    std::ofstream(scratch("bad_scene.json")) << R"({"contacts": [{"point": [0, 0], "normal": [0, 0]}]})";
+    EXPECT_EQ(run("modes " + scratch("bad_scene.json")).status, 2);
     EXPECT_NE(stderr_text().find("$.contacts[0].normal"), std::string::npos) << stderr_text();
 }
 
@@ -493,7 +515,7 @@ TEST_F(CliPictures, ForcesNeedABody) {
 // (of length 5) meet in its centre, and the forces through (0.1, 0.7) of the paper's Figure 1b
 // situation, exactly.
 TEST(Cli, ExactForTheSceneAsWritten) {
-    const std::string wheel = ::testing::TempDir() + "momentlab_wheel.json";
+    const std::string wheel = scratch("wheel.json");
     std::ofstream(wheel) << R"({"body":{"mass":1,"com":[0,0],"inertia":1},"contacts":[{"point":[5,0],"normal":[-5,0]},
         {"point":[3,4],"normal":[-3,-4]},{"point":[-3,-4],"normal":[3,4]}]})";
     Result r = run("modes " + wheel + " --json");
@@ -506,7 +528,7 @@ TEST(Cli, ExactForTheSceneAsWritten) {
     auto answer = nlohmann::json::parse(r.out)["modes"].get<std::vector<std::string>>();
     std::sort(answer.begin(), answer.end());
     EXPECT_EQ(answer, (std::vector<std::string>{"lll", "sll"}));
-    const std::string forces = ::testing::TempDir() + "momentlab_point.json";
+    const std::string forces = scratch("point.json");
     std::ofstream(forces) << R"([{"type":"force","point":[0.1,0.7],"direction":[0.3,0.7]},
         {"type":"force","point":[0.1,0.7],"direction":[-0.9,0.2]},{"type":"force","point":[0.1,0.7],"direction":[0.3,-0.8]}])";
     r = run("label " + forces + " --json --at 0.1 0.7");
@@ -564,9 +586,9 @@ TEST(Cli, TooLargePicturesSaySo) {
               << -std::cos(t + 0.2) << ", " << -std::sin(t + 0.2) << "]}";
     }
     scene << "]}";
-    const std::string path = ::testing::TempDir() + "momentlab_cradle.json";
+    const std::string path = scratch("cradle.json");
     std::ofstream(path) << scene.str();
-    const std::string png = ::testing::TempDir() + "momentlab_cradle.png";
+    const std::string png = scratch("cradle.png");
     std::filesystem::remove(png);
     Result r = run("draw " + path + " --what forces -o " + png);
     EXPECT_EQ(r.status, 2);
@@ -580,7 +602,7 @@ TEST(Cli, TooLargePicturesSaySo) {
 
 // Names are printed with their control characters escaped, so every answer line stays a line.
 TEST(Cli, ControlCharactersInNamesAreEscaped) {
-    const std::string path = ::testing::TempDir() + "momentlab_names.json";
+    const std::string path = scratch("names.json");
     std::ofstream(path) << R"({"contacts": [{"point": [0, 0], "normal": [0, 1], "name": "left\nfoot\u001b[31m"}]})";
     const Result r = run("modes " + path);
     ASSERT_EQ(r.status, 0);

@@ -4,7 +4,11 @@
 
 #include "../common/examples.hpp"
 
+#include <algorithm>
 #include <random>
+
+#include "cone_membership.hpp"
+#include "mode_oracle.hpp"
 
 #include "momentlab/planning/fixed_wrench.hpp"
 #include "momentlab/planning/comply.hpp"
@@ -117,34 +121,72 @@ TEST(FixedWrench, MagnitudesOfAWedge) {
     EXPECT_EQ(compare(one->lo, ratio(4, 3)), 0);
 }
 
-// The directions that work at some positive magnitude are exactly E + cone(-g): checked on random cones
-// and dyadic vectors against magnitudes() (members of the interior have a magnitude; vectors
-// with a magnitude are members).
-TEST(FixedWrench, ReachableDirectionsAreTheDirectionsWithAMagnitude) {
+reference::Q rational(const Magnitude& m) { return reference::to_q(m.num) / reference::to_q(m.den); }
+
+// On random cones of half-integer generators, against brute-force membership in exact rationals
+// (reference/cone_membership.hpp, no momentlab code): reachable_directions is cone(G) + cone(-g),
+// as a set; and magnitudes() gives exactly the lambda >= 0 with g + lambda u in cone(G): its ends
+// are members (closed), lambda a little below the low end (when > 0) and above the high end are
+// not, and the middle is; with no range, no lambda of a sweep is a member.
+TEST(FixedWrench, ReachableDirectionsAndMagnitudesAgreeWithBruteForceMembership) {
     std::mt19937 rng(7);
     std::uniform_int_distribution<int> coord(-4, 4);
     const auto v = [&] { return Vec3(coord(rng) / 2.0, coord(rng) / 2.0, coord(rng) / 2.0); };
-    int with = 0, without = 0;
+    int with = 0, without = 0, reachable = 0, unreachable = 0, bounded = 0, from_above_zero = 0;
     for (int trial = 0; trial < 200; ++trial) {
         const std::vector<Vec3> gens = {v(), v(), v()};
         const Cone e = Cone::from_generators(gens);
-        const Exact3 g = exact(v());
+        const Vec3 gd = v();
+        const Exact3 g = exact(gd);
         const Cone reach = reachable_directions(e, g);
+        std::vector<reference::QVec> q_gens, q_reach;
+        for (const Vec3& x : gens) q_gens.push_back(reference::q(x));
+        q_reach = q_gens;
+        q_reach.push_back(reference::neg(reference::q(gd)));
+        const auto member = [&](const reference::Q& lambda, const reference::QVec& u) {
+            return reference::in_cone(q_gens, reference::add(reference::q(gd), reference::scale(lambda, u)));
+        };
         for (int k = 0; k < 20; ++k) {
-            const Vec3 u = v();
-            const auto r = magnitudes(e, g, exact(u));  // a positive magnitude (0 is no push at all)
-            const bool has_magnitude = r && (!r->hi || r->hi->num.sign() == Sign::Positive);
-            if (has_magnitude) {
-                EXPECT_TRUE(reach.has(u));
-                ++with;
-            } else {
-                EXPECT_FALSE(reach.in_relative_interior(u) && reach.dimension() == 3);
+            const Vec3 ud = v();
+            const reference::QVec u = reference::q(ud);
+            const bool in_reach = reference::in_cone(q_reach, u);
+            EXPECT_EQ(reach.has(ud), in_reach) << "trial " << trial;
+            (in_reach ? reachable : unreachable) += 1;
+            const auto r = magnitudes(e, g, exact(ud));
+            if (!r) {
+                for (int l : {0, 1, 4, 16, 64}) EXPECT_FALSE(member(reference::Q(l, 4), u)) << "trial " << trial << " lambda " << l / 4.0;
                 ++without;
+                continue;
+            }
+            ++with;
+            const reference::Q lo = rational(r->lo);
+            EXPECT_GE(reference::sign(lo), 0);
+            EXPECT_TRUE(member(lo, u)) << "trial " << trial;
+            const reference::Q step(1, 1 << 20);
+            if (reference::sign(lo) > 0) {
+                EXPECT_FALSE(member(lo * (1 - step), u)) << "trial " << trial;
+                ++from_above_zero;
+            }
+            if (r->hi) {
+                const reference::Q hi = rational(*r->hi);
+                EXPECT_TRUE(member(hi, u)) << "trial " << trial;
+                EXPECT_TRUE(member((lo + hi) / 2, u)) << "trial " << trial;
+                EXPECT_FALSE(member(hi * (1 + step) + step, u)) << "trial " << trial;
+                ++bounded;
+            } else {
+                for (int l = 1; l <= 3; ++l) EXPECT_TRUE(member(lo + reference::Q(1 << (8 * l)), u)) << "trial " << trial;
             }
         }
     }
+    std::cout << "[FixedWrench] " << with << " pushes with magnitudes (" << bounded << " bounded, " << from_above_zero
+              << " from above 0), " << without << " without; " << reachable << " directions reachable, " << unreachable
+              << " not\n";
     EXPECT_GT(with, 100);
     EXPECT_GT(without, 100);
+    EXPECT_GT(bounded, 30);
+    EXPECT_GT(from_above_zero, 30);
+    EXPECT_GT(reachable, 100);
+    EXPECT_GT(unreachable, 100);
 }
 
 // plan push with gravity: the finger sticking on the block's rear face (edge 3) can slide it and
@@ -166,12 +208,26 @@ TEST(FixedWrench, PushPlanUnderGravityReportsMagnitudes) {
             found = true;
             EXPECT_EQ(c.verdict, PushVerdict::Feasible) << goal;
             ASSERT_TRUE(c.best && c.best_magnitudes) << goal;
-            // The best push at the middle of its magnitudes (or just past the start) gives the goal.
-            const Exact3 u = wrench_through(exact(c.best->point), exact(c.best->direction));
-            const double lo = c.best_magnitudes->lo.value();
-            const double l = c.best_magnitudes->hi ? (lo + c.best_magnitudes->hi->value()) / 2 : lo * 1.5;
-            const Vec3 e = to_double(*context.fixed + Dyadic(l) * u);
-            EXPECT_TRUE(m->applied.has(e)) << goal;
+            // The oracle (exact LP, the scene's raw numbers): gravity plus the best push, at its
+            // magnitudes' ends and middle (or past the start), is in E_goal; a little outside them it is not.
+            const reference::QVec gq = reference::wrench(reference::q(scene.body->com.x()), reference::q(scene.body->com.y()),
+                                                         reference::Q(0), reference::q(scene.body->mass) * reference::Q(-10));
+            const reference::QVec u = reference::wrench(reference::q(c.best->point.x()), reference::q(c.best->point.y()),
+                                                        reference::q(c.best->direction.x()), reference::q(c.best->direction.y()));
+            const auto in_goal = [&](const reference::Q& lambda) {
+                return testing::exact_lp_applied_in_mode(scene, goal, reference::add(gq, reference::scale(lambda, u)));
+            };
+            const reference::Q lo = rational(c.best_magnitudes->lo), step(1, 1 << 20);
+            EXPECT_TRUE(in_goal(lo)) << goal;
+            if (reference::sign(lo) > 0) EXPECT_FALSE(in_goal(lo * (1 - step))) << goal;
+            if (c.best_magnitudes->hi) {
+                const reference::Q hi = rational(*c.best_magnitudes->hi);
+                EXPECT_TRUE(in_goal((lo + hi) / 2)) << goal;
+                EXPECT_TRUE(in_goal(hi)) << goal;
+                EXPECT_FALSE(in_goal(hi * (1 + step))) << goal;
+            } else {
+                EXPECT_TRUE(in_goal(lo * 2 + 1)) << goal;
+            }
         }
         EXPECT_TRUE(found);
     }
@@ -203,9 +259,13 @@ TEST(FixedWrench, LowerDimensionalGoalsAreKnifeEdges) {
     EXPECT_NE(comply.verdict, CentreVerdict::Works);
 }
 
-// plan_comply with gravity: its label and verdict are those of E_goal + cone(-g), whose labels
-// compliance_labels gives: a centre works exactly when it is unlabelled there (block on the
-// table, rr, every quarter unit over [-2, 3] x [-2, 3]).
+// plan_comply with gravity: its label and verdict are those of E_goal + cone(-g), derived by hand.
+// Block on the table, rr: E_rr = cone{(1, 0, -1/4), (1/2, -1, 0), (1/2, -1, -1)} (M times the
+// translation along +x; the floor's forces n - mu t = (-1/2, 1) at (0, 0) and (1, 0), negated), and
+// -g = (0, 10, 5) (the weight 10 through (1/2, 1/4), negated). Their moments about c = (x, y),
+// tau - x fy + y fx: y - 1/4, x + y/2, x + y/2 - 1 and 5 - 10 x. The label is + where all four are
+// >= 0, - where all are <= 0, none elsewhere; a labelled centre fails when all are strictly of
+// its sign and is a boundary (a knife edge) otherwise. Every quarter unit over [-2, 3] x [-2, 3].
 TEST(FixedWrench, ComplianceLabelsFollowTheFixedWrench) {
     const Scene scene = testing::example_scene("block-on-table.json");
     const auto a = analyze(scene);
@@ -216,22 +276,28 @@ TEST(FixedWrench, ComplianceLabelsFollowTheFixedWrench) {
     ASSERT_NE(rr, nullptr);
     PlanContext context;
     context.fixed = gravity_wrench(*scene.body, Vec2(0.0, -10.0));
-    const Labels labels = compliance_labels(*rr, context);
-    int works = 0, fails = 0;
+    int counts[3] = {0, 0, 0};
     for (int i = -8; i <= 12; ++i) {
         for (int j = -8; j <= 12; ++j) {
-            const Vec2 c(i / 4.0, j / 4.0);
-            const ComplyPlan plan = plan_comply(*rr, c, context);
-            EXPECT_EQ(plan.label, labels.at(c)) << c.transpose();
-            if (plan.label == Label::None) {
-                EXPECT_EQ(plan.verdict, CentreVerdict::Works) << c.transpose();
-            }
-            if (plan.verdict == CentreVerdict::Works) ++works;
-            if (plan.verdict == CentreVerdict::Fails) ++fails;
+            const double x = i / 4.0, y = j / 4.0;  // (the moments below are exact in doubles)
+            const double moments[] = {y - 0.25, x + y / 2, x + y / 2 - 1, 5 - 10 * x};
+            const bool nonneg = std::all_of(std::begin(moments), std::end(moments), [](double m) { return m >= 0; });
+            const bool nonpos = std::all_of(std::begin(moments), std::end(moments), [](double m) { return m <= 0; });
+            const bool pos = std::all_of(std::begin(moments), std::end(moments), [](double m) { return m > 0; });
+            const bool neg = std::all_of(std::begin(moments), std::end(moments), [](double m) { return m < 0; });
+            const Label label = nonneg && nonpos ? Label::Both : nonneg ? Label::Plus : nonpos ? Label::Minus : Label::None;
+            const CentreVerdict verdict = label == Label::None ? CentreVerdict::Works
+                                          : pos || neg         ? CentreVerdict::Fails
+                                                               : CentreVerdict::Boundary;
+            const ComplyPlan plan = plan_comply(*rr, Vec2(x, y), context);
+            EXPECT_EQ(plan.label, label) << x << ", " << y;
+            EXPECT_EQ(plan.verdict, verdict) << x << ", " << y;
+            ++counts[static_cast<int>(verdict)];
         }
     }
-    EXPECT_GT(works, 10);
-    EXPECT_GT(fails, 10);
+    EXPECT_GT(counts[static_cast<int>(CentreVerdict::Works)], 10);
+    EXPECT_GT(counts[static_cast<int>(CentreVerdict::Fails)], 10);
+    EXPECT_GT(counts[static_cast<int>(CentreVerdict::Boundary)], 5);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Check the exact oracle (oracle.py) against the momentlab command-line tool.
 
-Not a pytest test: a script that validates the oracle itself.  For the bundled example
+A script that validates the oracle itself; tests/python/test_oracle.py runs it at small sizes
+(`make test`), bigger runs are by hand.  For the bundled example
 scenes that list their contacts, for random scenes (1-4 contacts) and for random scenes
 with mu_kinetic > mu (where wrenches that produce no mode are common), each written to a
 temporary file, it compares

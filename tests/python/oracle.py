@@ -71,6 +71,11 @@ def cross(p, q) -> Fraction:
     return p[0] * q[1] - p[1] * q[0]
 
 
+def cross3(u, v) -> tuple:
+    """The cross product of two 3-vectors."""
+    return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+
+
 def dot(u, v) -> Fraction:
     return sum((a * b for a, b in zip(u, v)), Fraction(0))
 

@@ -1,4 +1,6 @@
-// out/web/momentlab.mjs in node against the CLI (docs/web.md): the same library compiled twice
+// out/web/momentlab.mjs in node (docs/web.md): against the answers the exact oracle of
+// tests/python/oracle.py wrote to tests/web/oracle_fixtures.json (modes, queries, tilt and spring
+// arcs, push cases with no solution), and against the CLI: the same library compiled twice
 // (native and WebAssembly, both on momentlab's own exact arithmetic, no GMP) must give the same
 // modes and the same answers to every wrench, on the kernel's hard cases (exactly concurrent
 // normals, parallel and opposed normals, repeated points, dyadic boundary wrenches) and on random
@@ -172,6 +174,96 @@ test('closure and the quasi-static model equal the CLI', () => {
     wrenches.forEach((w, i) => assert.deepEqual(a.query(w), answers[i]));
     a.delete();
   }
+});
+
+// Against the exact oracle of tests/python/oracle.py (Fractions, no momentlab code), through the
+// answers it wrote to tests/web/oracle_fixtures.json (tests/web/oracle_fixtures.py): modes,
+// answers and verdicts of every wrench; tilt and compliance arcs probed at 48 angles (the goal
+// alone inside a unique arc, the goal and another inside a shared one, the goal inside the union,
+// no goal outside it; angles within 1e-9 of an end left out); push cases with no solution ("no")
+// given no sampled push of their W that produces the goal. (The module has no query margins and
+// no push bands along a line: those are checked in the CLI and Python tests only.)
+const fixtures = JSON.parse(readFileSync(join(ROOT, 'tests/web/oracle_fixtures.json'), 'utf8'));
+const SLACK = 1e-9;
+
+function within(angle, arcs, slack) {
+  return arcs.some(([a, b]) => [angle, angle + 2 * Math.PI, angle - 2 * Math.PI].some((t) => a - slack <= t && t <= b + slack));
+}
+
+// One plan of directions (a tilt, or a spring through a centre) against the oracle's modes at each angle.
+function checkArcs(plan, goal, answers, counts, what) {
+  const unique = plan.unique || [], shared = plan.shared || [], union = plan.intervals;
+  fixtures.angles.forEach((angle, k) => {
+    const got = answers[k], where = `${what}, angle ${angle}: oracle ${got}; plan ${JSON.stringify(plan)}`;
+    const near = [...unique, ...shared, ...union].some(([a, b]) => [a, b].some((end) =>
+      [angle, angle + 2 * Math.PI, angle - 2 * Math.PI].some((t) => Math.abs(t - end) <= SLACK)));
+    if (near) {
+      counts.near += 1;
+    } else if (within(angle, unique, -SLACK)) {
+      assert.deepEqual(got, [goal], where);
+      counts.unique += 1;
+    } else if (within(angle, shared, -SLACK)) {
+      assert.ok(got.includes(goal) && got.length > 1, where);
+      counts.shared += 1;
+    } else if (within(angle, union, -SLACK)) {
+      assert.ok(got.includes(goal), where);
+      counts.union += 1;
+    } else {
+      assert.ok(!got.includes(goal), where);
+      counts.outside += 1;
+    }
+  });
+}
+
+test('modes, answers and verdicts: the exact oracle\'s', () => {
+  let queries = 0, several = 0;
+  for (const f of fixtures.scenes) {
+    const text = JSON.stringify(f.scene);
+    const a = ml.analyze(text);
+    try {
+      assert.deepEqual([...a.modes].sort(), f.modes, text);
+      const wrenches = f.queries.map((q) => q.wrench);
+      const batch = a.queryBatch(wrenches);
+      f.queries.forEach((q, i) => {
+        assert.deepEqual([...a.query(q.wrench)].sort(), q.modes, `${text} ${JSON.stringify(q.wrench)}`);
+        assert.equal(a.verdict(q.wrench), ['inconsistent', 'unique', 'ambiguous'][Math.min(q.modes.length, 2)]);
+        assert.deepEqual(a.modes.filter((_, k) => batch[i * a.modes.length + k] === 1).sort(), q.modes);
+        queries += 1;
+        several += q.modes.length > 1;
+      });
+    } finally {
+      a.delete();
+    }
+  }
+  assert.ok(queries >= 300 && several >= 50, `${queries} queries, ${several} in several modes`);
+});
+
+test('tilts, springs and pushes: the exact oracle\'s', () => {
+  const counts = { unique: 0, shared: 0, union: 0, outside: 0, near: 0, no: 0, noPushes: 0 };
+  for (const f of fixtures.scenes) {
+    const a = ml.analyze(JSON.stringify(f.scene));
+    try {
+      for (const p of f.plans) {
+        checkArcs(a.planTilt(p.goal), p.goal, p.tilt, counts, `tilt ${p.goal}`);
+        checkArcs(a.planComply(p.goal, p.centre).centre, p.goal, p.comply, counts, `spring through ${p.centre}, ${p.goal}`);
+        const cases = a.planPush(p.goal, { mu: fixtures.finger_mu, ignoreInterference: true }).cases;
+        for (const sampled of p.push) {
+          const c = cases.find((x) => x.feature === sampled.feature && x.slip === sampled.slip);
+          assert.ok(c, `${sampled.feature} ${sampled.slip}`);
+          if (c.verdict !== 'no') continue;
+          counts.no += 1;
+          sampled.gives_goal.forEach((gives, i) => {
+            assert.equal(gives, false, `${p.goal}: ${c.feature} ${c.slip} is "no" but the push ${sampled.pushes[i]} gives the goal`);
+            counts.noPushes += 1;
+          });
+        }
+      }
+    } finally {
+      a.delete();
+    }
+  }
+  assert.ok(counts.unique >= 200 && counts.shared >= 20 && counts.outside >= 200 && counts.noPushes >= 200, JSON.stringify(counts));
+  assert.ok(counts.near * 50 < counts.unique + counts.shared + counts.union + counts.outside, JSON.stringify(counts));
 });
 
 test('bad input throws an Error with the CLI message', () => {
