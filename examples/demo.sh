@@ -111,6 +111,12 @@ figure push-vertex "Pushing the outboard trailing vertex, finger stuck (goal rr)
 figure comply "A compliance centre at (0, 0.5) (goal rr)" \
     plan comply "$here/figure-3-block-along-wall.json" --goal rr --centre 0 0.5
 figure rod-in-corner-modes "A rod in a corner: every contact mode" draw "$here/rod-in-corner.json" --what modes
+figure problem-ladder-slip "How the ladder slips, when it does (rr): it turns about (1, 1.73)" \
+    draw "$here/problem-ladder.json" --mode rr
+figure problem-peg "A peg in a hole pushed through (0, 2): the directions that slide it in (rl)" \
+    plan comply "$here/problem-peg-in-hole.json" --goal rl --centre 0 2
+figure problem-grasp "Two fingers on a square, offset 0.5 < 2 mu = 0.6: no labels, force closure" \
+    draw "$here/problem-two-finger-grasp.json" --what closure
 figure closure-four-midpoints "Four midpoints: the + and - regions say which turns nothing resists" \
     draw "$here/closure-four-midpoints.json" --what closure
 figure closure-antipodal-fingers "Two fingers: no labels for the friction cones, force closure" \

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 #include "momentlab/geometry/force_sets.hpp"
 #include "momentlab/mechanics/modes.hpp"
@@ -265,10 +267,152 @@ std::string translations_text(const Cone& twists) {
 }
 
 std::vector<LegendEntry> scene_legend() {
-    return {{Fill{palette::kBody, 0.15}, Stroke{palette::kBody, 1.5}, "body (dot: centre of mass)"},
+    return {{Fill{palette::kBody, 0.15}, Stroke{palette::kBody, 1.5}, "body; dot: centre of mass"},
             {Fill{palette::kObstacle, 0.45}, Stroke{palette::kObstacle, 1.0}, "fixed polygons"},
-            {Fill{palette::kFriction, 0.25}, Stroke{palette::kFriction, 1.0},
-             "friction cone at each contact (arrow: the normal, into the body)"}};
+            {Fill{palette::kFriction, 0.25}, Stroke{palette::kFriction, 1.0}, "friction cone; arrow: normal into the body"}};
+}
+
+// An angle in degrees, two decimals at most: "−63.43°", "0°".
+std::string degrees_text(double radians) {
+    const double d = std::round(radians * 18000.0 / M_PI) / 100.0;
+    char digits[32];
+    std::snprintf(digits, sizeof digits, "%.2f", std::abs(d));
+    std::string text = digits;
+    while (text.back() == '0') text.pop_back();
+    if (text.back() == '.') text.pop_back();
+    return (d < 0.0 ? kMinusSign : "") + text + "\u00B0";
+}
+
+std::string point_text(const Vec2& p) {
+    auto coordinate = [](double x) { return (x < 0.0 ? std::string(kMinusSign) : std::string()) + fmt(std::abs(x)); };
+    return "(" + coordinate(p.x()) + ", " + coordinate(p.y()) + ")";
+}
+
+Vec2 unit(double angle) { return Vec2(std::cos(angle), std::sin(angle)); }
+
+// A panel's caption in the answer's colour.
+void set_caption(Panel& panel, const std::string& text) {
+    panel.caption = text;
+    panel.caption_colour = darker(palette::kAnswer, 0.8);
+}
+
+// The answer of a plan on a panel (pictures.hpp, Answer), and its lines of the legend.
+void draw_answer(Panel& panel, const Answer& a, std::vector<LegendEntry>& legend) {
+    const double size = std::max(view_width(panel.view), view_height(panel.view));
+    const double radius = 0.2 * size;
+    // A push's arcs are drawn on the side its forces come from: the finger is outside the body.
+    const double behind = a.best_is_push ? M_PI : 0.0;
+    const Colour label_colour = darker(palette::kAnswer, 0.8);
+    for (const auto& [from, to] : a.arcs) {
+        if (to > from) {
+            Shape fan;
+            fan.points = {a.at};
+            const int steps = std::max(2, static_cast<int>(std::ceil((to - from) / 0.05)));
+            for (int k = 0; k <= steps; ++k) fan.points.push_back(a.at + radius * unit(behind + from + (to - from) * k / steps));
+            fan.closed = true;
+            fan.fill = Fill{palette::kAnswer, 0.22};
+            fan.stroke = Stroke{palette::kAnswer, 1.2};
+            panel.shapes.push_back(fan);
+        } else {
+            panel.shapes.push_back(polyline({a.at, a.at + radius * unit(behind + from)}, Stroke{palette::kAnswer, 2.0}));
+        }
+        for (double end : to > from ? std::vector<double>{from, to} : std::vector<double>{from}) {
+            Text t;
+            t.at = a.at + 1.25 * radius * unit(behind + end);
+            t.text = degrees_text(end);
+            t.size = 9.0;
+            t.bold = true;
+            t.colour = label_colour;
+            panel.texts.push_back(t);
+        }
+    }
+    for (const auto& [p, q] : a.touch) {
+        if (p == q) {
+            panel.shapes.push_back(dot(p, palette::kAnswer, 4.5));
+        } else {
+            panel.shapes.push_back(polyline({p, q}, Stroke{palette::kAnswer, 4.5}));
+        }
+    }
+    if (a.best_point) {
+        const Vec2 d = a.best_direction.normalized(), p = *a.best_point;
+        const double length = 0.3 * size;
+        Shape arrow = a.best_is_push ? polyline({p - length * d, p}, Stroke{palette::kAnswer, 2.2})
+                                     : polyline({p, p + length * d}, Stroke{palette::kAnswer, 2.2});
+        arrow.arrow_end = true;
+        panel.shapes.push_back(arrow);
+    }
+    if (!a.caption.empty()) set_caption(panel, a.caption);
+    if (!a.arcs.empty()) {
+        legend.push_back({Fill{palette::kAnswer, 0.22}, Stroke{palette::kAnswer, 1.2},
+                          std::string("answer: the ") + (a.best_is_push ? "push" : "force") + " directions that work (degrees from +x)"});
+    }
+    if (!a.touch.empty()) legend.push_back({std::nullopt, Stroke{palette::kAnswer, 4.5}, "answer: where the finger may touch"});
+    if (a.best_point) {
+        legend.push_back({std::nullopt, Stroke{palette::kAnswer, 2.2},
+                          std::string("answer: the best ") + (a.best_is_push ? "push" : "direction")});
+    }
+}
+
+// "[−63.43°, 0°]" for each arc.
+std::string arcs_text(const std::vector<AngleInterval>& arcs) {
+    std::string text;
+    for (const AngleInterval& i : arcs) {
+        text += (text.empty() ? "" : " and ") + (i.from == i.to ? degrees_text(i.from) + " only"
+                                                                 : "[" + degrees_text(i.from) + ", " + degrees_text(i.to) + "]");
+    }
+    return text.empty() ? "none" : text;
+}
+
+// A mode's rotation centres on a panel: a point with a cross and its coordinates, a set dashed;
+// a caption names them or the mode's translations (design.md: a rotation about (x, y) with
+// angular velocity w is the twist w (y, -x, 1)).
+void draw_rotation_centres(Panel& panel, const Mode& mode, std::vector<LegendEntry>& legend) {
+    if (mode.twists.is_zero()) return;
+    const Labels centres = rotation_centres(mode);
+    const double size = std::max(view_width(panel.view), view_height(panel.view));
+    std::vector<std::string> said;
+    bool drawn = false;
+    for (const auto& [region, sense] : {std::pair{&centres.plus(), kCounterClockwise}, std::pair{&centres.minus(), kClockwise}}) {
+        const int dim = dimension(*region);
+        if (dim < 0) continue;
+        if (dim == 0) {
+            const Vec2 c = region->vertices.front();
+            said.push_back("rotation about " + point_text(c) + " " + sense);
+            if (region->clipped(panel.view).empty()) continue;
+            const double r = 0.025 * size;
+            for (const Vec2& d : {Vec2(1.0, 1.0), Vec2(1.0, -1.0)}) {
+                panel.shapes.push_back(polyline({c - r * d, c + r * d}, Stroke{palette::kAnswer, 2.0}));
+            }
+            Text t;
+            t.at = c;
+            t.offset = Vec2(0.0, -13.0);
+            t.text = point_text(c) + " " + sense;
+            t.size = 9.0;
+            t.bold = true;
+            t.colour = darker(palette::kAnswer, 0.8);
+            panel.texts.push_back(t);
+            drawn = true;
+            continue;
+        }
+        said.push_back(std::string("rotation centres dashed (") + sense + ")");
+        const std::vector<Vec2> poly = region->clipped(panel.view);
+        if (poly.empty()) continue;
+        Shape outline = polyline(poly, Stroke{palette::kAnswer, 1.6, true});
+        outline.closed = poly.size() > 2;
+        panel.shapes.push_back(outline);
+        drawn = true;
+    }
+    const std::string translations = translations_text(mode.twists);
+    if (!translations.empty()) said.push_back(translations);
+    std::string caption = mode.letters + ":";
+    for (std::size_t i = 0; i < said.size(); ++i) caption += (i ? "; " : " ") + said[i];
+    set_caption(panel, caption);
+    if (drawn && legend.size() < 64) {
+        const std::string text = "answer: the rotation centre (\u00D7, or dashed: a set of them)";
+        if (std::none_of(legend.begin(), legend.end(), [&](const LegendEntry& e) { return e.text == text; })) {
+            legend.push_back({std::nullopt, Stroke{palette::kAnswer, 2.0}, text});
+        }
+    }
 }
 
 }  // namespace
@@ -289,15 +433,12 @@ Box fit_view(const std::vector<Vec2>& points, double pad) {
 }
 
 std::vector<LegendEntry> labels_legend() {
-    return {{Fill{palette::kPlus, 1.0}, Stroke{palette::kPlusEdge, 1.3},
-             "+ : every force has moment \u2265 0 about the point (passes it on the right)"},
-            {Fill{palette::kMinus, 1.0}, Stroke{palette::kMinusEdge, 1.3},
-             "\u2212 : every force has moment \u2264 0 about the point (passes it on the left)"},
-            {std::nullopt, Stroke{palette::kBoth, 3.0}, "\u00B1 : every force has moment 0 (+ and \u2212 at once)"},
-            {Fill{palette::kPaper, 1.0}, Stroke{palette::kGuide, 0.8}, "unlabelled: forces turn both ways about it"},
-            {std::nullopt, Stroke{palette::kInk, 1.6}, "forces of the set (dashed: the line of action)"},
-            {std::nullopt, Stroke{palette::kPlusEdge, 1.4},
-             "arrow at the edge of the view: the region goes on beyond it"}};
+    return {{Fill{palette::kPlus, 1.0}, Stroke{palette::kPlusEdge, 1.3}, "+ : every force has moment \u2265 0 about the point"},
+            {Fill{palette::kMinus, 1.0}, Stroke{palette::kMinusEdge, 1.3}, "\u2212 : every force has moment \u2264 0 about it"},
+            {std::nullopt, Stroke{palette::kBoth, 3.0}, "\u00B1 : every force has moment 0 (+ and \u2212)"},
+            {Fill{palette::kPaper, 1.0}, Stroke{palette::kGuide, 0.8}, "unlabelled: moments of both signs"},
+            {std::nullopt, Stroke{palette::kInk, 1.6}, "forces of the set; dashed: a line of action"},
+            {std::nullopt, Stroke{palette::kPlusEdge, 1.4}, "arrow at the edge: the region goes on"}};
 }
 
 Panel labels_panel(const ForcePanel& set, const Box& view) {
@@ -546,17 +687,88 @@ Figure forces_figure(const std::string& title, const Scene& scene, const std::ve
         sets.push_back({"T contact (" + letters + ")", m.contact, contact_points});
         sets.push_back({"E applied (" + letters + ")", m.applied, {}});
     }
-    return scene_sets_figure(title, scene, sets, view);
+    Figure figure = scene_sets_figure(title, scene, sets, view);
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+        draw_rotation_centres(figure.panels.at(3 * i), analysis.at(modes[i]).mode, figure.legend);
+    }
+    return figure;
 }
 
 Figure synthesis_figure(const std::string& title, const Scene& scene, const ForcePanel& actions,
-                        const ModeForces& goal, const Cone& solutions, std::optional<Box> view) {
+                        const ModeForces& goal, const Cone& solutions, std::optional<Box> view, const Answer& answer) {
     const std::string& letters = goal.mode.letters;
     const std::vector<ForcePanel> sets = {
         actions,
         {"E applied (" + letters + ")", goal.applied, {}},
         {"solutions: W \u2229 E (" + letters + ")", solutions, actions.anchors}};
-    return scene_sets_figure(title, scene, sets, view);
+    Figure figure = scene_sets_figure(title, scene, sets, view);
+    draw_answer(figure.panels.back(), answer, figure.legend);
+    return figure;
+}
+
+namespace {
+
+// The answer of a plan of directions through one point (a tilt, a spring).
+Answer directions_answer(const Vec2& at, const DirectionPlan& plan, const std::string& what) {
+    Answer a;
+    a.at = at;
+    for (const AngleInterval& i : plan.intervals) a.arcs.emplace_back(i.from, i.to);
+    if (plan.feasible()) {
+        a.best_point = at;
+        a.best_direction = unit(plan.best);
+    }
+    a.caption = what + ": " + arcs_text(plan.intervals);
+    return a;
+}
+
+}  // namespace
+
+Figure tilt_figure(const std::string& title, const Scene& scene, const ModeForces& goal, const DirectionPlan& plan,
+                   std::optional<Box> view) {
+    if (!scene.body) throw std::invalid_argument("tilt_figure: the scene has no body (its centre of mass is where gravity acts)");
+    const Vec2 com = scene.body->com;
+    const ForcePanel actions{"W: tilts (gravity through the centre of mass)", plan.actions, {com}};
+    return synthesis_figure(title, scene, actions, goal, plan.solutions, view,
+                            directions_answer(com, plan, "gravity directions"));
+}
+
+Figure comply_figure(const std::string& title, const Scene& scene, const ModeForces& goal, const ComplyPlan& plan,
+                     std::optional<Box> view) {
+    const ForcePanel actions{"W: spring forces through the centre", plan.directions.actions, {plan.centre}};
+    Answer a = directions_answer(plan.centre, plan.directions, "spring directions");
+    return synthesis_figure(title, scene, actions, goal, plan.directions.solutions, view, a);
+}
+
+Figure push_figure(const std::string& title, const Scene& scene, const ModeForces& goal, const PushCase& c,
+                   std::optional<Box> view) {
+    std::vector<Cone> actions, solutions;
+    for (const PushPiece& p : c.pieces) {
+        actions.push_back(p.actions);
+        solutions.push_back(p.solutions);
+    }
+    // Several pieces (parts free of obstacles, or a wide vertex arc): their hulls are drawn.
+    const std::string what = c.feature.name() + ", slip " + std::string(1, letter(c.slip));
+    const ForcePanel panel{"W: pushes (" + what + ")", sum(actions), {c.feature.from, c.feature.to}};
+    Answer a;
+    a.touch = c.touch;
+    a.best_is_push = true;
+    if (c.best) {
+        a.at = c.best->point;
+        a.best_point = c.best->point;
+        a.best_direction = c.best->direction;
+        if (c.directions) a.arcs.emplace_back(c.directions->from, c.directions->to);
+    }
+    std::string touch;
+    for (const auto& [p, q] : c.touch) {
+        touch += (touch.empty() ? "" : ", ") + (p == q ? point_text(p) : point_text(p) + "\u2013" + point_text(q));
+    }
+    a.caption = std::string(to_string(c.verdict)) + (touch.empty() ? "" : "; touch " + touch);
+    if (c.directions) {
+        a.caption += "; directions " + (c.directions->from == c.directions->to
+                                            ? degrees_text(c.directions->from)
+                                            : "[" + degrees_text(c.directions->from) + ", " + degrees_text(c.directions->to) + "]");
+    }
+    return synthesis_figure(title, scene, panel, goal, sum(solutions), view, a);
 }
 
 Figure friction_figure(const std::string& title, const Scene& scene, std::optional<Box> view) {

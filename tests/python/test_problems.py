@@ -69,6 +69,19 @@ def test_the_bundled_ladder_stands_at_60_degrees():
     assert "ff" in got["modes"] and "rr" not in got["modes"]
 
 
+def test_a_climber_three_quarters_up_the_bundled_ladder():
+    # The ladder stands while (1 + mu^2) N_B <= mu (mg + W), N_B = (mg a/2 + W (a - x)) / (h + mu a).
+    doc = raw("problem-ladder.json")
+    a, h, mu = Q(doc["contacts"][0]["point"][0]), Q(doc["contacts"][1]["point"][1]), Q(doc["contacts"][0]["mu"])
+    mg, x = Q(doc["body"]["mass"]) * Q(G), Q(0.25)
+    assert a / h > mu  # the case of the derivation: the wall's friction helps the foot
+    k = mu * (h + mu * a)
+    w_max = mg * (k - (1 + mu * mu) * a / 2) / ((1 + mu * mu) * (a - x) - k)
+    bs = json_of("query", EXAMPLES / "problem-ladder.json", "--gravity", 0, -G, "--push", 0.25, 1.3, 0, -1)["bands"]
+    end, _ = at_rest_until(bs)
+    assert close(end, w_max) and abs(float(w_max) - 3.049) < 5e-4, (end, float(w_max))
+
+
 @pytest.mark.parametrize("mu", [0.3, 0.2, 0.5, 0.75])
 def test_the_ladder_stands_exactly_above_the_critical_angle(mu):
     theta_c = math.atan((1 - mu * mu) / (2 * mu))
