@@ -19,7 +19,7 @@ APT_PACKAGES := g++ cmake make ccache libeigen3-dev libgmp-dev nlohmann-json3-de
                 libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev libcairo2-dev pkg-config libbox2d-dev \
                 clang libclang-rt-14-dev \
                 python3-dev pybind11-dev python3-numpy python3-matplotlib python3-pytest python3-pip \
-                python3-venv python3-setuptools python3-wheel \
+                python3-venv python3-setuptools python3-wheel ninja-build \
                 emscripten nodejs chromium
 SAN_BUILD := build/asan
 WEB_BUILD := build/web
@@ -81,18 +81,39 @@ test-web: web build
 	MOMENTLAB_CLI=$(CURDIR)/$(BUILD)/momentlab node --no-experimental-fetch --test tests/web/test_module.mjs
 	MOMENTLAB_CLI=$(CURDIR)/$(BUILD)/momentlab PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 node --test tests/web/test_page.mjs
 
-demo: python web
-	@bash examples/demo.sh $(BUILD)/momentlab out
-	@echo
-	@echo "== The same in Python: examples/python/tutorial.py (Figures 1-6 with matplotlib)"
-	@cd out && $(PYTHON) ../examples/python/tutorial.py python | sed 's/^/   /'
-	@echo
-	@echo "== In the browser: open out/web/index.html (drag contacts and the force; pick a mode)"
+# `make demo`: each part is built just before it is shown, the command line first (the library
+# and the CLI only: no tests or benchmarks), then the Python module, then the WebAssembly page.
+# Compiler output goes to DEMO_LOG; its last lines are shown when a build fails. Build trees the
+# demo creates use Ninja (it keeps both cores busy across the layers, where make builds them one
+# after the other); existing ones keep their generator. `make test` builds everything.
+DEMO_LOG := out/demo-build.log
+DEMO_GENERATOR := $(if $(shell command -v ninja 2>/dev/null),Ninja,Unix Makefiles)
 
-# The README's pictures (docs/figures/*.png), regenerated from the bundled examples.
-figures: build
+demo: deps
+	@set -eo pipefail; mkdir -p out; : > $(DEMO_LOG); export CMAKE_GENERATOR="$(DEMO_GENERATOR)"; \
+	quiet() { "$$@" >>$(DEMO_LOG) 2>&1 || { tail -n 30 $(DEMO_LOG); echo "make demo: failed: $$* (the whole log: $(DEMO_LOG))"; exit 1; }; }; \
+	took() { echo "   (built $$((SECONDS / 60)) min $$((SECONDS % 60)) s after the start; compiler output in $(DEMO_LOG))"; }; \
+	echo "== Building the library and the command line into $(BUILD) (about 2-3 minutes on 2 cores)"; \
+	quiet $(MAKE) --no-print-directory $(BUILD)/CMakeCache.txt; \
+	quiet cmake --build $(BUILD) -j$(JOBS) --target momentlab; took; \
+	bash examples/demo.sh $(BUILD)/momentlab out; \
+	echo; echo "== Building the Python module"; \
+	quiet cmake --build $(BUILD) -j$(JOBS) --target _momentlab; took; \
+	echo "== The same in Python: examples/python/tutorial.py (Figures 1-6 with matplotlib)"; \
+	echo "   PYTHONPATH=$(BUILD)/python $(PYTHON) examples/python/tutorial.py out/python"; \
+	PYTHONPATH=$(CURDIR)/$(BUILD)/python $(PYTHON) examples/python/tutorial.py out/python | sed 's/^/   /'; \
+	echo; echo "== Building the browser viewer (WebAssembly, $(WEB_BUILD))"; \
+	quiet $(MAKE) --no-print-directory web; took; \
+	echo "== In the browser: open out/web/index.html (drag contacts and the force; pick a mode)"; \
+	echo "   done in $$((SECONDS / 60)) min $$((SECONDS % 60)) s"
+
+# The README's pictures (docs/figures/*.png), drawn by examples/demo.sh from the bundled examples
+# with the command line alone.
+FIGURES := figure-2 figure-3-modes figure-4b figure-5 figure-6 problem-peg problem-grasp
+figures: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j$(JOBS) --target momentlab
 	@tmp=$$(mktemp -d); bash examples/demo.sh $(BUILD)/momentlab $$tmp >/dev/null; \
-	mkdir -p docs/figures; cp $$tmp/*.png docs/figures/; rm -rf $$tmp; ls docs/figures
+	mkdir -p docs/figures; for f in $(FIGURES); do cp $$tmp/$$f.png docs/figures/; done; rm -rf $$tmp; ls docs/figures
 
 # Every test: the suite in the release build, again under AddressSanitizer and
 # UndefinedBehaviorSanitizer (any report fails) with clang, each fuzz target (built from the same

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The main job on the bundled examples: moment labels of the paper's Figure 1 and 2 force sets
-# (Mason 1991), then the contact problem: every mode of the bundled scenes with its sets, and
-# which mode an applied wrench produces; then planning by tilting, pushing and compliance; last,
-# the paper's figures drawn from these files into OUT (default: out/).
+# The main job on the bundled examples: textbook problems first (docs/problems.md), then the
+# paper (Mason 1991): moment labels of its Figure 1 and 2 force sets, the contact problem (every
+# mode of the bundled scenes with its sets, and which mode an applied wrench produces), planning
+# by tilting, pushing and compliance; last, the figures drawn from these files into OUT
+# (default: out/).
 set -euo pipefail
 bin=${1:?usage: demo.sh path/to/momentlab [OUT]}
 out=${2:-out}
@@ -13,6 +14,21 @@ show() {
     echo "   momentlab ${*:2}" | sed "s#$here/#examples/#g"
     "$bin" "${@:2}"
 }
+# Textbook problems, each worked by hand in docs/problems.md and asserted by tests/python/test_problems.py.
+echo "#### Textbook problems (docs/problems.md works each one by hand)"
+show "A ladder at 60 degrees to the floor, mu = 0.3 at both ends, under its weight (0, -9.81) through (0.5, 0.866): it stands (ff), since tan 60 > (1 - 0.3^2) / (2 x 0.3)" \
+    query "$here/problem-ladder.json" --wrench 0 -9.81 -4.905
+show "A block 1 wide, pushed at height 0.5: at rest up to mu m g = 4.905, then it slides (rr) until its front lifts (rs)" \
+    query "$here/problem-block-push.json" --gravity 0 -9.81 --push 0 0.5 1 0
+show "... pushed at height 1.25: at rest up to m g w / 2h = 3.924, then it tips about its front corner (sf)" \
+    query "$here/problem-block-push.json" --gravity 0 -9.81 --push 0 1.25 1 0
+show "A peg tilted in a hole, pushed through (0, 2): the directions that insert it (rl)" \
+    plan comply "$here/problem-peg-in-hole.json" --goal rl --centre 0 2
+show "... and the directions that jam it (ff)" plan comply "$here/problem-peg-in-hole.json" --goal ff --centre 0 2
+show "Two fingers on a square, offset 0.5 < 2 mu = 0.6: force closure" closure "$here/problem-two-finger-grasp.json"
+
+echo
+echo "#### The paper: Mason, \"Two Graphical Methods for Planar Contact Problems\" (IROS 1991)"
 show "Figure 1a: a force along +x through the origin" label "$here/figure-1a-force.json" --at 0 1 --at 0 -1 --at 3 0
 show "Figure 1b: all forces through the point (1, 2)" label "$here/figure-1b-point.json" --at 1 2 --at 0 0
 show "Figure 1c: friction cone at the origin, normal +y, mu = 0.5" label "$here/figure-1c-friction-cone.json" --at -1 0 --at 1 0 --at 0 0
@@ -20,12 +36,12 @@ show "Figure 2: two friction cones combined (labels intersected)" label "$here/f
 show "Intersection of two parallel forces on different lines: only the zero wrench (the paper's hull shorthand would give y >= 0)" label "$here/parallel-rays-intersection.json" --at 0 -1
 show "Figure 3: the block along the wall, every mode (goal: rr)" analyze "$here/figure-3-block-along-wall.json"
 show "Figure 4: two-point peg insertion, every mode (goal: rl, down in two-point contact)" analyze "$here/figure-4-peg-in-hole.json"
-show "A peg on the hole's lip (normals meet at (4, -1.5)): every mode" analyze "$here/figure-4b-peg-on-the-lip.json"
-show "A block on a table: every mode" analyze "$here/block-on-table.json"
+show "A peg on the hole's lip (normals meet at (4, -1.5)): every mode" modes "$here/figure-4b-peg-on-the-lip.json"
+show "A block on a table: every mode" modes "$here/block-on-table.json"
 show "... under its weight alone" query "$here/block-on-table.json" --wrench 0 -9.81 -4.905
 show "... pushed with 20 N along its base" query "$here/block-on-table.json" --wrench 20 -9.81 -5.105
 show "... pushed with 20 N near its top" query "$here/block-on-table.json" --wrench 20 -9.81 -14.705
-show "A rod wedged in a corner (mu = 2): every mode" analyze "$here/rod-in-corner.json"
+show "A rod wedged in a corner (mu = 2): every mode" modes "$here/rod-in-corner.json"
 show "... a wrench that can both jam it (ff) and throw it off (ss): Painleve-style ambiguity" query "$here/rod-in-corner.json" --wrench 19 16 -2
 show "A wheel held at (5, 0), (3, 4), (-3, -4) by normals through its centre, written with length 5: exact, so no sss (contacts 2 and 3 face each other)" modes "$here/downstream/wheel.json"
 show "... turned by a clockwise torque: it rolls (lll) or lifts off contact 1 (sll)" query "$here/downstream/wheel.json" --wrench 0 0 -1
@@ -95,6 +111,12 @@ figure push-vertex "Pushing the outboard trailing vertex, finger stuck (goal rr)
 figure comply "A compliance centre at (0, 0.5) (goal rr)" \
     plan comply "$here/figure-3-block-along-wall.json" --goal rr --centre 0 0.5
 figure rod-in-corner-modes "A rod in a corner: every contact mode" draw "$here/rod-in-corner.json" --what modes
+figure problem-ladder-slip "How the ladder slips, when it does (rr): it turns about (1, 1.73)" \
+    draw "$here/problem-ladder.json" --mode rr
+figure problem-peg "A peg in a hole pushed through (0, 2): the directions that slide it in (rl)" \
+    plan comply "$here/problem-peg-in-hole.json" --goal rl --centre 0 2
+figure problem-grasp "Two fingers on a square, offset 0.5 < 2 mu = 0.6: no labels, force closure" \
+    draw "$here/problem-two-finger-grasp.json" --what closure
 figure closure-four-midpoints "Four midpoints: the + and - regions say which turns nothing resists" \
     draw "$here/closure-four-midpoints.json" --what closure
 figure closure-antipodal-fingers "Two fingers: no labels for the friction cones, force closure" \

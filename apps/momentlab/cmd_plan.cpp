@@ -138,9 +138,7 @@ int run_tilt(const PlanOptions& o) {
     if (!o.picture.files.empty()) {
         const std::string title = o.picture.title.empty() ? stem(o.file) + ": tilts that produce mode " + o.goal
                                                           : o.picture.title;
-        const render::ForcePanel actions{"W: tilts (gravity through the centre of mass)", plan.actions,
-                                         {scene.body->com}};
-        write_picture(render::synthesis_figure(title, scene, actions, goal, plan.solutions, view), o.picture);
+        write_picture(render::tilt_figure(title, scene, goal, plan, view), o.picture);
     }
     return 0;
 }
@@ -185,8 +183,7 @@ int run_comply(const PlanOptions& o) {
         const std::string title = o.picture.title.empty()
                                       ? stem(o.file) + ": compliance centre " + fmt(plan->centre) + " for mode " + o.goal
                                       : o.picture.title;
-        const render::ForcePanel actions{"W: spring forces through the centre", plan->directions.actions, {plan->centre}};
-        write_picture(render::synthesis_figure(title, scene, actions, goal, plan->directions.solutions, view), o.picture);
+        write_picture(render::comply_figure(title, scene, goal, *plan, view), o.picture);
     }
     return 0;
 }
@@ -276,14 +273,7 @@ int run_push(const PlanOptions& o) {
         const std::string what = c.feature.name() + ", slip " + std::string(1, letter(c.slip));
         const std::string title =
             o.picture.title.empty() ? stem(o.file) + ": pushing " + what + " to mode " + o.goal : o.picture.title;
-        std::vector<Cone> actions, solutions;
-        for (const PushPiece& p : c.pieces) {
-            actions.push_back(p.actions);
-            solutions.push_back(p.solutions);
-        }
-        // Several pieces (parts free of obstacles, or a wide vertex arc): their hulls are drawn.
-        const render::ForcePanel panel{"W: pushes (" + what + ")", sum(actions), {c.feature.from, c.feature.to}};
-        write_picture(render::synthesis_figure(title, scene, panel, goal, sum(solutions), view), o.picture);
+        write_picture(render::push_figure(title, scene, goal, c, view), o.picture);
     }
     return 0;
 }

@@ -28,8 +28,18 @@ constexpr double kPanelTitleHeight = 20.0;
 constexpr double kGap = 22.0;
 constexpr double kPanelSize = 320.0;  // the longer side of a panel's plot area
 constexpr double kMinPanelSide = 60.0;
-constexpr double kLegendLine = 17.0;
-constexpr double kLegendText = 10.5;
+constexpr double kLegendLine = 14.0;
+constexpr double kLegendText = 9.5;
+constexpr double kLegendSwatch = 26.0;   // swatch and the space after it
+constexpr double kLegendColumnGap = 18.0;
+constexpr double kLegendMinWidth = 460.0;  // a narrow figure's legend may widen the page to two columns
+// Axes: tick labels left of and below each panel.
+constexpr double kAxisLeft = 30.0;
+constexpr double kAxisBottom = 15.0;
+constexpr double kTickText = 8.0;
+constexpr double kTickLength = 3.5;
+constexpr double kCaptionHeight = 15.0;
+constexpr double kCaptionText = 9.5;
 constexpr double kTitleText = 15.0;
 constexpr double kPanelTitleText = 12.0;
 constexpr char kFont[] = "DejaVu Sans";
@@ -44,6 +54,62 @@ double text_width_estimate(const std::string& s, double size) {
     std::size_t chars = 0;
     for (unsigned char c : s) chars += (c & 0xC0) != 0x80;  // UTF-8 code points
     return 0.6 * size * static_cast<double>(chars);
+}
+
+// The legend's columns: entries fill them top to bottom, left to right.
+struct LegendShape {
+    std::size_t columns = 0;
+    std::size_t rows = 0;
+    double column_width = 0.0;
+    [[nodiscard]] double width() const {
+        return static_cast<double>(columns) * column_width + static_cast<double>(columns > 0 ? columns - 1 : 0) * kLegendColumnGap;
+    }
+};
+
+LegendShape legend_shape(const std::vector<LegendEntry>& legend, double available) {
+    LegendShape shape;
+    if (legend.empty()) return shape;
+    for (const LegendEntry& e : legend) {
+        shape.column_width = std::max(shape.column_width, kLegendSwatch + text_width_estimate(e.text, kLegendText));
+    }
+    const double room = std::max(available, kLegendMinWidth);
+    const auto fit = static_cast<std::size_t>((room + kLegendColumnGap) / (shape.column_width + kLegendColumnGap));
+    shape.columns = std::clamp<std::size_t>(fit, 1, legend.size());
+    shape.rows = (legend.size() + shape.columns - 1) / shape.columns;
+    shape.columns = (legend.size() + shape.rows - 1) / shape.rows;  // no empty column
+    return shape;
+}
+
+// Ticks of an axis from lo to hi: a step of 1, 2 or 5 times a power of ten, four to ten of them.
+struct Ticks {
+    double first = 0.0;
+    double step = 1.0;
+    int count = 0;
+    int decimals = 0;
+};
+
+Ticks ticks(double lo, double hi) {
+    Ticks t;
+    const double span = hi - lo;
+    if (!(span > 0.0) || !std::isfinite(span)) return t;
+    const double raw = span / 5.0;
+    const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+    const double norm = raw / magnitude;
+    t.step = (norm < 1.5 ? 1.0 : norm < 3.5 ? 2.0 : norm < 7.5 ? 5.0 : 10.0) * magnitude;
+    const double first = std::ceil(lo / t.step - 1e-9);
+    const double last = std::floor(hi / t.step + 1e-9);
+    t.first = first;
+    t.count = static_cast<int>(std::min(50.0, std::max(0.0, last - first + 1.0)));
+    t.decimals = std::max(0, -static_cast<int>(std::floor(std::log10(t.step) + 1e-9)));
+    return t;
+}
+
+// A tick's label: as few decimals as the step needs, the minus sign U+2212, no "-0".
+std::string tick_label(double value, int decimals) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, std::abs(value));
+    const bool zero = std::strspn(text, "0.") == std::strlen(text);
+    return (value < 0.0 && !zero ? "\u2212" : "") + std::string(text);
 }
 
 struct FrameSize {
@@ -170,6 +236,45 @@ private:
         set_colour(palette::kGuide, 1.0);
         cairo_set_line_width(cr_, 0.8);
         cairo_stroke(cr_);
+        axes(index);
+        if (!p.caption.empty()) {
+            text_at(Vec2(fr.x + fr.width / 2.0, fr.y + fr.height + kAxisBottom + kCaptionHeight / 2.0), p.caption, kCaptionText,
+                    true, p.caption_colour);
+        }
+    }
+
+    // Coordinates: ticks and their values below the panel (x) and left of it (y), over the part
+    // of the plane the frame shows.
+    void axes(std::size_t index) {
+        const Layout::Frame& fr = layout_.panels[index];
+        const double x0 = fr.view.min.x(), x1 = x0 + fr.width / fr.scale;
+        const double y1 = fr.view.max.y(), y0 = y1 - fr.height / fr.scale;
+        const Ticks tx = ticks(x0, x1), ty = ticks(y0, y1);
+        cairo_set_line_width(cr_, 0.8);
+        set_colour(palette::kGuide, 1.0);
+        for (int k = 0; k < tx.count; ++k) {
+            const double v = (tx.first + k) * tx.step;
+            const double px = fr.x + (v - x0) * fr.scale;
+            cairo_move_to(cr_, px, fr.y + fr.height);
+            cairo_line_to(cr_, px, fr.y + fr.height + kTickLength);
+        }
+        for (int k = 0; k < ty.count; ++k) {
+            const double v = (ty.first + k) * ty.step;
+            const double py = fr.y + (y1 - v) * fr.scale;
+            cairo_move_to(cr_, fr.x - kTickLength, py);
+            cairo_line_to(cr_, fr.x, py);
+        }
+        cairo_stroke(cr_);
+        for (int k = 0; k < tx.count; ++k) {
+            const double v = (tx.first + k) * tx.step;
+            text_at(Vec2(fr.x + (v - x0) * fr.scale, fr.y + fr.height + kTickLength + 0.75 * kTickText),
+                    tick_label(v, tx.decimals), kTickText, false, palette::kAxis);
+        }
+        for (int k = 0; k < ty.count; ++k) {
+            const double v = (ty.first + k) * ty.step;
+            text_right_of(fr.x - kTickLength - 2.0, fr.y + (y1 - v) * fr.scale, tick_label(v, ty.decimals), kTickText,
+                          palette::kAxis);
+        }
     }
 
     void shape(std::size_t panel_index, const Shape& s) {
@@ -242,6 +347,16 @@ private:
         text_from(x, y, text, size, bold, colour);
     }
 
+    // Text ending at x, centred vertically on y.
+    void text_right_of(double x, double y, const std::string& raw, double size, const Colour& colour) {
+        const std::string text = displayable(raw);
+        cairo_select_font_face(cr_, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+        cairo_set_font_size(cr_, size);
+        cairo_text_extents_t e;
+        cairo_text_extents(cr_, text.c_str(), &e);
+        text_from(x - e.x_advance, y - (e.y_bearing + e.height / 2.0), text, size, false, colour);
+    }
+
     // Text with its baseline starting at (x, y).
     void text_from(double x, double y, const std::string& raw, double size, bool bold, const Colour& colour) {
         const std::string text = displayable(raw);
@@ -255,13 +370,18 @@ private:
         texts_.push_back({x, y, size, bold, text});
     }
 
+    // The legend below the panels, in columns filled top to bottom, centred.
     void legend(const Figure& f) {
         if (f.legend.empty()) return;
-        double y = layout_.height - kMargin - kLegendLine * static_cast<double>(f.legend.size());
-        for (const LegendEntry& e : f.legend) {
-            const double x = kMargin, mid = y + kLegendLine / 2.0;
+        const LegendShape shape = legend_shape(f.legend, layout_.width - 2.0 * kMargin);
+        const double top = layout_.height - kMargin - kLegendLine * static_cast<double>(shape.rows);
+        const double left = (layout_.width - shape.width()) / 2.0;
+        for (std::size_t i = 0; i < f.legend.size(); ++i) {
+            const LegendEntry& e = f.legend[i];
+            const double x = left + static_cast<double>(i / shape.rows) * (shape.column_width + kLegendColumnGap);
+            const double mid = top + (static_cast<double>(i % shape.rows) + 0.5) * kLegendLine;
             if (e.fill) {
-                cairo_rectangle(cr_, x, mid - 6.0, 22.0, 12.0);
+                cairo_rectangle(cr_, x, mid - 5.0, 20.0, 10.0);
                 set_colour(e.fill->colour, e.fill->alpha);
                 cairo_fill_preserve(cr_);
                 if (e.stroke) {
@@ -270,12 +390,11 @@ private:
                 cairo_new_path(cr_);
             } else if (e.stroke) {
                 cairo_move_to(cr_, x, mid);
-                cairo_line_to(cr_, x + 22.0, mid);
+                cairo_line_to(cr_, x + 20.0, mid);
                 stroke(*e.stroke);
                 cairo_new_path(cr_);
             }
-            text_from(x + 30.0, mid + kLegendText * 0.36, e.text, kLegendText, false, palette::kInk);
-            y += kLegendLine;
+            text_from(x + kLegendSwatch, mid + kLegendText * 0.36, e.text, kLegendText, false, palette::kInk);
         }
     }
 
@@ -338,14 +457,21 @@ Layout layout(const Figure& figure) {
         cell_h = std::max(cell_h, sizes.back().height);
     }
     const double top = kMargin + (figure.title.empty() ? 0.0 : kTitleHeight);
-    double legend_w = 0.0;
-    for (const LegendEntry& e : figure.legend) legend_w = std::max(legend_w, 30.0 + text_width_estimate(e.text, kLegendText));
+    cell_w += kAxisLeft;
+    cell_h += kAxisBottom;
+    const bool captions = std::any_of(figure.panels.begin(), figure.panels.end(), [](const Panel& p) { return !p.caption.empty(); });
+    double caption_w = 0.0;
+    for (const Panel& p : figure.panels) caption_w = std::max(caption_w, text_width_estimate(p.caption, kCaptionText));
+    cell_w = std::max(cell_w, kAxisLeft + caption_w);
+    if (captions) cell_h += kCaptionHeight;
     const double grid_w = static_cast<double>(columns) * cell_w + static_cast<double>(columns - 1) * kGap;
     const double title_w = text_width_estimate(figure.title, kTitleText);
-    out.width = 2.0 * kMargin + std::max({grid_w, legend_w, title_w, 120.0});
+    const double content_w = std::max({grid_w, title_w, 120.0});
+    const LegendShape legend = legend_shape(figure.legend, content_w);
+    out.width = 2.0 * kMargin + std::max(content_w, legend.width());
     const double row_h = kPanelTitleHeight + cell_h;
     const double grid_h = static_cast<double>(rows) * row_h + static_cast<double>(rows > 0 ? rows - 1 : 0) * kGap;
-    const double legend_h = figure.legend.empty() ? 0.0 : kGap / 2.0 + kLegendLine * static_cast<double>(figure.legend.size());
+    const double legend_h = figure.legend.empty() ? 0.0 : kGap / 2.0 + kLegendLine * static_cast<double>(legend.rows);
     out.height = top + grid_h + legend_h + kMargin;
     const double grid_x = (out.width - grid_w) / 2.0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -355,8 +481,9 @@ Layout layout(const Figure& figure) {
         f.width = sizes[i].width;
         f.height = sizes[i].height;
         f.scale = std::min(f.width / (f.view.max.x() - f.view.min.x()), f.height / (f.view.max.y() - f.view.min.y()));
-        f.x = grid_x + static_cast<double>(c) * (cell_w + kGap) + (cell_w - f.width) / 2.0;
-        f.y = top + static_cast<double>(r) * (row_h + kGap) + kPanelTitleHeight + (cell_h - f.height) / 2.0;
+        f.x = grid_x + static_cast<double>(c) * (cell_w + kGap) + kAxisLeft + (cell_w - kAxisLeft - f.width) / 2.0;
+        const double below = kAxisBottom + (captions ? kCaptionHeight : 0.0);
+        f.y = top + static_cast<double>(r) * (row_h + kGap) + kPanelTitleHeight + (cell_h - below - f.height) / 2.0;
         out.panels.push_back(f);
     }
     return out;

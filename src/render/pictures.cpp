@@ -3,36 +3,18 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 #include "momentlab/geometry/force_sets.hpp"
 #include "momentlab/mechanics/modes.hpp"
+#include "drawing.hpp"
 
 namespace momentlab::render {
 namespace {
 
-constexpr char kMinusSign[] = "\u2212";
-constexpr char kPlusMinus[] = "\u00B1";
-constexpr char kCounterClockwise[] = "\u21BA";
-constexpr char kClockwise[] = "\u21BB";
-
-// 0 for a point, 1 for a segment / ray / line, 2 for a region with interior, -1 when empty.
-int dimension(const Region& r) {
-    const std::string k = r.kind();
-    if (k == "empty") return -1;
-    if (k == "point") return 0;
-    if (k == "segment" || k == "ray" || k == "line") return 1;
-    return 2;
-}
-
-std::string fmt(double x) {
-    std::ostringstream s;
-    s.precision(4);
-    s << (x == 0.0 ? 0.0 : x);
-    return s.str();
-}
-
-Colour darker(const Colour& c, double f) { return {c.r * f, c.g * f, c.b * f}; }
+using namespace drawing;
 
 Vec2 centroid(const std::vector<Vec2>& poly) {
     double area = 0.0;
@@ -49,10 +31,6 @@ Vec2 centroid(const std::vector<Vec2>& poly) {
     for (const Vec2& p : poly) mean += p;
     return mean / static_cast<double>(poly.size());
 }
-
-double view_width(const Box& v) { return v.max.x() - v.min.x(); }
-double view_height(const Box& v) { return v.max.y() - v.min.y(); }
-Vec2 view_centre(const Box& v) { return (v.min + v.max) / 2.0; }
 
 // The part of the line p + s u inside the box (Liang-Barsky), if any.
 std::optional<std::array<Vec2, 2>> clip_line(const Vec2& p, const Vec2& u, const Box& box) {
@@ -78,21 +56,6 @@ Vec2 side_of(const Vec2& a, const Vec2& b, const Box& box) {
     if (a.y() == box.min.y() && b.y() == box.min.y()) return Vec2(0.0, -1.0);
     if (a.y() == box.max.y() && b.y() == box.max.y()) return Vec2(0.0, 1.0);
     return Vec2::Zero();
-}
-
-Shape polyline(std::vector<Vec2> points, const Stroke& stroke) {
-    Shape s;
-    s.points = std::move(points);
-    s.stroke = stroke;
-    return s;
-}
-
-Shape dot(const Vec2& p, const Colour& colour, double radius) {
-    Shape s;
-    s.points = {p};
-    s.fill = Fill{colour, 1.0};
-    s.dot_radius = radius;
-    return s;
 }
 
 // A region of labels: filled (interior), stroked (segment, ray, line) or a dot (point); edges cut
@@ -265,10 +228,61 @@ std::string translations_text(const Cone& twists) {
 }
 
 std::vector<LegendEntry> scene_legend() {
-    return {{Fill{palette::kBody, 0.15}, Stroke{palette::kBody, 1.5}, "body (dot: centre of mass)"},
+    return {{Fill{palette::kBody, 0.15}, Stroke{palette::kBody, 1.5}, "body; dot: centre of mass"},
             {Fill{palette::kObstacle, 0.45}, Stroke{palette::kObstacle, 1.0}, "fixed polygons"},
-            {Fill{palette::kFriction, 0.25}, Stroke{palette::kFriction, 1.0},
-             "friction cone at each contact (arrow: the normal, into the body)"}};
+            {Fill{palette::kFriction, 0.25}, Stroke{palette::kFriction, 1.0}, "friction cone; arrow: normal into the body"}};
+}
+
+// A mode's rotation centres on a panel: a point with a cross and its coordinates, a set dashed;
+// a caption names them or the mode's translations (design.md: a rotation about (x, y) with
+// angular velocity w is the twist w (y, -x, 1)).
+void draw_rotation_centres(Panel& panel, const Mode& mode, std::vector<LegendEntry>& legend) {
+    if (mode.twists.is_zero()) return;
+    const Labels centres = rotation_centres(mode);
+    const double size = std::max(view_width(panel.view), view_height(panel.view));
+    std::vector<std::string> said;
+    bool drawn = false;
+    for (const auto& [region, sense] : {std::pair{&centres.plus(), kCounterClockwise}, std::pair{&centres.minus(), kClockwise}}) {
+        const int dim = dimension(*region);
+        if (dim < 0) continue;
+        if (dim == 0) {
+            const Vec2 c = region->vertices.front();
+            said.push_back("rotation about " + point_text(c) + " " + sense);
+            if (region->clipped(panel.view).empty()) continue;
+            const double r = 0.025 * size;
+            for (const Vec2& d : {Vec2(1.0, 1.0), Vec2(1.0, -1.0)}) {
+                panel.shapes.push_back(polyline({c - r * d, c + r * d}, Stroke{palette::kAnswer, 2.0}));
+            }
+            Text t;
+            t.at = c;
+            t.offset = Vec2(0.0, -13.0);
+            t.text = point_text(c) + " " + sense;
+            t.size = 9.0;
+            t.bold = true;
+            t.colour = darker(palette::kAnswer, 0.8);
+            panel.texts.push_back(t);
+            drawn = true;
+            continue;
+        }
+        said.push_back(std::string("rotation centres dashed (") + sense + ")");
+        const std::vector<Vec2> poly = region->clipped(panel.view);
+        if (poly.empty()) continue;
+        Shape outline = polyline(poly, Stroke{palette::kAnswer, 1.6, true});
+        outline.closed = poly.size() > 2;
+        panel.shapes.push_back(outline);
+        drawn = true;
+    }
+    const std::string translations = translations_text(mode.twists);
+    if (!translations.empty()) said.push_back(translations);
+    std::string caption = mode.letters + ":";
+    for (std::size_t i = 0; i < said.size(); ++i) caption += (i ? "; " : " ") + said[i];
+    set_caption(panel, caption);
+    if (drawn && legend.size() < 64) {
+        const std::string text = "answer: the rotation centre (\u00D7, or dashed: a set of them)";
+        if (std::none_of(legend.begin(), legend.end(), [&](const LegendEntry& e) { return e.text == text; })) {
+            legend.push_back({std::nullopt, Stroke{palette::kAnswer, 2.0}, text});
+        }
+    }
 }
 
 }  // namespace
@@ -289,15 +303,12 @@ Box fit_view(const std::vector<Vec2>& points, double pad) {
 }
 
 std::vector<LegendEntry> labels_legend() {
-    return {{Fill{palette::kPlus, 1.0}, Stroke{palette::kPlusEdge, 1.3},
-             "+ : every force has moment \u2265 0 about the point (passes it on the right)"},
-            {Fill{palette::kMinus, 1.0}, Stroke{palette::kMinusEdge, 1.3},
-             "\u2212 : every force has moment \u2264 0 about the point (passes it on the left)"},
-            {std::nullopt, Stroke{palette::kBoth, 3.0}, "\u00B1 : every force has moment 0 (+ and \u2212 at once)"},
-            {Fill{palette::kPaper, 1.0}, Stroke{palette::kGuide, 0.8}, "unlabelled: forces turn both ways about it"},
-            {std::nullopt, Stroke{palette::kInk, 1.6}, "forces of the set (dashed: the line of action)"},
-            {std::nullopt, Stroke{palette::kPlusEdge, 1.4},
-             "arrow at the edge of the view: the region goes on beyond it"}};
+    return {{Fill{palette::kPlus, 1.0}, Stroke{palette::kPlusEdge, 1.3}, "+ : every force has moment \u2265 0 about the point"},
+            {Fill{palette::kMinus, 1.0}, Stroke{palette::kMinusEdge, 1.3}, "\u2212 : every force has moment \u2264 0 about it"},
+            {std::nullopt, Stroke{palette::kBoth, 3.0}, "\u00B1 : every force has moment 0 (+ and \u2212)"},
+            {Fill{palette::kPaper, 1.0}, Stroke{palette::kGuide, 0.8}, "unlabelled: moments of both signs"},
+            {std::nullopt, Stroke{palette::kInk, 1.6}, "forces of the set; dashed: a line of action"},
+            {std::nullopt, Stroke{palette::kPlusEdge, 1.4}, "arrow at the edge: the region goes on"}};
 }
 
 Panel labels_panel(const ForcePanel& set, const Box& view) {
@@ -499,10 +510,8 @@ Figure modes_figure(const std::string& title, const Scene& scene, std::optional<
     return figure;
 }
 
-namespace {
-
-// Panels of force sets over a faint scene, three to a row, sharing one view.
-Figure scene_sets_figure(const std::string& title, const Scene& scene, const std::vector<ForcePanel>& sets,
+// Panels of force sets over a faint scene, three to a row, sharing one view (drawing.hpp).
+Figure drawing::scene_sets_figure(const std::string& title, const Scene& scene, const std::vector<ForcePanel>& sets,
                          std::optional<Box> view) {
     if (!view) {
         // The scene, and the sets' corners near it (far corners would shrink the scene away).
@@ -530,8 +539,6 @@ Figure scene_sets_figure(const std::string& title, const Scene& scene, const std
     return figure;
 }
 
-}  // namespace
-
 Figure forces_figure(const std::string& title, const Scene& scene, const std::vector<ModeForces>& analysis,
                      const std::vector<std::size_t>& modes, std::optional<Box> view) {
     std::vector<Vec2> contact_points;
@@ -546,17 +553,11 @@ Figure forces_figure(const std::string& title, const Scene& scene, const std::ve
         sets.push_back({"T contact (" + letters + ")", m.contact, contact_points});
         sets.push_back({"E applied (" + letters + ")", m.applied, {}});
     }
-    return scene_sets_figure(title, scene, sets, view);
-}
-
-Figure synthesis_figure(const std::string& title, const Scene& scene, const ForcePanel& actions,
-                        const ModeForces& goal, const Cone& solutions, std::optional<Box> view) {
-    const std::string& letters = goal.mode.letters;
-    const std::vector<ForcePanel> sets = {
-        actions,
-        {"E applied (" + letters + ")", goal.applied, {}},
-        {"solutions: W \u2229 E (" + letters + ")", solutions, actions.anchors}};
-    return scene_sets_figure(title, scene, sets, view);
+    Figure figure = scene_sets_figure(title, scene, sets, view);
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+        draw_rotation_centres(figure.panels.at(3 * i), analysis.at(modes[i]).mode, figure.legend);
+    }
+    return figure;
 }
 
 Figure friction_figure(const std::string& title, const Scene& scene, std::optional<Box> view) {

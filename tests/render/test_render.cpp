@@ -16,6 +16,9 @@
 #include "momentlab/geometry/force_sets.hpp"
 #include "momentlab/io/scene_json.hpp"
 #include "momentlab/mechanics/analysis.hpp"
+#include "momentlab/planning/comply.hpp"
+#include "momentlab/planning/push.hpp"
+#include "momentlab/planning/tilt.hpp"
 #include "momentlab/render/figure.hpp"
 #include "momentlab/render/pictures.hpp"
 
@@ -379,6 +382,166 @@ TEST(Svg, Figure3PanelsAreTotalContactAppliedForModeRr) {
     EXPECT_EQ(svg.fills(palette::kMinus), 3);
     EXPECT_EQ(svg.count_text("+"), 3);
     EXPECT_EQ(svg.count_text(kMinus), 3);
+}
+
+// ---------------------------------------------------------------- axes, legend, answers
+
+bool white(const std::array<int, 3>& p) { return p[0] >= 250 && p[1] >= 250 && p[2] >= 250; }
+
+TEST(Axes, TicksAndTheirValuesSitAtTheirCoordinates) {
+    // The view [-3, 3]^2: a step of 1 (span / 5 = 1.2 rounds to 1), ticks -3 .. 3 on both axes.
+    const Cone f = force_ray(Vec2(0, 0), Vec2(1, 0));
+    const Figure fig = labels_figure("1a", {panel_of("F", f)}, false, f, Box{Vec2(-3, -3), Vec2(3, 3)});
+    const Svg svg{render(fig, Format::Svg)};
+    for (const char* v : {"\u22123", "\u22122", "\u22121", "0", "1", "2", "3"}) EXPECT_EQ(svg.count_text(v), 2) << v;
+    EXPECT_EQ(svg.count_text("-1"), 0);  // the minus sign, not a hyphen
+    const Image img = decode_png(render(fig, Format::Png));
+    const Layout page = layout(fig);
+    const Layout::Frame& fr = page.panels[0];
+    for (int v = -3; v <= 3; ++v) {
+        // 2 pt outside the frame: on each tick, and halfway to the next one (26 pt away), blank.
+        const Vec2 at = page.to_page(0, Vec2(v, v)), between = page.to_page(0, Vec2(v + 0.5, v + 0.5));
+        EXPECT_FALSE(white(img.at(Vec2(at.x(), fr.y + fr.height + 2.0)))) << "x tick " << v;
+        EXPECT_FALSE(white(img.at(Vec2(fr.x - 2.0, at.y())))) << "y tick " << v;
+        if (v == 3) continue;
+        EXPECT_TRUE(white(img.at(Vec2(between.x(), fr.y + fr.height + 2.0)))) << "x between " << v;
+        EXPECT_TRUE(white(img.at(Vec2(fr.x - 2.0, between.y())))) << "y between " << v;
+    }
+}
+
+// How much of the page lies below the lowest panel and its axis: the legend and the margin.
+double below_panels(const Figure& fig) {
+    const Layout page = layout(fig);
+    double bottom = 0.0;
+    for (const Layout::Frame& f : page.panels) bottom = std::max(bottom, f.y + f.height);
+    return (page.height - bottom) / page.height;
+}
+
+TEST(Legend, ColumnsKeepItUnderAQuarterOfThePage) {
+    const Scene scene = example("figure-3-block-along-wall.json");
+    const auto analysis = analyze(scene);
+    std::size_t rr = 0;
+    while (analysis.at(rr).mode.letters != "rr") ++rr;
+    const Figure fig = forces_figure("Figure 3", scene, analysis, {rr});
+    ASSERT_GE(fig.legend.size(), 9U);
+    EXPECT_LT(below_panels(fig), 0.25);
+    const Cone f = friction_cone(Vec2(0, 0), Vec2(0, 1), 0.5);
+    EXPECT_LT(below_panels(labels_figure("1c", {panel_of("F", f)}, false, f)), 0.3);
+    // Every entry is drawn, once.
+    const Svg svg{render(fig, Format::Svg)};
+    for (const LegendEntry& e : fig.legend) EXPECT_EQ(svg.count_text(e.text), 1) << e.text;
+}
+
+// A pixel of the picture with the answer against the same picture without it.
+struct Tint {
+    std::array<int, 3> with;
+    std::array<int, 3> without;
+    // Blending in kAnswer (red 0.83, green 0.11) raises red over green.
+    [[nodiscard]] bool tinted() const { return with[0] - with[1] > without[0] - without[1] + 20; }
+    [[nodiscard]] bool same() const { return with == without; }
+};
+
+const ModeForces& mode_of(const std::vector<ModeForces>& analysis, const std::string& letters) {
+    for (const ModeForces& m : analysis) {
+        if (m.mode.letters == letters) return m;
+    }
+    throw std::invalid_argument(letters);
+}
+
+TEST(Answer, TiltFigureMarksTheGravityDirectionsAndTheBest) {
+    // docs/planning.md by hand: rr for gravity directions [-atan 2, 0] through (1/2, 1/4).
+    const Scene scene = example("figure-3-block-along-wall.json");
+    const auto analysis = analyze(scene);
+    const ModeForces& rr = mode_of(analysis, "rr");
+    PlanContext context;
+    context.modes = analysis;
+    const DirectionPlan plan = plan_tilt(scene, rr, context);
+    const Figure fig = tilt_figure("tilt", scene, rr, plan);
+    const Svg svg{render(fig, Format::Svg)};
+    EXPECT_EQ(svg.count_text("\u221263.43\u00B0"), 1);  // -atan 2 = -63.4349 degrees
+    EXPECT_EQ(svg.count_text("0\u00B0"), 1);
+    EXPECT_EQ(svg.count_text("gravity directions: [\u221263.43\u00B0, 0\u00B0]"), 1);
+    // The fan (and its swatch in the legend), filled and outlined in one element; the best
+    // direction's arrowhead, filled.
+    char fan[96];
+    std::snprintf(fan, sizeof fan, "fill:rgb(%g%%,%g%%,%g%%);fill-opacity:0.22;", std::round(palette::kAnswer.r * 1000) / 10,
+                  std::round(palette::kAnswer.g * 1000) / 10, std::round(palette::kAnswer.b * 1000) / 10);
+    int fans = 0;
+    for (std::size_t at = svg.text.find(fan); at != std::string::npos; at = svg.text.find(fan, at + 1)) ++fans;
+    EXPECT_EQ(fans, 2);
+    EXPECT_EQ(svg.fills(palette::kAnswer), 1);
+    // Inside the fan (the middle direction, half its radius from the centre of mass) the panel
+    // is tinted; opposite it, it is not.
+    const Figure bare = synthesis_figure("tilt", scene, ForcePanel{"W", plan.actions, {scene.body->com}}, rr, plan.solutions);
+    const Image a = decode_png(render(fig, Format::Png)), b = decode_png(render(bare, Format::Png));
+    const Layout page = layout(fig);
+    ASSERT_EQ(page.panels.size(), 3U);
+    const Box& v = fig.panels[2].view;
+    const double radius = 0.2 * std::max(v.max.x() - v.min.x(), v.max.y() - v.min.y());
+    const double mid = -std::atan(2.0) / 2.0;
+    const Vec2 in = scene.body->com + 0.5 * radius * Vec2(std::cos(mid), std::sin(mid));
+    const Vec2 out = scene.body->com - 0.5 * radius * Vec2(std::cos(mid), std::sin(mid));
+    EXPECT_TRUE((Tint{a.at(page.to_page(2, in)), b.at(layout(bare).to_page(2, in))}.tinted()));
+    EXPECT_TRUE((Tint{a.at(page.to_page(2, out)), b.at(layout(bare).to_page(2, out))}.same()));
+}
+
+TEST(Answer, PushFigureMarksTheTouchSegment) {
+    // docs/planning.md by hand: the trailing edge (0, y), slip l, pushes (1, -1/2) for y in [3/16, 1/2].
+    const Scene scene = example("figure-3-block-along-wall.json");
+    const auto analysis = analyze(scene);
+    const ModeForces& rr = mode_of(analysis, "rr");
+    std::optional<PushCase> chosen;
+    for (const PushCase& c : plan_push(scene, rr, PushOptions{})) {
+        if (c.feature.kind == PushFeature::Kind::Edge && c.feature.index == 3 && c.slip == ContactMode::SlidingLeft) chosen = c;
+    }
+    ASSERT_TRUE(chosen);
+    const Figure fig = push_figure("push", scene, rr, *chosen);
+    const Svg svg{render(fig, Format::Svg)};
+    EXPECT_TRUE(svg.has_text_containing("touch (0, 0.1875)\u2013(0, 0.5)") ||
+                svg.has_text_containing("touch (0, 0.5)\u2013(0, 0.1875)"))
+        << "the touch segment in the caption";
+    EXPECT_EQ(svg.count_text("\u221226.57\u00B0"), 1);  // the direction (1, -1/2): -atan(1/2)
+    const Image img = decode_png(render(fig, Format::Png));
+    const Layout page = layout(fig);
+    for (double y : {0.25, 0.3125, 0.4375}) {  // on the segment, clear of the best push's point
+        EXPECT_TRUE(same(img.at(page.to_page(2, Vec2(0, y))), palette::kAnswer)) << y;
+    }
+    for (double y : {0.0625, 0.125}) {  // the edge below 3/16 is not where to touch
+        EXPECT_FALSE(same(img.at(page.to_page(2, Vec2(0, y))), palette::kAnswer)) << y;
+    }
+}
+
+TEST(Answer, ComplyFigureMarksTheSpringDirections) {
+    // docs/problems.md by hand: a force (x, -1) through (0, 2) inserts the peg for 0 <= x <= 4/5:
+    // directions from -90 degrees to atan2(-5, 4) = -51.34 degrees.
+    const Scene scene = example("problem-peg-in-hole.json");
+    const auto analysis = analyze(scene);
+    const ModeForces& rl = mode_of(analysis, "rl");
+    PlanContext context;
+    context.modes = analysis;
+    const ComplyPlan plan = plan_comply(rl, Vec2(0, 2), context);
+    const Svg svg{render(comply_figure("peg", scene, rl, plan), Format::Svg)};
+    EXPECT_EQ(svg.count_text("\u221290\u00B0"), 1);
+    EXPECT_EQ(svg.count_text("\u221251.34\u00B0"), 1);
+}
+
+TEST(Answer, ForcesFigureMarksTheRotationCentreOrTheTranslation) {
+    // tests/mechanics/test_paper_figures.cpp by hand: the peg on the lip slides in (rl) turning
+    // counter-clockwise about (4, -3/2); the block along the wall slides (rr) without turning.
+    const Scene lip = example("figure-4b-peg-on-the-lip.json");
+    const auto peg = analyze(lip);
+    std::size_t rl = 0;
+    while (peg.at(rl).mode.letters != "rl") ++rl;
+    const Svg a{render(forces_figure("4b", lip, peg, {rl}), Format::Svg)};
+    EXPECT_EQ(a.count_text("(4, \u22121.5) \u21BA"), 1);
+    EXPECT_TRUE(a.has_text_containing("rl: rotation about (4, \u22121.5) \u21BA"));
+    const Scene block = example("figure-3-block-along-wall.json");
+    const auto analysis = analyze(block);
+    std::size_t rr = 0;
+    while (analysis.at(rr).mode.letters != "rr") ++rr;
+    const Svg b{render(forces_figure("3", block, analysis, {rr}), Format::Svg)};
+    EXPECT_TRUE(b.has_text_containing("rr: translation along (1, 0)"));
+    EXPECT_FALSE(b.has_text_containing("rotation about"));
 }
 
 // ---------------------------------------------------------------- files

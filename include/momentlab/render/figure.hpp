@@ -33,7 +33,9 @@ inline constexpr Colour kBoth{0.478, 0.110, 0.588};     ///< +- sets (lines, poi
 inline constexpr Colour kBody{0.35, 0.35, 0.38};        ///< the moving body
 inline constexpr Colour kObstacle{0.55, 0.55, 0.55};    ///< fixed polygons
 inline constexpr Colour kFriction{0.180, 0.600, 0.310}; ///< friction cones at contacts
-inline constexpr Colour kGuide{0.62, 0.62, 0.66};       ///< contact normals and tangents
+inline constexpr Colour kGuide{0.62, 0.62, 0.66};       ///< contact normals and tangents, panel frames
+inline constexpr Colour kAxis{0.38, 0.38, 0.42};        ///< coordinates on the axes
+inline constexpr Colour kAnswer{0.827, 0.106, 0.447};   ///< a plan's answer: its arcs, touch segments, best action
 }  // namespace palette
 
 /// How a shape's outline is drawn; widths in points (1/72 inch).
@@ -72,12 +74,15 @@ struct Text {
     Vec2 offset = Vec2::Zero();
 };
 
-/// One plot: a view of the plane (kept at equal scale in x and y), a title, what is drawn.
+/// One plot: a view of the plane (kept at equal scale in x and y), a title, what is drawn, and
+/// a caption (one line below its axis; e.g. a plan's answer in words).
 struct Panel {
     std::string title;
     Box view;
     std::vector<Shape> shapes;
     std::vector<Text> texts;
+    std::string caption;
+    Colour caption_colour = palette::kInk;
 };
 
 /// A line of the legend: a swatch (a filled square, or a stroke) and its meaning.
@@ -87,7 +92,8 @@ struct LegendEntry {
     std::string text;
 };
 
-/// Panels side by side (`columns` per row), a title above and a legend below.
+/// Panels side by side (`columns` per row), each with its coordinates on the axes below and left
+/// of it, a title above and a legend below, in as many columns as the page's width holds.
 struct Figure {
     std::string title;
     std::vector<Panel> panels;

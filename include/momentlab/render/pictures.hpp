@@ -14,6 +14,8 @@
 #include "momentlab/mechanics/analysis.hpp"
 #include "momentlab/mechanics/closure.hpp"
 #include "momentlab/mechanics/scene.hpp"
+#include "momentlab/planning/comply.hpp"
+#include "momentlab/planning/push.hpp"
 #include "momentlab/render/figure.hpp"
 
 namespace momentlab::render {
@@ -63,17 +65,49 @@ void add_scene(Panel& panel, const Scene& scene, SceneStyle style);
 [[nodiscard]] Figure modes_figure(const std::string& title, const Scene& scene, std::optional<Box> view = std::nullopt);
 
 /// Figures 3 and 4: for each chosen mode (indices into `analysis`), the panels F_i (total),
-/// T_i (contact) and E_i (applied) side by side over the scene.
+/// T_i (contact) and E_i (applied) side by side over the scene; F_i's panel marks the mode's
+/// rotation centres (a point with its coordinates and sense, or the regions dashed) or says
+/// its translations.
 [[nodiscard]] Figure forces_figure(const std::string& title, const Scene& scene,
                                    const std::vector<ModeForces>& analysis, const std::vector<std::size_t>& modes,
                                    std::optional<Box> view = std::nullopt);
 
+/// A plan's answer, marked in palette::kAnswer on the solutions panel of a synthesis figure: the
+/// arcs of force directions through `at` as a fan with their ends in degrees, the segments where
+/// a finger may touch drawn thick, and the best action as an arrow (a push ends at its point,
+/// a tilt or a spring starts there). Empty parts are not drawn.
+struct Answer {
+    Vec2 at = Vec2::Zero();
+    std::vector<std::pair<double, double>> arcs;  ///< radians from +x, counter-clockwise from first to second
+    std::vector<std::pair<Vec2, Vec2>> touch;     ///< segments of the body's outline (a point: twice)
+    std::optional<Vec2> best_point;
+    Vec2 best_direction = Vec2::Zero();
+    bool best_is_push = false;                    ///< the arrow ends at best_point (a finger pushing)
+    std::string caption;                          ///< one line in the panel's corner
+};
+
 /// Figures 5 and 6: the achievable actions W (e.g. tilts: the forces through the centre of
 /// mass), the goal mode's applied wrenches E_i, and the solutions W ∩ E_i (the labels' hulls),
-/// side by side over the scene.
+/// side by side over the scene, with the answer marked on the solutions.
 [[nodiscard]] Figure synthesis_figure(const std::string& title, const Scene& scene, const ForcePanel& actions,
                                       const ModeForces& goal, const Cone& solutions,
-                                      std::optional<Box> view = std::nullopt);
+                                      std::optional<Box> view = std::nullopt, const Answer& answer = {});
+
+/// Figure 5 for a tilt plan (plan_tilt): W the forces through the centre of mass, its arcs of
+/// gravity directions and its best direction marked.
+[[nodiscard]] Figure tilt_figure(const std::string& title, const Scene& scene, const ModeForces& goal,
+                                 const DirectionPlan& plan, std::optional<Box> view = std::nullopt);
+
+/// A compliance plan (plan_comply): W the forces through the centre, its arcs of spring
+/// directions and its best direction marked.
+[[nodiscard]] Figure comply_figure(const std::string& title, const Scene& scene, const ModeForces& goal,
+                                   const ComplyPlan& plan, std::optional<Box> view = std::nullopt);
+
+/// Figure 6 for one pushing case (plan_push): W the finger's forces on the feature (the hull of
+/// its parts), the touch segments, the arc of push directions at the best push's point and the
+/// best push marked.
+[[nodiscard]] Figure push_figure(const std::string& title, const Scene& scene, const ModeForces& goal,
+                                 const PushCase& c, std::optional<Box> view = std::nullopt);
 
 /// The multi-contact friction cone of the scene (Figure 2 from a scene): one panel per
 /// contact's friction cone and their sum.

@@ -1,0 +1,90 @@
+#pragma once
+
+// What the picture builders of src/render share (pictures.cpp, plan_pictures.cpp): marks, number
+// formats and small shapes. Private to the render layer.
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "momentlab/render/pictures.hpp"
+
+namespace momentlab::render::drawing {
+
+inline constexpr char kMinusSign[] = "\u2212";
+inline constexpr char kPlusMinus[] = "\u00B1";
+inline constexpr char kCounterClockwise[] = "\u21BA";
+inline constexpr char kClockwise[] = "\u21BB";
+
+// 0 for a point, 1 for a segment / ray / line, 2 for a region with interior, -1 when empty.
+inline int dimension(const Region& r) {
+    const std::string k = r.kind();
+    if (k == "empty") return -1;
+    if (k == "point") return 0;
+    if (k == "segment" || k == "ray" || k == "line") return 1;
+    return 2;
+}
+
+inline std::string fmt(double x) {
+    std::ostringstream s;
+    s.precision(4);
+    s << (x == 0.0 ? 0.0 : x);
+    return s.str();
+}
+
+inline Colour darker(const Colour& c, double f) { return {c.r * f, c.g * f, c.b * f}; }
+
+
+inline double view_width(const Box& v) { return v.max.x() - v.min.x(); }
+inline double view_height(const Box& v) { return v.max.y() - v.min.y(); }
+inline Vec2 view_centre(const Box& v) { return (v.min + v.max) / 2.0; }
+
+inline Shape polyline(std::vector<Vec2> points, const Stroke& stroke) {
+    Shape s;
+    s.points = std::move(points);
+    s.stroke = stroke;
+    return s;
+}
+
+inline Shape dot(const Vec2& p, const Colour& colour, double radius) {
+    Shape s;
+    s.points = {p};
+    s.fill = Fill{colour, 1.0};
+    s.dot_radius = radius;
+    return s;
+}
+
+// An angle in degrees, two decimals at most: "−63.43°", "0°".
+inline std::string degrees_text(double radians) {
+    const double d = std::round(radians * 18000.0 / M_PI) / 100.0;
+    char digits[32];
+    std::snprintf(digits, sizeof digits, "%.2f", std::abs(d));
+    std::string text = digits;
+    while (text.back() == '0') text.pop_back();
+    if (text.back() == '.') text.pop_back();
+    return (d < 0.0 ? kMinusSign : "") + text + "\u00B0";
+}
+
+inline std::string point_text(const Vec2& p) {
+    auto coordinate = [](double x) { return (x < 0.0 ? std::string(kMinusSign) : std::string()) + fmt(std::abs(x)); };
+    return "(" + coordinate(p.x()) + ", " + coordinate(p.y()) + ")";
+}
+
+inline Vec2 unit(double angle) { return Vec2(std::cos(angle), std::sin(angle)); }
+
+// A panel's caption in the answer's colour.
+inline void set_caption(Panel& panel, const std::string& text) {
+    panel.caption = text;
+    panel.caption_colour = darker(palette::kAnswer, 0.8);
+}
+
+/// Panels of force sets over a faint scene, three to a row, sharing one view (the scene's and
+/// the sets' corners near it by default), with the labels' and the scene's legend.
+Figure scene_sets_figure(const std::string& title, const Scene& scene, const std::vector<ForcePanel>& sets,
+                         std::optional<Box> view);
+
+}  // namespace momentlab::render::drawing
