@@ -10,6 +10,7 @@
 #include "../common/examples.hpp"
 #include "../common/scenes.hpp"
 #include "../common/sizes.hpp"
+#include "momentlab/mechanics/advanced.hpp"
 #include "momentlab/mechanics/margin.hpp"
 
 namespace momentlab {
