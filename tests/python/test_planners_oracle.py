@@ -218,14 +218,14 @@ def test_push_line_bands_against_the_oracle(seed):
     if direction == [0.0, 0.0]:
         direction = [1.0, 0.0]
     bands = ml.push_line(a, point, direction, gravity=gravity)
-    assert bands[0]["from"] == 0 and bands[-1]["to"] == "unbounded"
+    assert bands[0]["from"] == 0 and bands[-1]["to"] == math.inf
     for prev, band in zip(bands, bands[1:]):
         assert prev["to"] == band["from"] and prev["to_closed"] != band["from_closed"]
     m, com = oracle.exact(doc["body"]["mass"]), [oracle.exact(x) for x in doc["body"]["com"]]
     g = oracle.wrench_at(com, (m * oracle.exact(gravity[0]), m * oracle.exact(gravity[1])))
     u = oracle.wrench_at([oracle.exact(x) for x in point], [oracle.exact(x) for x in direction])
     for band in bands:
-        if band["to"] == "unbounded":
+        if band["to"] == math.inf:
             lam = Fraction(band["from"]) * 2 + 1
         elif band["to"] - band["from"] > 1e-9 * max(1.0, band["to"]):
             lam = (Fraction(band["from"]) + Fraction(band["to"])) / 2
