@@ -5,11 +5,17 @@ SHELL := /bin/bash
 BUILD ?= build/release
 JOBS ?= 2
 PYTHON := /usr/bin/python3
-CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release -DMOMENTLAB_PYTHON=ON -DPython_EXECUTABLE=$(PYTHON)
+# ccache: the pip install's build (tests/python/pip_install.sh) compiles the objects of the release
+# build again, and `make demo` then `make test` build the same things; paths are hashed relative to
+# the checkout (CCACHE_BASEDIR), so build directories share entries.
+CCACHE := -DCMAKE_CXX_COMPILER_LAUNCHER=ccache
+export CCACHE_BASEDIR := $(CURDIR)
+export CCACHE_NOHASHDIR := 1
+CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release -DMOMENTLAB_PYTHON=ON -DPython_EXECUTABLE=$(PYTHON) $(CCACHE)
 # Where `make python` installs momentlab (the library, the CLI and the Python module).
 PREFIX ?= /usr/local
 
-APT_PACKAGES := g++ cmake make libeigen3-dev libgmp-dev nlohmann-json3-dev libcli11-dev \
+APT_PACKAGES := g++ cmake make ccache libeigen3-dev libgmp-dev nlohmann-json3-dev libcli11-dev \
                 libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev libcairo2-dev pkg-config libbox2d-dev \
                 clang libclang-rt-14-dev \
                 python3-dev pybind11-dev python3-numpy python3-matplotlib python3-pytest python3-pip \
@@ -24,7 +30,7 @@ FUZZ_TARGETS := fuzz_scene_reader fuzz_labels_reader fuzz_cone fuzz_query
 FUZZ_SECONDS ?= 600
 SMOKE_SECONDS ?= 5
 
-.PHONY: all deps build python web test-web demo figures test test-release test-sanitizers fuzz-build test-fuzz fuzz large-inputs instructions bench validate validate-long clean
+.PHONY: all deps build python web test-web demo figures test test-release san-build test-sanitizers fuzz-build test-fuzz fuzz large-inputs instructions bench validate validate-long clean
 
 all: build
 
@@ -89,31 +95,34 @@ figures: build
 	mkdir -p docs/figures; cp $$tmp/*.png docs/figures/; rm -rf $$tmp; ls docs/figures
 
 # Every test: the suite in the release build, again under AddressSanitizer and
-# UndefinedBehaviorSanitizer (any report fails), each fuzz target briefly on its corpus, and the
-# WebAssembly module and page (node, chromium).
+# UndefinedBehaviorSanitizer (any report fails) with clang, each fuzz target (built from the same
+# sanitized objects) briefly on its corpus, and the WebAssembly module and page (node, chromium).
 test: test-release test-sanitizers test-fuzz test-web
 
 test-release: python
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 
-test-sanitizers: deps
-	cmake --preset asan-ubsan >/dev/null
+san-build: deps
+	cmake --preset asan-ubsan $(CCACHE) >/dev/null
 	cmake --build $(SAN_BUILD) -j$(JOBS)
+
+test-sanitizers: san-build
 	cd $(SAN_BUILD) && ctest --output-on-failure -j$(JOBS)
 
 $(FUZZ_BUILD)/CMakeCache.txt: | deps
-	cmake --preset fuzz >/dev/null
+	cmake --preset fuzz $(CCACHE) >/dev/null
 
 fuzz-build: deps $(FUZZ_BUILD)/CMakeCache.txt
 	cmake --build $(FUZZ_BUILD) -j$(JOBS)
 
 # The committed seed corpora are read, never written: new inputs go to a scratch directory.
-# malloc_context_size=0: ASan keeps no allocation stacks (3x the executions per second).
-test-fuzz: fuzz-build
+# malloc_context_size=0: ASan keeps no allocation stacks (3x the executions per second). The smoke
+# runs use the sanitizer build's targets; `make fuzz` builds optimised ones.
+test-fuzz: san-build
 	@for t in $(FUZZ_TARGETS); do \
 	    scratch=$$(mktemp -d); \
 	    echo "$$t: $(SMOKE_SECONDS) s on fuzz/corpus/$$t"; \
-	    ASAN_OPTIONS=malloc_context_size=0 $(FUZZ_BUILD)/fuzz/$$t -max_total_time=$(SMOKE_SECONDS) -max_len=4096 -artifact_prefix=$$scratch/ \
+	    ASAN_OPTIONS=malloc_context_size=0 $(SAN_BUILD)/fuzz/$$t -max_total_time=$(SMOKE_SECONDS) -max_len=4096 -artifact_prefix=$$scratch/ \
 	        $$scratch fuzz/corpus/$$t 2>$$scratch/log || { tail -40 $$scratch/log; exit 1; }; \
 	    grep -E '^Done' $$scratch/log; rm -rf $$scratch; \
 	done

@@ -29,7 +29,9 @@ class CMakeBuild(build_ext):
         jobs = os.environ.get("MOMENTLAB_JOBS", "2")
         subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release",
                         "-DBUILD_SHARED_LIBS=OFF", "-DMOMENTLAB_TESTS=OFF", "-DMOMENTLAB_PYTHON=ON",
-                        f"-DPython_EXECUTABLE={sys.executable}"], check=True)
+                        f"-DPython_EXECUTABLE={sys.executable}"]
+                       # ccache, when there is one, serves the objects a build of this checkout made.
+                       + (["-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"] if shutil.which("ccache") else []), check=True)
         subprocess.run(["cmake", "--build", str(build_dir), "--target", "_momentlab", f"-j{jobs}"], check=True)
         built = next((build_dir / "python" / "momentlab").glob("_momentlab*.so"))
         target = Path(self.get_ext_fullpath(ext.name))
