@@ -14,6 +14,7 @@
 #include "coulomb_lcp.hpp"
 #include "momentlab/geometry/polygon.hpp"
 #include "momentlab/mechanics/find_contacts.hpp"
+#include "momentlab/mechanics/advanced.hpp"
 #include "momentlab/mechanics/query_index.hpp"
 
 namespace {
@@ -169,17 +170,19 @@ void BM_oneshot_direct(benchmark::State& state) {
 }
 BENCHMARK(BM_oneshot_direct)->DenseRange(2, 8, 2)->Unit(benchmark::kMicrosecond);
 
-// The same questions by query_once: double arithmetic with certified error bounds, the exact
-// path only where a sign is not certified (the counter says how many of the 512 scenes took it).
+// The same questions by query(scene, e), the front door: double arithmetic with certified error
+// bounds, the exact path only where a sign is not certified (the counter says how many of the 512
+// scenes took it).
 void BM_oneshot_once(benchmark::State& state) {
     const auto pool = fresh_pool(static_cast<int>(state.range(0)));
     std::size_t i = 0, found = 0;
     int exact = 0;
     for (auto _ : state) {
         const Question& q = pool[i % kPool];
-        const OneShotAnswer a = query_once(q.scene, q.wrench);
+        QueryDiagnostics how;
+        const QueryAnswer a = query(q.scene, q.wrench, {}, how);
         found += a.letters.size();
-        if (i++ < kPool) exact += !a.filtered;
+        if (i++ < kPool) exact += !how.filtered;
     }
     benchmark::DoNotOptimize(found);
     state.SetItemsProcessed(state.iterations());
@@ -265,10 +268,11 @@ void BM_family_query(benchmark::State& state) {
     const Scene s = family(static_cast<int>(state.range(0)), state.range(1));
     const Vec3 e(0.1, 1.0, 0.2);
     SceneAnswer a;
-    for (auto _ : state) a = query_scene(s, e);
+    QueryDiagnostics work;
+    for (auto _ : state) a = query_scene(s, e, {}, &work);
     state.SetLabel(kFamilies[state.range(0)]);
     state.counters["modes"] = static_cast<double>(a.mode_count);
-    state.counters["built"] = static_cast<double>(a.built);
+    state.counters["built"] = static_cast<double>(work.built);
 }
 BENCHMARK(BM_family_query)
     ->ArgsProduct({{0, 1}, {100000}})
@@ -366,7 +370,7 @@ public:
             std::printf("%10d %16.0f %16.0f %10.1f\n", n, 1.0 / q->second, 1.0 / l->second, l->second / q->second);
         }
         std::printf("\nA new scene: every mode and its sets plus one query (analyze), the direct path\n"
-                    "(query_scene), one question in certified doubles (query_once), the LCP assembled\n"
+                    "(query_scene), one question in certified doubles (query), the LCP assembled\n"
                     "and solved by Siconos' Lemke; microseconds per question over 512 scenes, and\n"
                     "each momentlab time over Lemke's\n");
         std::printf("%10s %10s %10s %10s %10s %9s %9s %9s\n", "contacts", "analyze", "direct", "once", "lemke", "ratio",

@@ -10,6 +10,7 @@
 #include <span>
 #include <vector>
 
+#include "momentlab/mechanics/advanced.hpp"
 #include "momentlab/momentlab.hpp"
 
 int main(int argc, char** argv) {

@@ -3,7 +3,7 @@
 // exactly the modes of the per-mode exact test, for every finite wrench and its scalings
 // (which cross the range of the index's float filter), and reject non-finite wrenches. The
 // first finite wrench is also checked independently: mode by mode against the exact LP oracle
-// (reference/mode_oracle.hpp), which reads the scene's raw numbers. query_once must give the
+// (reference/mode_oracle.hpp), which reads the scene's raw numbers. query(scene, e) must give the
 // same modes for every wrench and scaling, whether its certified doubles decide or not.
 #include <algorithm>
 #include <cmath>
@@ -14,6 +14,7 @@
 
 #include "fuzz_check.hpp"
 #include "mode_oracle.hpp"
+#include "momentlab/mechanics/advanced.hpp"
 #include "momentlab/mechanics/query_index.hpp"
 
 using namespace momentlab;
@@ -68,11 +69,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             const QueryResult expected = query(analysis, w);
             FUZZ_REQUIRE(modes == expected.modes);
             FUZZ_REQUIRE(v == expected.verdict);
-            // query_once (certified doubles, or the exact path): the same modes, sorted.
+            // query(scene, e) (certified doubles, or the exact path): the same modes, sorted.
             std::vector<std::string> letters;
             for (std::size_t i : expected.modes) letters.push_back(analysis[i].mode.letters);
             std::sort(letters.begin(), letters.end());
-            const OneShotAnswer once = query_once(scene, w);
+            const QueryAnswer once = query(scene, w);
             FUZZ_REQUIRE(once.letters == letters);
             FUZZ_REQUIRE(once.verdict == expected.verdict);
         }

@@ -14,6 +14,7 @@
 #include "fuzz_check.hpp"
 #include "io/json_read.hpp"
 #include "mode_oracle.hpp"
+#include "momentlab/mechanics/advanced.hpp"
 #include "momentlab/io/scene_json.hpp"
 #include "momentlab/mechanics/query_index.hpp"
 

@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 
+#include "momentlab/mechanics/advanced.hpp"
 #include "momentlab/geometry/polygon.hpp"
 #include "momentlab/mechanics/analysis.hpp"
 #include "momentlab/mechanics/find_contacts.hpp"

@@ -18,6 +18,7 @@
 
 #include "coulomb_lcp.hpp"
 #include "mode_oracle.hpp"
+#include "momentlab/mechanics/advanced.hpp"
 #include "momentlab/mechanics/analysis.hpp"
 #include "random_inputs.hpp"
 #include "report.hpp"

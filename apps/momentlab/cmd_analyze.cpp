@@ -21,7 +21,13 @@ struct AnalyzeOptions {
 };
 
 int run(const AnalyzeOptions& o) {
-    Problem p = load_problem(o.file, "analyze", o.quasi_static);
+    TerminalProgress progress;
+    Problem problem = open_problem(o.file, o.quasi_static, progress);
+    struct {
+        const Scene& scene;
+        std::vector<ModeForces> analysis;
+    } p{problem.scene(), problem.analysis("analyze")};
+    progress.finish();
     if (o.json) {
         // Written as it is made, one mode at a time: on 10^5 contacts the document is hundreds
         // of megabytes, the text nlohmann's dump(2) writes for {"modes": [...]}.

@@ -32,12 +32,13 @@ void print_test(const char* name, const ClosureTest& t, bool form) {
 
 int run(const ClosureCommandOptions& o) {
     const std::optional<Box> view = checked_picture_options(o.picture, {o.file});
-    ClosureOptions options;
-    if (!o.reference.empty()) options.reference = checked_points(o.reference, "--reference", 1).front();
-    if (o.length && !(*o.length > 0.0)) throw InputError("--length", "expected a length > 0");
-    options.length = o.length;
-    const Scene scene = read_scene_file(o.file);
-    const Closure c = closure(scene, options);
+    const std::optional<Vec2> reference =
+        o.reference.empty() ? std::nullopt : std::optional<Vec2>(checked_points(o.reference, "--reference", 1).front());
+    if (o.length) (void)checked_length(*o.length, "--length");
+    TerminalProgress progress;
+    const Problem p = open_problem(o.file, false, progress);
+    const Scene& scene = p.scene();
+    const Closure c = p.closure(reference, o.length);
     if (o.json) {
         std::cout << to_json(c).dump() << "\n";
     } else {

@@ -41,7 +41,13 @@ int run(const DrawOptions& o) {
                       o.picture);
         return 0;
     }
-    const Problem p = load_problem(o.file, "--what forces", o.quasi_static);
+    TerminalProgress progress;
+    Problem problem = open_problem(o.file, o.quasi_static, progress);
+    const struct {
+        const Scene& scene;
+        const std::vector<ModeForces>& analysis;
+    } p{problem.scene(), problem.analysis("--what forces")};
+    progress.finish();
     std::vector<std::size_t> chosen;
     for (const std::string& letters : o.modes) {
         chosen.push_back(static_cast<std::size_t>(&find_mode(p.analysis, letters, "--mode") - p.analysis.data()));

@@ -29,6 +29,7 @@ struct PlanOptions {
     bool quasi_static = false;
     std::vector<double> gravity;
     std::vector<double> fixed;
+    std::vector<double> forces;
 };
 
 // Segments of a feature as text: "(0, 0.5) - (0, 0.25), (1, 0)" (a point once).
@@ -53,15 +54,6 @@ std::string margins_text(const QueryMargins& m) {
     const auto said = [](double d) { return std::isfinite(d) ? fmt(d) : std::string("unbounded"); };
     return "margin " + said(m.inside.empty() ? 0.0 : m.inside.front()) + " to the boundary of the goal's set, " +
            (m.to_other ? said(*m.to_other) : std::string("unbounded")) + " to the nearest other mode's set";
-}
-
-// The context of a plan: every mode, the metric of margins, and the fixed wrench.
-PlanContext plan_context(const Scene& scene, const std::vector<ModeForces>& analysis, const std::optional<Exact3>& fixed) {
-    PlanContext context;
-    context.modes = analysis;
-    context.fixed = fixed;
-    context.metric = default_metric(scene);
-    return context;
 }
 
 // The intervals, a single direction said as such; the best direction and its margin only when
@@ -113,14 +105,14 @@ bool single_directions(const DirectionPlan& plan) {
 
 int run_tilt(const PlanOptions& o) {
     const std::optional<Box> view = checked_picture_options(o.picture, {o.file});
-    const Problem p = load_problem(o.file, "plan tilt", o.quasi_static);
-    const Scene& scene = p.scene;
-    const ModeForces& goal = find_mode(p.analysis, o.goal, "--goal");
-    if (!o.gravity.empty()) {
-        throw InputError("--gravity", "a tilt turns gravity itself: give a fixed wrench acting besides it with --wrench");
-    }
-    const std::optional<Exact3> fixed = fixed_wrench(scene, {}, o.fixed);
-    const DirectionPlan plan = plan_tilt(scene, goal, plan_context(scene, p.analysis, fixed));
+    TerminalProgress progress;
+    Problem p = open_problem(o.file, o.quasi_static, progress);
+    const Load load = load_of(o.gravity, o.fixed, o.forces);
+    const DirectionPlan plan = p.plan_tilt(o.goal, load);
+    progress.finish();
+    const Scene& scene = p.scene();
+    const ModeForces& goal = p.goal(o.goal);
+    const std::optional<Exact3> fixed = p.wrench_of(load);
     if (o.json) {
         nlohmann::json out = to_json(plan);
         out["goal"] = o.goal;
@@ -133,7 +125,7 @@ int run_tilt(const PlanOptions& o) {
                   << ": gravity directions, radians from +x (boundaries shared with a neighbouring mode)\n";
         if (fixed) std::cout << "  with the fixed wrench " << fmt(to_double(*fixed)) << " acting too\n";
         print_directions(plan, plan.knife_edge || single_directions(plan));
-        if (fixed) print_best_bands(p.analysis, *fixed, scene.body->com, plan.best);
+        if (fixed) print_best_bands(p.analysis(), *fixed, scene.body->com, plan.best);
     }
     if (!o.picture.files.empty()) {
         const std::string title = o.picture.title.empty() ? stem(o.file) + ": tilts that produce mode " + o.goal
@@ -147,14 +139,16 @@ int run_comply(const PlanOptions& o) {
     const std::optional<Box> view = checked_picture_options(o.picture, {o.file});
     const std::vector<Vec2> centre = o.centre.empty() ? std::vector<Vec2>{} : checked_points(o.centre, "--centre", 1);
     if (!o.picture.files.empty() && centre.empty()) throw InputError("-o", "a picture shows one centre: give --centre X Y");
-    const Problem p = load_problem(o.file, "plan comply", o.quasi_static);
-    const Scene& scene = p.scene;
-    const ModeForces& goal = find_mode(p.analysis, o.goal, "--goal");
-    const std::optional<Exact3> fixed = fixed_wrench(scene, o.gravity, o.fixed);
-    const PlanContext context = plan_context(scene, p.analysis, fixed);
-    const Labels region = compliance_labels(goal, context);
-    std::optional<ComplyPlan> plan;
-    if (!centre.empty()) plan = plan_comply(goal, centre.front(), context);
+    TerminalProgress progress;
+    Problem p = open_problem(o.file, o.quasi_static, progress);
+    const Load load = load_of(o.gravity, o.fixed, o.forces);
+    const ComplyAnswer answer = p.plan_comply(o.goal, centre.empty() ? std::nullopt : std::optional<Vec2>(centre.front()), load);
+    progress.finish();
+    const Scene& scene = p.scene();
+    const ModeForces& goal = p.goal(o.goal);
+    const std::optional<Exact3> fixed = p.wrench_of(load);
+    const Labels& region = answer.labels;
+    const std::optional<ComplyPlan>& plan = answer.centre;
     if (o.json) {
         nlohmann::json out = {{"goal", o.goal}, {"labels", to_json(region)}};
         if (plan) {
@@ -175,7 +169,7 @@ int run_comply(const PlanOptions& o) {
             } else {
                 std::cout << "; spring force (offset) directions, radians from +x:\n";
                 print_directions(plan->directions, plan->verdict != CentreVerdict::Works);
-                if (fixed) print_best_bands(p.analysis, *fixed, plan->centre, plan->directions.best);
+                if (fixed) print_best_bands(p.analysis(), *fixed, plan->centre, plan->directions.best);
             }
         }
     }
@@ -203,32 +197,20 @@ std::string case_line(const PushCase& c) {
 
 int run_push(const PlanOptions& o) {
     const std::optional<Box> view = checked_picture_options(o.picture, {o.file});
-    if (!(o.mu >= 0.0) || !std::isfinite(o.mu) || !magnitude_in_range(o.mu)) {
-        throw InputError("--mu", "expected a finite mu >= 0 (0 or 1e-60 .. 1e60)");
-    }
-    if (o.edge && o.vertex) throw InputError("--vertex", "give --edge or --vertex, not both");
     if (!o.picture.files.empty() && ((!o.edge && !o.vertex) || o.slip.empty())) {
         throw InputError("-o", "a picture shows one case: give --edge or --vertex, and --slip");
     }
-    const Scene scene = read_scene_file(o.file);
-    if (!scene.body) throw InputError("$", "missing field \"body\" (plan push needs its mass, com, inertia and polygon)");
-    const std::size_t n = scene.body->polygon.size();
-    if (n < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
-    if (o.edge && *o.edge >= n) throw InputError("--edge", "the body has edges 0 .. " + std::to_string(n - 1));
-    if (o.vertex && *o.vertex >= n) throw InputError("--vertex", "the body has vertices 0 .. " + std::to_string(n - 1));
     TerminalProgress progress;
-    const std::vector<ModeForces> analysis = analyze(scene, AnalysisOptions{o.quasi_static, progress.callback()});
+    Problem p = open_problem(o.file, o.quasi_static, progress);
+    const Load load = load_of(o.gravity, o.fixed, o.forces);
+    PushRequest request{o.mu, o.ignore_interference, o.edge, o.vertex, std::nullopt};
+    if (!o.slip.empty()) request.slip = contact_mode(o.slip[0]);
+    const std::vector<PushCase> cases = p.plan_push(o.goal, request, load);
     progress.finish();
-    const ModeForces& goal = find_mode(analysis, o.goal, "--goal");
-    const PushOptions options{o.mu, o.ignore_interference};
-    const std::optional<Exact3> fixed = fixed_wrench(scene, o.gravity, o.fixed);
-    std::vector<PushCase> cases;
-    for (PushCase& c : plan_push(scene, goal, options, plan_context(scene, analysis, fixed))) {
-        const bool is_edge = c.feature.kind == PushFeature::Kind::Edge;
-        const bool feature_ok = (!o.edge && !o.vertex) || (o.edge && is_edge && c.feature.index == *o.edge) ||
-                                (o.vertex && !is_edge && c.feature.index == *o.vertex);
-        if (feature_ok && (o.slip.empty() || letter(c.slip) == o.slip[0])) cases.push_back(std::move(c));
-    }
+    const Scene& scene = p.scene();
+    const std::vector<ModeForces>& analysis = p.analysis();
+    const ModeForces& goal = p.goal(o.goal);
+    const std::optional<Exact3> fixed = p.wrench_of(load);
     const char* interference = o.ignore_interference ? "ignored" : "considered";
     if (o.json) {
         nlohmann::json out = {{"goal", o.goal}, {"mu", o.mu}, {"interference", interference}, {"cases", nlohmann::json::array()}};
@@ -310,6 +292,7 @@ std::function<int()> add_plan_command(CLI::App& app) {
     tilt->add_option("--wrench", opts->fixed, "FX FY TAU: a wrench acting besides the tilted gravity (docs/planning.md)")
         ->expected(3)
         ->transform(number_check());
+    add_force_option(tilt, opts->forces, "besides the tilted gravity");
     for (CLI::App* cmd : {push, comply}) {
         cmd->add_option("--gravity", opts->gravity, "GX GY: gravity acting on the body through its centre of mass, besides the push")
             ->expected(2)
@@ -317,6 +300,7 @@ std::function<int()> add_plan_command(CLI::App& app) {
         cmd->add_option("--wrench", opts->fixed, "FX FY TAU: a fixed wrench acting besides the push (docs/planning.md)")
             ->expected(3)
             ->transform(number_check());
+        add_force_option(cmd, opts->forces, "besides the push");
     }
     for (CLI::App* cmd : {tilt, push, comply}) cmd->add_flag("--quasi-static", opts->quasi_static, "neglect inertia: the applied wrench balances the contact wrench, E = -T (docs/design.md)");
     return [opts, tilt, push, comply] {

@@ -86,12 +86,8 @@ void TerminalProgress::finish() {
     }
 }
 
-Problem load_problem(const std::string& path, const std::string& command, bool quasi_static) {
-    Problem p;
-    p.scene = read_scene_file(path);
-    TerminalProgress progress;
-    p.analysis = analyze_input(p.scene, command, AnalysisOptions{quasi_static, progress.callback()});
-    return p;
+Problem open_problem(const std::string& path, bool quasi_static, TerminalProgress& progress) {
+    return Problem(read_scene_file(path), quasi_static, InputNames::command_line(), progress.callback());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -111,8 +107,8 @@ const CLI::Validator& number_check() {
             const double x = std::strtod(s.c_str(), &end);
             if (end != s.c_str() + s.size()) return "expected a number, got \"" + printable(s) + "\"";
             if (x == 0.0 && nonzero_digits(s)) {
-                return "\"" + printable(s) + "\" is too small for a double: it would be taken as 0 (expected 0 or a "
-                       "magnitude 1e-60 .. 1e60)";
+                return "\"" + printable(s) + "\" is too small for a double: it would be taken as 0 (expected " +
+                       std::string(kMagnitudeRange) + ")";
             }
             return {};
         },
@@ -132,29 +128,25 @@ const CLI::Validator& index_check() {
     return check;
 }
 
-Vec3 checked_wrench(double fx, double fy, double tau, const std::string& where) {
-    const Vec3 e(fx, fy, tau);
-    if (!e.allFinite()) throw InputError(where, "expected finite numbers FX FY TAU");
-    if (!magnitude_in_range(e.cwiseAbs().maxCoeff())) {
-        throw InputError(where, "the wrench's magnitude is out of range (expected 0 or 1e-60 .. 1e60)");
+Load load_of(const std::vector<double>& gravity, const std::vector<double>& wrench, const std::vector<double>& forces) {
+    Load load;
+    if (!gravity.empty()) load.gravity = checked_points(gravity, "--gravity", 1).front();
+    if (!wrench.empty()) {
+        if (wrench.size() != 3) throw InputError("--wrench", "expected three numbers FX FY TAU");
+        load.wrench = Vec3(wrench[0], wrench[1], wrench[2]);
     }
-    return e;
+    if (forces.size() % 4 != 0) throw InputError("--force", "expected four numbers X Y FX FY for each --force");
+    for (std::size_t i = 0; i < forces.size(); i += 4) {
+        load.forces.emplace_back(Vec2(forces[i], forces[i + 1]), Vec2(forces[i + 2], forces[i + 3]));
+    }
+    return load;
 }
 
-std::optional<Exact3> fixed_wrench(const Scene& scene, const std::vector<double>& gravity, const std::vector<double>& wrench,
-                                   const std::string& gravity_option, const std::string& wrench_option) {
-    std::optional<Exact3> out;
-    if (!gravity.empty()) {
-        const Vec2 g = checked_points(gravity, gravity_option, 1).front();
-        if (!scene.body) throw InputError("$", "missing field \"body\" (" + gravity_option + " acts on its mass through its centre of mass)");
-        out = gravity_wrench(*scene.body, g);
-    }
-    if (!wrench.empty()) {
-        if (wrench.size() != 3) throw InputError(wrench_option, "expected three numbers FX FY TAU");
-        const Exact3 w = exact(checked_wrench(wrench[0], wrench[1], wrench[2], wrench_option));
-        out = out ? *out + w : w;
-    }
-    return out;
+void add_force_option(CLI::App* cmd, std::vector<double>& forces, const char* what) {
+    cmd->add_option("--force", forces, std::string("X Y FX FY: a force (FX, FY) acting through (X, Y), ") + what + " (repeatable)")
+        ->expected(4)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+        ->transform(number_check());
 }
 
 std::string magnitude_text(const MagnitudeRange& range) {
@@ -188,13 +180,7 @@ std::vector<Vec2> checked_points(const std::vector<double>& values, const std::s
                                      ", got " + std::to_string(values.size()) + " number" + (values.size() == 1 ? "" : "s"));
     }
     std::vector<Vec2> out;
-    for (std::size_t i = 0; i < values.size(); i += 2) {
-        const Vec2 p(values[i], values[i + 1]);
-        if (!p.allFinite() || !magnitude_in_range(p.cwiseAbs().maxCoeff())) {
-            throw InputError(option, "expected finite X Y, 0 or of magnitude 1e-60 .. 1e60");
-        }
-        out.push_back(p);
-    }
+    for (std::size_t i = 0; i < values.size(); i += 2) out.push_back(checked_vector(Vec2(values[i], values[i + 1]), option));
     return out;
 }
 
@@ -235,12 +221,8 @@ std::optional<Box> checked_picture_options(const PictureOptions& options, const 
     }
     if (options.view.empty()) return std::nullopt;
     const auto& v = options.view;
-    const bool finite = std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
-    if (v.size() != 4 || !finite || !(v[0] < v[2]) || !(v[1] < v[3]) ||
-        !magnitude_in_range(std::max(std::abs(v[2] - v[0]), std::abs(v[3] - v[1])))) {
-        throw InputError("--view", "expected finite XMIN YMIN XMAX YMAX with XMIN < XMAX and YMIN < YMAX");
-    }
-    return Box{Vec2(v[0], v[1]), Vec2(v[2], v[3])};
+    if (v.size() != 4) return checked_view(NAN, NAN, NAN, NAN, "--view");
+    return checked_view(v[0], v[1], v[2], v[3], "--view");
 }
 
 void write_picture(const render::Figure& figure, const PictureOptions& options) {

@@ -55,13 +55,9 @@ private:
     std::shared_ptr<State> state_;
 };
 
-struct Problem {
-    Scene scene;
-    std::vector<ModeForces> analysis;
-};
-/// The scene of `path` and its analysis; the body is required unless quasi-static (`command`
-/// names what needs it in the message).
-Problem load_problem(const std::string& path, const std::string& command, bool quasi_static = false);
+/// The problem of the scene file `path` (app/problem.hpp), named with the command line's option
+/// names; long work reports to `progress`.
+Problem open_problem(const std::string& path, bool quasi_static, TerminalProgress& progress);
 
 // find_mode: io/scene_json.hpp.
 
@@ -75,22 +71,19 @@ const CLI::Validator& number_check();
 /// A CLI11 check for index options (--edge, --vertex): digits only, not empty.
 const CLI::Validator& index_check();
 
-/// An applied wrench read from the command line or a wrench file: finite, 0 or with its largest
-/// coordinate of magnitude 1e-60 .. 1e60, like every vector read (docs/reliability.md).
-Vec3 checked_wrench(double fx, double fy, double tau, const std::string& where);
-
-/// The wrench acting whatever the controller does: gravity (--gravity GX GY, an acceleration
-/// through the body's centre of mass) plus --wrench FX FY TAU, exactly; none when neither is given.
-/// `gravity_option`/`wrench_option` name the options in messages.
-std::optional<Exact3> fixed_wrench(const Scene& scene, const std::vector<double>& gravity, const std::vector<double>& wrench,
-                                   const std::string& gravity_option = "--gravity", const std::string& wrench_option = "--wrench");
+/// The load of --gravity GX GY, --wrench FX FY TAU and --force X Y FX FY (repeatable; the
+/// numbers of every --force in one list): the wrench acting besides a controlled action, or the
+/// applied wrench of a question (the problem checks the numbers).
+Load load_of(const std::vector<double>& gravity, const std::vector<double>& wrench, const std::vector<double>& forces);
+/// Adds --force X Y FX FY (repeatable) to a command.
+void add_force_option(CLI::App* cmd, std::vector<double>& forces, const char* what);
 /// "from 4.905 to 9.81", "9.81 only", "from 4.905 up": a range of magnitudes.
 std::string magnitude_text(const MagnitudeRange& range);
 /// The magnitude bands, one per line: "  [0, 4.905)   ff   unique".
 void print_bands(const std::vector<MagnitudeBand>& bands, const std::vector<ModeForces>& analysis);
 
-/// Points given as a flat list X Y X Y ... (--at, --centre): an even count of finite numbers in
-/// range; `count` pairs when given.
+/// Points given as a flat list X Y X Y ... (--at, --centre): an even count, each point a vector
+/// in range (app/checks.hpp); `count` pairs when given.
 std::vector<Vec2> checked_points(const std::vector<double>& values, const std::string& option,
                                  std::optional<std::size_t> count = std::nullopt);
 

@@ -29,6 +29,8 @@
 /// decision is the exact sign of a polynomial in the input doubles (`Dyadic`, `ExactVector`).
 /// Conventions (signs, units, mode letters) are in docs/design.md.
 
+#include "momentlab/app/checks.hpp"
+#include "momentlab/app/problem.hpp"
 #include "momentlab/core/dyadic.hpp"
 #include "momentlab/core/exact.hpp"
 #include "momentlab/core/predicates.hpp"

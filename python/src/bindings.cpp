@@ -69,24 +69,19 @@ Array real_array(const py::handle& value, const std::string& what) {
     return a;
 }
 
-// Every coordinate within the CLI's range for numbers (0, or magnitudes 1e-60 .. 1e60).
+// A vector by the one rule of every front end (app/checks.hpp): finite, its largest coordinate 0
+// or of magnitude 1e-60 .. 1e60.
 template <class V>
 void check_magnitude(const V& v, const std::string& what) {
-    if (!v.allFinite()) throw InputError(what, "expected finite numbers");
-    for (Eigen::Index k = 0; k < v.size(); ++k) {
-        if (!magnitude_in_range(std::fabs(v(k)))) {
-            throw InputError(what, "out of range: each number must be 0 or of magnitude 1e-60 .. 1e60");
-        }
+    if constexpr (V::RowsAtCompileTime == 2 || V::RowsAtCompileTime == 3) {
+        (void)checked_vector(v, what);
+    } else {
+        for (Eigen::Index k = 0; k < v.size(); ++k) (void)checked_number(v(k), what);
     }
 }
 
 // A number in the CLI's range; `what` names it in errors.
-double number_of(double x, const std::string& what) {
-    if (!std::isfinite(x) || !magnitude_in_range(std::fabs(x))) {
-        throw InputError(what, "expected a finite number, 0 or of magnitude 1e-60 .. 1e60");
-    }
-    return x;
-}
+double number_of(double x, const std::string& what) { return checked_number(x, what); }
 
 // A finite vector of K coordinates from anything numpy reads as one; `what` names it in errors.
 template <int K>
@@ -210,70 +205,59 @@ void warn_all(const InputWarnings& warnings) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// An analysis with its scene and its compiled index.
+// An analysis: the scene's Problem (app/problem.hpp) with its analysis and index made.
 
 struct Analysis {
-    Scene scene;
-    std::vector<ModeForces> modes;
-    QueryIndex index;
+    Problem problem;
+    const std::vector<ModeForces>& modes;
 
-    Analysis(Scene s, bool quasi_static)
-        : scene(std::move(s)), modes(analyze_input(scene, "analyze", AnalysisOptions{quasi_static})), index(modes) {}
+    Analysis(Scene s, bool quasi_static) : problem(std::move(s), quasi_static), modes(problem.analysis("analyze")) {
+        (void)problem.index();
+    }
 
-    const ModeForces& mode(const std::string& letters, const char* option) const { return find_mode(modes, letters, option); }
+    const Scene& scene() const { return problem.scene(); }
+    const ModeForces& mode(const std::string& letters) { return problem.goal(letters); }
 };
 
 // The modes of a batch of wrenches, one row per wrench, without the interpreter's lock.
-py::array_t<bool> query_batch(const Analysis& a, const py::handle& wrenches) {
-    const Array w = Array::ensure(wrenches);
-    if (!w || w.ndim() != 2 || w.shape(1) != 3) throw InputError("wrenches", "expected an array of shape (N, 3)");
-    const py::ssize_t n = w.shape(0);
-    const double* in = w.data();
-    for (py::ssize_t i = 0; i < n; ++i) {
-        check_magnitude(Vec3(in[3 * i], in[3 * i + 1], in[3 * i + 2]), "wrenches[" + std::to_string(i) + "]");
-    }
+py::array_t<bool> query_batch(Analysis& a, const py::handle& wrenches) {
+    const std::vector<Vec3> w = vectors3_of(wrenches, "wrenches");
+    const auto n = static_cast<py::ssize_t>(w.size());
     const auto m = static_cast<py::ssize_t>(a.modes.size());
     py::array_t<bool> out({n, m});
     bool* hit = out.mutable_data();
+    const QueryIndex& index = a.problem.index();
     {
         py::gil_scoped_release unlocked;
         std::fill(hit, hit + n * m, false);
         std::vector<std::size_t> found;
         found.reserve(a.modes.size());
         for (py::ssize_t i = 0; i < n; ++i) {
-            a.index.query(Vec3(in[3 * i], in[3 * i + 1], in[3 * i + 2]), found);
+            index.query(w[static_cast<std::size_t>(i)], found);
             for (std::size_t k : found) hit[i * m + static_cast<py::ssize_t>(k)] = true;
         }
     }
     return out;
 }
 
-std::vector<std::string> query_one(const Analysis& a, const py::handle& wrench) {
-    const Vec3 e = vector_of<3>(wrench, "wrench");
-    std::vector<std::string> out;
-    for (std::size_t k : a.index.query(e).modes) out.push_back(a.modes[k].mode.letters);
-    return out;
+// A load from the keyword arguments: gravity (GX, GY), wrench (FX, FY, TAU), forces [(point, force), ...].
+Load load_of(const py::handle& gravity, const py::handle& wrench, const py::handle& forces = py::none()) {
+    Load load;
+    if (!gravity.is_none()) load.gravity = vector_of<2>(gravity, "gravity");
+    if (!wrench.is_none()) load.wrench = vector_of<3>(wrench, "wrench");
+    if (!forces.is_none()) {
+        std::size_t i = 0;
+        for (const auto& f : forces) {
+            const std::string where = "forces[" + std::to_string(i++) + "]";
+            const auto pair = py::reinterpret_borrow<py::sequence>(f);
+            if (py::len(pair) != 2) throw InputError(where, "expected (point, force)");
+            load.forces.emplace_back(vector_of<2>(pair[0], where.c_str()), vector_of<2>(pair[1], where.c_str()));
+        }
+    }
+    return load;
 }
 
 std::string label_text(Label l) { return to_string(l); }
-
-// A plan's context: every mode, the margins' metric, and the fixed wrench of `gravity` (GX, GY
-// through the centre of mass) plus `wrench` (FX, FY, TAU), either may be None.
-PlanContext context_of(const Analysis& a, const py::handle& gravity, const py::handle& wrench) {
-    PlanContext context;
-    context.modes = a.modes;
-    context.metric = default_metric(a.scene);
-    if (!gravity.is_none()) {
-        const Vec2 g = vector_of<2>(gravity, "gravity");
-        if (!a.scene.body) throw InputError("$", "missing field \"body\" (gravity acts on its mass through its centre of mass)");
-        context.fixed = gravity_wrench(*a.scene.body, g);
-    }
-    if (!wrench.is_none()) {
-        const Exact3 w = exact(vector_of<3>(wrench, "wrench"));
-        context.fixed = context.fixed ? *context.fixed + w : w;
-    }
-    return context;
-}
 
 }  // namespace
 }  // namespace momentlab::python
@@ -428,74 +412,60 @@ PYBIND11_MODULE(_momentlab, m) {
 
     py::class_<Analysis, std::shared_ptr<Analysis>>(m, "_Analysis")
         .def(py::init<Scene, bool>())
-        .def_property_readonly("scene", [](const Analysis& a) { return a.scene; })
+        .def_property_readonly("scene", [](const Analysis& a) { return a.scene(); })
         .def_property_readonly("modes", [](const Analysis& a) {
             std::vector<std::string> out;
             for (const ModeForces& f : a.modes) out.push_back(f.mode.letters);
             return out;
         })
         .def("mode_at", [](const Analysis& a, std::size_t i) { return a.modes.at(i); }, py::return_value_policy::copy)
-        .def("mode", [](const Analysis& a, const std::string& letters) { return a.mode(letters, "mode"); })
-        .def("query_one", &query_one)
+        .def("mode", [](Analysis& a, const std::string& letters) { return a.mode(letters); })
+        .def("query_one",
+             [](Analysis& a, const py::handle& wrench) { return a.problem.query(Load{.wrench = vector_of<3>(wrench, "wrench")}).letters; })
         .def("margins",
-             [](const Analysis& a, const py::handle& wrench) {
-                 const Vec3 e = vector_of<3>(wrench, "wrench");
-                 const QueryResult r = a.index.query(e);
-                 const WrenchMetric metric = default_metric(a.scene);
-                 const QueryMargins margins = query_margins(a.modes, r.modes, e, metric);
+             [](Analysis& a, const py::handle& wrench) {
+                 const MarginAnswer m = a.problem.margins(Load{.wrench = vector_of<3>(wrench, "wrench")});
                  py::dict inside;
-                 for (std::size_t k = 0; k < r.modes.size(); ++k) {
-                     inside[py::str(a.modes[r.modes[k]].mode.letters)] = margins.inside[k];
-                 }
+                 for (std::size_t k = 0; k < m.answer.letters.size(); ++k) inside[py::str(m.answer.letters[k])] = m.inside[k];
                  py::dict out;
                  out["inside"] = inside;
-                 out["to_other"] = margins.to_other.value_or(std::numeric_limits<double>::infinity());
-                 out["reference"] = std::vector<double>{metric.reference.x(), metric.reference.y()};
-                 out["length"] = metric.length;
+                 out["to_other"] = m.to_other.value_or(std::numeric_limits<double>::infinity());
+                 out["reference"] = std::vector<double>{m.metric.reference.x(), m.metric.reference.y()};
+                 out["length"] = m.metric.length;
                  return out;
              })
         .def("query_batch", &query_batch)
         .def("plan_tilt",
-             [](const Analysis& a, const std::string& goal, const py::handle& wrench) {
-                 const PlanContext context = context_of(a, py::none(), wrench);
-                 py::dict out = python_of(to_json(plan_tilt(a.scene, a.mode(goal, "goal"), context)));
+             [](Analysis& a, const std::string& goal, const py::handle& wrench, const py::handle& forces) {
+                 py::dict out = python_of(to_json(a.problem.plan_tilt(goal, load_of(py::none(), wrench, forces))));
                  out["goal"] = goal;
                  return out;
              })
         .def("plan_push",
-             [](const Analysis& a, const std::string& goal, double mu, bool ignore_interference, const py::handle& gravity,
-                const py::handle& wrench) {
-                 if (!(mu >= 0.0) || !std::isfinite(mu) || !magnitude_in_range(mu)) {
-                     throw InputError("mu", "expected a finite mu >= 0 (0 or 1e-60 .. 1e60)");
-                 }
-                 if (!a.scene.body || a.scene.body->polygon.size() < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
-                 const PlanContext context = context_of(a, gravity, wrench);
+             [](Analysis& a, const std::string& goal, double mu, bool ignore_interference, const py::handle& gravity,
+                const py::handle& wrench, const py::handle& forces) {
                  py::list out;
-                 for (const PushCase& c : plan_push(a.scene, a.mode(goal, "goal"), PushOptions{mu, ignore_interference}, context)) {
-                     out.append(python_of(to_json(c)));
-                 }
+                 const PushRequest request{mu, ignore_interference, std::nullopt, std::nullopt, std::nullopt};
+                 for (const PushCase& c : a.problem.plan_push(goal, request, load_of(gravity, wrench, forces))) out.append(python_of(to_json(c)));
                  return out;
              })
         .def("plan_comply",
-             [](const Analysis& a, const std::string& goal, const py::handle& centre, const py::handle& gravity,
-                const py::handle& wrench) {
-                 const ModeForces& g = a.mode(goal, "goal");
-                 const PlanContext context = context_of(a, gravity, wrench);
+             [](Analysis& a, const std::string& goal, const py::handle& centre, const py::handle& gravity, const py::handle& wrench,
+                const py::handle& forces) {
+                 const std::optional<Vec2> at = centre.is_none() ? std::nullopt : std::optional<Vec2>(vector_of<2>(centre, "centre"));
+                 const ComplyAnswer answer = a.problem.plan_comply(goal, at, load_of(gravity, wrench, forces));
                  py::dict out;
                  out["goal"] = goal;
-                 out["labels"] = python_of(to_json(compliance_labels(g, context)));  // plain data, as the CLI writes it
-                 if (!centre.is_none()) out["centre"] = python_of(to_json(plan_comply(g, vector_of<2>(centre, "centre"), context)));
+                 out["labels"] = python_of(to_json(answer.labels));  // plain data, as the CLI writes it
+                 if (answer.centre) out["centre"] = python_of(to_json(*answer.centre));
                  return out;
              })
         .def("push_line",
-             [](const Analysis& a, const py::handle& point, const py::handle& direction, const py::handle& gravity,
-                const py::handle& wrench) {
+             [](Analysis& a, const py::handle& point, const py::handle& direction, const py::handle& gravity, const py::handle& wrench,
+                const py::handle& forces) {
                  const Vec2 p = vector_of<2>(point, "point");
                  const Vec2 d = vector_of<2>(direction, "direction");
-                 if (is_zero(d)) throw InputError("direction", "must not be zero");
-                 const PlanContext context = context_of(a, gravity, wrench);
-                 const Exact3 fixed = context.fixed ? *context.fixed : Exact3{};
-                 return python_of(to_json(magnitude_bands(a.modes, fixed, wrench_through(exact(p), exact(d))), a.modes));
+                 return python_of(to_json(a.problem.push_line(p, d, load_of(gravity, wrench, forces)), a.modes));
              });
 
     // Force sets of the paper's Figure 1, their combinations and files.
@@ -515,23 +485,25 @@ PYBIND11_MODULE(_momentlab, m) {
         return friction_cone(point, vector_of<2>(n, "normal"), mu);
     }, py::arg("point"), py::arg("normal"), py::arg("mu"), "The Coulomb cone of a contact (Figure 1c).");
     m.def("closure", [](const Scene& scene, const py::handle& reference, std::optional<double> length) {
-        ClosureOptions options;
-        if (!reference.is_none()) options.reference = vector_of<2>(reference, "reference");
-        if (length) {
-            if (!(number_of(*length, "length") > 0.0)) throw InputError("length", "expected a length > 0");
-            options.length = length;
-        }
-        return python_of(to_json(closure(scene, options)));
+        const std::optional<Vec2> r = reference.is_none() ? std::nullopt : std::optional<Vec2>(vector_of<2>(reference, "reference"));
+        return python_of(to_json(Problem(scene).closure(r, length)));
     }, py::arg("scene"), py::arg("reference") = py::none(), py::arg("length") = py::none());
-    m.def("query_once", [](const Scene& scene, const py::handle& wrench, bool quasi_static) {
-        const OneShotAnswer a = query_once_input(scene, vector_of<3>(wrench, "wrench"), "query_once",
-                                                 AnalysisOptions{quasi_static, nullptr});
+    m.def("query", [](const Scene& scene, const py::handle& wrench, bool quasi_static, const py::handle& gravity,
+                      const py::handle& forces) {
+        Load load = load_of(gravity, py::none(), forces);
+        if (!wrench.is_none()) load.wrench = vector_of<3>(wrench, "wrench");
+        const QueryAnswer a = Problem(scene, quasi_static).query(load);
         py::dict out;
         out["modes"] = a.letters;
         out["verdict"] = to_string(a.verdict);
-        out["filtered"] = a.filtered;
         return out;
-    }, py::arg("scene"), py::arg("wrench"), py::arg("quasi_static") = false);
+    }, py::arg("scene"), py::arg("wrench"), py::arg("quasi_static") = false, py::arg("gravity") = py::none(),
+       py::arg("forces") = py::none());
+    m.def("wrench", [](const py::handle& point, const py::handle& force) {
+        const Vec2 p = vector_of<2>(point, "point");
+        const Exact3 w = wrench_through(exact(p), exact(vector_of<2>(force, "force")));
+        return std::vector<double>{to_double(w)[0], to_double(w)[1], to_double(w)[2]};
+    }, py::arg("point"), py::arg("force"), "The wrench (fx, fy, tau about the origin) of a force acting through a point.");
     m.def("pure_moments", [](int sign) { return pure_moments(sign); }, py::arg("sign"));
     m.def("force_set_from_json", [](const std::string& text) {
         InputWarnings warnings;

@@ -23,8 +23,7 @@ ExactVector force_wrench(const Vec2& point, const Vec2& direction) {
 }
 
 Exact2 friction_edge(const Exact2& n, double mu, bool left) {
-    const Dyadic m(left ? mu : -mu);
-    return {n[0] + m * n[1], n[1] - m * n[0]};  // n +- mu (n.y, -n.x)
+    return friction_direction(n[0], n[1], Dyadic(left ? mu : -mu));
 }
 
 Exact2 friction_edge(const Vec2& normal, double mu, bool left) { return friction_edge(exact(normal), mu, left); }

@@ -214,35 +214,15 @@ json to_json(const Scene& scene) {
     return doc;
 }
 
-namespace {
-
 void require_body(const Scene& scene, const std::string& command, const AnalysisOptions& options) {
     if (!scene.body && !options.quasi_static) {
         throw InputError("$", "missing field \"body\" (" + command + " needs its mass, com and inertia)");
     }
 }
 
-}  // namespace
-
 std::vector<ModeForces> analyze_input(const Scene& scene, const std::string& command, const AnalysisOptions& options) {
     require_body(scene, command, options);
     return analyze(scene, options);
-}
-
-SceneAnswer query_input(const Scene& scene, const Vec3& e, const std::string& command, const AnalysisOptions& options) {
-    require_body(scene, command, options);
-    return query_scene(scene, e, options);
-}
-
-SceneQuestions questions_input(const Scene& scene, const std::string& command, const AnalysisOptions& options) {
-    require_body(scene, command, options);
-    return SceneQuestions(scene, options);
-}
-
-OneShotAnswer query_once_input(const Scene& scene, const Vec3& e, const std::string& command,
-                               const AnalysisOptions& options) {
-    require_body(scene, command, options);
-    return query_once(scene, e, options);
 }
 
 const ModeForces& find_mode(const std::vector<ModeForces>& analysis, const std::string& letters,

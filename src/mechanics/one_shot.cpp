@@ -1,6 +1,7 @@
-// query_once (mechanics/analysis.hpp): one question about a new scene of 2 to 12 contacts,
-// answered in double arithmetic with certified error bounds; the exact path (query_scene) takes
-// over wherever a sign is not certified (docs/robustness.md, "One question about a new scene").
+// The one-shot path of query (mechanics/analysis.hpp, query.hpp): one question about a new scene
+// of 2 to 12 contacts, answered in double arithmetic with certified error bounds; the exact path
+// (query_scene) takes over wherever a sign is not certified (docs/robustness.md, "One question
+// about a new scene").
 //
 // Every number is a pair (v, e): a double v and a bound e on |x - v| for the exact value x it
 // stands for (a polynomial in the input doubles). An operation adds the rounding of its own
@@ -23,12 +24,13 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "checks.hpp"
-#include "momentlab/mechanics/analysis.hpp"
+#include "contact_model.hpp"
+#include "query.hpp"
 
 namespace momentlab {
 namespace {
@@ -164,7 +166,7 @@ bool contains(const Generator* g, std::size_t k, const A3& e) {
 
 // What the filtered path knows of one contact: N = (n, p x n), T = (t, p x t), the rotation
 // about the contact point (p.y, -p.x, 1) (N . it = T . it = 0), and the negated friction edges
-// -(d, p x d) for d = n + mu t, n - mu t (static), n + mu_k t, n - mu_k t (kinetic).
+// -(d, p x d), d = n + c t, indexed by detail::FrictionEdge.
 struct ContactData {
     A3 normal, tangent, about;
     std::array<A3, 4> edges;
@@ -176,12 +178,11 @@ ContactData contact_data(const Contact& c) {
     d.normal = {nx, ny, px * ny - py * nx};
     d.tangent = {ny, -nx, -(px * nx + py * ny)};
     d.about = input(c.point.y(), -c.point.x(), 1.0);
-    const auto edge = [&](double mu) {
-        const Approx m{mu, 0.0};
-        const Approx dx = nx + m * ny, dy = ny - m * nx;
-        return negated(A3{dx, dy, px * dy - py * dx});
-    };
-    d.edges = {edge(c.mu), edge(-c.mu), edge(c.mu_kinetic), edge(-c.mu_kinetic)};
+    for (const auto e : {detail::FrictionEdge::StaticPlus, detail::FrictionEdge::StaticMinus, detail::FrictionEdge::KineticPlus,
+                         detail::FrictionEdge::KineticMinus}) {
+        const auto [dx, dy] = friction_direction(nx, ny, Approx{detail::tangent_coefficient(c, e), 0.0});
+        d.edges[static_cast<std::size_t>(e)] = negated(A3{dx, dy, px * dy - py * dx});
+    }
     return d;
 }
 
@@ -203,12 +204,7 @@ public:
             scene_mu_.push_back(c.mu);
         }
         if (!quasi_static) {
-            const Body& b = *scene.body;
-            const Approx m{b.mass, 0.0}, cx{b.com.x(), 0.0}, cy{b.com.y(), 0.0};
-            const Approx ic = b.radius_of_gyration ? m * Approx{*b.radius_of_gyration, 0.0} * Approx{*b.radius_of_gyration, 0.0}
-                                                   : Approx{b.inertia, 0.0};
-            const Approx mcx = m * cx, mcy = m * cy;
-            inertia_ = {A3{m, Approx{}, -mcy}, A3{Approx{}, m, mcx}, A3{-mcy, mcx, ic + mcx * cx + mcy * cy}};
+            inertia_ = detail::inertia_matrix<Approx>(*scene.body);
             dynamic_ = true;
         }
     }
@@ -250,15 +246,10 @@ public:
                 }
             }
             for (std::size_t j = 0; j < n_; ++j) {
-                const ContactData& c = contacts_[j];
-                switch (d.letters[j]) {
-                    case 'f':  // one edge when mu = 0 (both are n)
-                        g[k++] = Generator{c.edges[0], -1};
-                        if (scene_mu_[j] != 0.0) g[k++] = Generator{c.edges[1], -1};
-                        break;
-                    case 'r': g[k++] = Generator{c.edges[3], -1}; break;  // friction against +t: n - mu_k t
-                    case 'l': g[k++] = Generator{c.edges[2], -1}; break;
-                    default: break;
+                for (const detail::FrictionEdge e : detail::contact_generators(d.letters[j])) {
+                    // (the static cone is one edge when mu = 0: both are n)
+                    if (e == detail::FrictionEdge::StaticMinus && scene_mu_[j] == 0.0) continue;
+                    g[k++] = Generator{contacts_[j].edges[static_cast<std::size_t>(e)], -1};
                 }
             }
             if (contains(g.data(), k, w)) out.push_back(d.letters);
@@ -397,29 +388,16 @@ private:
 
 }  // namespace
 
-OneShotAnswer query_once(const Scene& scene, const Vec3& e, const AnalysisOptions& options) {
-    if (!e.allFinite()) throw std::invalid_argument("query_once: the wrench must be finite");
-    if (!options.quasi_static) detail::check_body(scene, "query_once");
-    detail::check_contacts(scene.contacts);
-    OneShotAnswer out;
+std::optional<std::vector<std::string>> detail::one_shot(const Scene& scene, const Vec3& e, bool quasi_static) {
     const std::size_t n = scene.contacts.size();
-    if (n >= 2 && n <= kMaxContacts) {
-        try {
-            Filtered f(scene, options.quasi_static);
-            f.enumerate();
-            out.letters = f.holding(e);
-            out.filtered = true;
-        } catch (const Uncertain&) {
-            out.letters.clear();
-        }
+    if (n < 2 || n > kMaxContacts) return std::nullopt;
+    try {
+        Filtered f(scene, quasi_static);
+        f.enumerate();
+        return f.holding(e);
+    } catch (const Uncertain&) {
+        return std::nullopt;
     }
-    if (!out.filtered) {
-        const SceneAnswer a = query_scene(scene, e, options);
-        for (const Mode& mode : a.modes) out.letters.push_back(mode.letters);
-        std::sort(out.letters.begin(), out.letters.end());
-    }
-    out.verdict = verdict_of(out.letters.size());
-    return out;
 }
 
 }  // namespace momentlab

@@ -2,6 +2,8 @@
 // single-precision filter over them, and the exact path where it cannot decide.
 #include "momentlab/mechanics/query_index.hpp"
 
+#include "scene_index.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -104,7 +106,13 @@ private:
 
 }  // namespace
 
+QueryIndex::~QueryIndex() = default;
+QueryIndex::QueryIndex(QueryIndex&&) noexcept = default;
+QueryIndex& QueryIndex::operator=(QueryIndex&&) noexcept = default;
+
 QueryIndex::QueryIndex(const std::vector<ModeForces>& analysis) : mode_count_(analysis.size()) {
+    letters_.reserve(analysis.size());
+    for (const ModeForces& m : analysis) letters_.push_back(m.mode.letters);
     // hash -> the planes stored with it; a plane is merged with a stored one when they are
     // exactly parallel (PlaneBucket says whether it is the same or the opposite normal).
     std::unordered_map<std::uint64_t, PlaneBucket> seen;
@@ -237,6 +245,7 @@ Verdict QueryIndex::query(const Vec3& e, std::vector<std::size_t>& modes) const 
 }
 
 Verdict QueryIndex::exact_query(const Vec3& e, std::vector<std::size_t>& modes) const {
+    if (walk_) return walk_->query(e, modes);  // (made from a scene: no planes of its own)
     if (!e.allFinite()) throw std::invalid_argument("query: the wrench must be finite");
     thread_local std::vector<signed char> sides;
     sides.resize(exact_.size());

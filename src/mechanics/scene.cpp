@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "contact_model.hpp"
+
 namespace momentlab {
 
 Contact Contact::make(const Vec2& point, const Vec2& normal, double mu,
@@ -27,12 +29,6 @@ ExactVector Contact::normal_wrench() const { return ExactVector::wrench(point, n
 
 ExactVector Contact::tangent_wrench() const { return ExactVector::wrench(point, tangent()); }
 
-ExactMatrix inertia_at_origin(const Body& body) {
-    const Dyadic m(body.mass), cx(body.com.x()), cy(body.com.y());
-    const Dyadic ic = body.radius_of_gyration ? m * Dyadic(*body.radius_of_gyration) * Dyadic(*body.radius_of_gyration)
-                                              : Dyadic(body.inertia);
-    const Dyadic mcx = m * cx, mcy = m * cy;
-    return {Exact3{m, Dyadic(), -mcy}, Exact3{Dyadic(), m, mcx}, Exact3{-mcy, mcx, ic + mcx * cx + mcy * cy}};
-}
+ExactMatrix inertia_at_origin(const Body& body) { return detail::inertia_matrix<Dyadic>(body); }
 
 }  // namespace momentlab

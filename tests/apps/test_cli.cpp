@@ -125,6 +125,31 @@ TEST(Cli, QueryJsonAndJsonLines) {
     EXPECT_NE(stderr_text().find(scratch("bad_wrenches.txt") + ":1"), std::string::npos) << stderr_text();
 }
 
+// The applied wrench in the user's terms: gravity alone (through the centre of mass) and forces at
+// points, added exactly. block-on-table.json has mass 1 and its centre of mass at (0.5, 0.25), so
+// gravity (0, -9.81) is the wrench (0, -9.81, 0.5 * -9.81) = (0, -9.81, -4.905) about the origin
+// (tau = x fy - y fx), which the block holds (ff), as QueryJsonAndJsonLines asks; a push of 20 N
+// along the base at (0, 0.1) adds (20, 0, -0.1 * 20) = (20, 0, -2): it slides (rr). A vector is
+// in range by its largest coordinate (docs/formats.md): 5e-324 and 1e-61 beside 1 are accepted.
+TEST(Cli, QueryGravityAndForcesAtPoints) {
+    const std::string scene = kExamples + "/block-on-table.json";
+    const auto modes = [&](const std::string& args) {
+        const Result r = run("query " + scene + " " + args + " --json");
+        EXPECT_EQ(r.status, 0) << args << ": " << stderr_text();
+        return r.status == 0 ? nlohmann::json::parse(r.out)["modes"] : nlohmann::json();
+    };
+    EXPECT_EQ(modes("--gravity 0 -9.81"), nlohmann::json::array({"ff"}));
+    EXPECT_EQ(modes("--gravity 0 -9.81"), modes("--wrench 0 -9.81 -4.905"));
+    EXPECT_EQ(modes("--force 0.5 0.25 0 -9.81"), modes("--wrench 0 -9.81 -4.905"));
+    EXPECT_EQ(modes("--gravity 0 -9.81 --force 0 0.1 20 0"), nlohmann::json::array({"rr"}));
+    EXPECT_EQ(modes("--gravity 0 -9.81 --force 0 0.1 20 0"), modes("--wrench 20 -9.81 -6.905"));
+    EXPECT_EQ(modes("--gravity 0 -9.81 --force 0 0.1 10 0 --force 0 0.1 10 0"), modes("--wrench 20 -9.81 -6.905"));
+    EXPECT_EQ(modes("--wrench 1 -2 5e-324"), nlohmann::json::array({"fs", "rs"}));
+    EXPECT_EQ(run("query " + scene + " --wrench 1 0 1e-61").status, 0) << stderr_text();
+    EXPECT_EQ(run("query " + scene + " --wrench 1e-61 0 0").status, 2);
+    EXPECT_NE(stderr_text().find("--wrench: out of range"), std::string::npos) << stderr_text();
+}
+
 // A scene with too many modes to analyse (a cradle of 12,000 contacts: more than 12,000 modes
 // of 12,000 letters, over the 10^8 letters `query --wrenches` would analyse): a file's wrenches
 // are answered in batches by one walk each. Every answer is the one `query --wrench` gives for
@@ -488,7 +513,8 @@ TEST_F(CliPictures, PlanBadRequestsExitTwoNamingTheOption) {
         {"query " + scene + " --push 0 0 1", "--push"},
         {"query " + scene + " --push 0 0.5 1 0 --margin", "--margin"},
         {"query " + scene + " --push 0 0.5 1 0 --wrenches " + scene, "--push"},
-        {"query " + scene + " --wrench 1 0 0 --gravity 0 -1", "--gravity"},
+        {"query " + scene + " --gravity 0 -1 --wrenches " + scene, "--gravity"},
+        {"query " + scene + " --force 0 0 1", "--force"},
         {"query " + scene + " --push 0 0.5 1 0 --gravity 0 1e400", "--gravity"},
     };
     for (const auto& [args, names] : cases) {

@@ -13,6 +13,7 @@
 #include "../common/sizes.hpp"
 #include "mode_oracle.hpp"
 #include "random_inputs.hpp"
+#include "momentlab/mechanics/advanced.hpp"
 #include "momentlab/mechanics/query_index.hpp"
 
 namespace momentlab {
@@ -39,17 +40,18 @@ reference::QVec minus_contact_generators(reference::QVec e, const testing::Exact
 // The modes query_scene (the direct path) says e produces.
 std::set<std::string> direct(const Scene& scene, const Vec3& e, bool quasi_static = false, std::size_t* built = nullptr,
                              std::size_t* modes = nullptr) {
-    const SceneAnswer a = query_scene(scene, e, AnalysisOptions{quasi_static});
-    EXPECT_LE(a.built, a.mode_count);
-    if (built) *built += a.built;
+    QueryDiagnostics work;
+    const SceneAnswer a = query_scene(scene, e, AnalysisOptions{quasi_static}, &work);
+    EXPECT_LE(work.built, a.mode_count);
+    if (built) *built += work.built;
     if (modes) *modes += a.mode_count;
     // The indices are enumerate_modes' (and analyze's): the same letters there.
     const ModeSet all = enumerate_modes(scene.contacts);
     EXPECT_EQ(a.mode_count, all.modes.size());
     std::size_t closed = 0;  // the letters that are not 's', over every mode
     for (const Mode& mode : all.modes) closed += static_cast<std::size_t>(std::count_if(mode.letters.begin(), mode.letters.end(), [](char c) { return c != 's'; }));
-    EXPECT_EQ(a.closed_letters, closed);
-    EXPECT_GE(a.tested_generators, a.built);
+    EXPECT_EQ(work.closed_letters, closed);
+    EXPECT_GE(work.tested_generators, work.built);
     EXPECT_EQ(a.modes.size(), a.result.modes.size());
     EXPECT_TRUE(std::is_sorted(a.result.modes.begin(), a.result.modes.end()));
     std::set<std::string> out;
@@ -59,11 +61,12 @@ std::set<std::string> direct(const Scene& scene, const Vec3& e, bool quasi_stati
         EXPECT_TRUE(a.modes[k].twists == all.modes.at(a.result.modes[k]).twists) << "mode index " << a.result.modes[k];
     }
     EXPECT_EQ(a.result.verdict, verdict_of(out.size()));
-    // query_once gives the same modes, sorted, whichever path it took.
-    const OneShotAnswer once = query_once(scene, e, AnalysisOptions{quasi_static});
+    // query(scene, e) gives the same modes, sorted, whichever path it took.
+    QueryDiagnostics how;
+    const QueryAnswer once = query(scene, e, AnalysisOptions{quasi_static}, how);
     EXPECT_TRUE(std::is_sorted(once.letters.begin(), once.letters.end()));
     EXPECT_EQ(std::set<std::string>(once.letters.begin(), once.letters.end()), out)
-        << "query_once (" << (once.filtered ? "filtered" : "exact") << ") wrench " << e.transpose();
+        << "query (" << (how.filtered ? "filtered" : "exact") << ") wrench " << e.transpose();
     EXPECT_EQ(once.letters.size(), out.size());
     EXPECT_EQ(once.verdict, a.result.verdict);
     return out;
@@ -500,7 +503,7 @@ TEST(Analysis, OneShotAgreesWithExactLp) {
         const std::set<std::string> modes = brute_force_modes(scene);
         // e = 0 is in every closed E: the answer is every mode.
         const std::vector<std::string> every(modes.begin(), modes.end());
-        EXPECT_EQ(query_once(scene, Vec3::Zero(), AnalysisOptions{quasi_static}).letters, every) << "scene " << s;
+        EXPECT_EQ(query(scene, Vec3::Zero(), AnalysisOptions{quasi_static}).letters, every) << "scene " << s;
         const testing::ExactContacts c(scene.contacts);
         for (int w = 0; w < 10; ++w) {
             reference::QVec e = reference::q(rnd.vec3(10.0));
@@ -510,16 +513,17 @@ TEST(Analysis, OneShotAgreesWithExactLp) {
             const Vec3 ed = reference::to_vec3(e);
             on_boundary += reference::q(ed) == e && w % 5 == 4;
             const std::vector<std::string> expected = testing::exact_answer(scene, modes, reference::q(ed), quasi_static);
-            const OneShotAnswer once = query_once(scene, ed, AnalysisOptions{quasi_static});
+            QueryDiagnostics how;
+            const QueryAnswer once = query(scene, ed, AnalysisOptions{quasi_static}, how);
             ++questions;
             if (w % 5 != 4 && n >= 3) {
                 ++filtered[kind].second;
-                filtered[kind].first += once.filtered;
+                filtered[kind].first += how.filtered;
             }
             if (once.letters != expected || once.verdict != verdict_of(expected.size())) {
                 ++failures;
                 ADD_FAILURE() << "scene " << s << " (kind " << kind << ", " << n << " contacts, "
-                              << (once.filtered ? "filtered" : "exact") << ") wrench " << ed.transpose();
+                              << (how.filtered ? "filtered" : "exact") << ") wrench " << ed.transpose();
             }
         }
     }
@@ -563,12 +567,13 @@ TEST(Analysis, OneShotAtExtremeMagnitudes) {
                     t.body->com *= len;
                     t.body->inertia *= force * len * len;
                     for (Contact& c : t.contacts) c.point *= len;
-                    const OneShotAnswer once = query_once(t, Vec3(force * e.x(), force * e.y(), force * len * e.z()));
+                    QueryDiagnostics how;
+                    const QueryAnswer once = query(t, Vec3(force * e.x(), force * e.y(), force * len * e.z()), {}, how);
                     EXPECT_EQ(std::set<std::string>(once.letters.begin(), once.letters.end()), base)
                         << "scene " << s << " lengths 2^" << k << " forces 2^" << f << " wrench " << e.transpose();
                     ++questions;
-                    filtered += once.filtered;
-                    if (std::abs(k) <= 60 && f == 0) moderate += !once.filtered;
+                    filtered += how.filtered;
+                    if (std::abs(k) <= 60 && f == 0) moderate += !how.filtered;
                 }
             }
         }
@@ -684,9 +689,10 @@ TEST(Analysis, MendedCertificatesOnLongFacesAgreeWithExactLp) {
             const Vec3 ed = reference::to_vec3(e);
             on_boundary += w % 2 == 0 && w != 0 && reference::q(ed) == e;
             const std::vector<std::size_t> expected = oracle_indices(scene, modes, brute, reference::q(ed), quasi_static);
-            const SceneAnswer a = query_scene(scene, ed, AnalysisOptions{quasi_static});
+            QueryDiagnostics work;
+            const SceneAnswer a = query_scene(scene, ed, AnalysisOptions{quasi_static}, &work);
             EXPECT_EQ(a.result.modes, expected) << "scene " << s << ", wrench " << ed.transpose();
-            built += a.built;
+            built += work.built;
             modes_seen += a.mode_count;
             ++wrenches;
             members += static_cast<int>(expected.size());
@@ -749,30 +755,34 @@ TEST(Analysis, WidePlanesOnRingsAgreeWithExactLp) {
             scaled_scenes.push_back(std::move(t));
         }
         SceneQuestions first(scene, AnalysisOptions{quasi_static}), again(scene, AnalysisOptions{quasi_static});
-        const std::vector<SceneAnswer> batch = first.answer(std::span<const Vec3>(asked));
-        const std::vector<SceneAnswer> repeated = again.answer(std::span<const Vec3>(asked));
+        std::vector<QueryDiagnostics> batch_work, repeated_work;
+        const std::vector<SceneAnswer> batch = first.answer(std::span<const Vec3>(asked), &batch_work);
+        const std::vector<SceneAnswer> repeated = again.answer(std::span<const Vec3>(asked), &repeated_work);
         ASSERT_EQ(batch.size(), asked.size());
         for (std::size_t w = 0; w < asked.size(); ++w) {
             const std::vector<std::size_t> expected = oracle_indices(scene, modes, brute, reference::q(asked[w]), quasi_static);
             EXPECT_EQ(batch[w].result.modes, expected) << "scene " << s << ", wrench " << asked[w].transpose();
-            const SceneAnswer single = query_scene(scene, asked[w], AnalysisOptions{quasi_static});
+            QueryDiagnostics single_work;
+            const SceneAnswer single = query_scene(scene, asked[w], AnalysisOptions{quasi_static}, &single_work);
             EXPECT_EQ(single.result.modes, expected) << "scene " << s;
             // The same work for e times 2^600 and 2^-600 (|e|^2 out of range: wide planes all the same).
             for (const int p : {600, -600}) {
-                const SceneAnswer scaled = query_scene(scene, asked[w] * std::ldexp(1.0, p), AnalysisOptions{quasi_static});
+                QueryDiagnostics scaled_work;
+                const SceneAnswer scaled = query_scene(scene, asked[w] * std::ldexp(1.0, p), AnalysisOptions{quasi_static}, &scaled_work);
                 EXPECT_EQ(scaled.result.modes, expected) << "scene " << s << ", 2^" << p;
-                EXPECT_EQ(scaled.built, single.built) << "scene " << s << ", 2^" << p;
+                EXPECT_EQ(scaled_work.built, single_work.built) << "scene " << s << ", 2^" << p;
             }
             for (std::size_t k = 0; k < scaled_scenes.size(); ++k) {
                 const Vec3 e(asked[w].x(), asked[w].y(), asked[w].z() * std::ldexp(1.0, k == 0 ? 40 : -40));
-                const SceneAnswer longer = query_scene(scaled_scenes[k], e, AnalysisOptions{quasi_static});
+                QueryDiagnostics longer_work;
+                const SceneAnswer longer = query_scene(scaled_scenes[k], e, AnalysisOptions{quasi_static}, &longer_work);
                 EXPECT_EQ(longer.result.modes, expected) << "scene " << s << ", lengths times 2^" << (k == 0 ? 40 : -40);
-                built_scaled[k] += longer.built;
+                built_scaled[k] += longer_work.built;
             }
             EXPECT_EQ(repeated[w].result.modes, expected) << "scene " << s;
-            EXPECT_EQ(repeated[w].built, batch[w].built) << "scene " << s;
-            EXPECT_EQ(repeated[w].tested_generators, batch[w].tested_generators) << "scene " << s;
-            built += batch[w].built;
+            EXPECT_EQ(repeated_work[w].built, batch_work[w].built) << "scene " << s;
+            EXPECT_EQ(repeated_work[w].tested_generators, batch_work[w].tested_generators) << "scene " << s;
+            built += batch_work[w].built;
             modes_seen += batch[w].mode_count;
             ++wrenches;
             members += static_cast<int>(expected.size());
@@ -821,14 +831,15 @@ TEST(Analysis, GroupedFacesAgreeWithExactLp) {
             asked.push_back(ed);
         }
         SceneQuestions questions(scene, AnalysisOptions{quasi_static});
-        const std::vector<SceneAnswer> answers = questions.answer(std::span<const Vec3>(asked));
+        std::vector<QueryDiagnostics> work;
+        const std::vector<SceneAnswer> answers = questions.answer(std::span<const Vec3>(asked), &work);
         for (std::size_t w = 0; w < asked.size(); ++w) {
             const std::vector<std::size_t> expected = oracle_indices(scene, modes, brute, reference::q(asked[w]), quasi_static);
             EXPECT_EQ(answers[w].result.modes, expected) << "scene " << s << ", wrench " << asked[w].transpose();
             EXPECT_EQ(query_scene(scene, asked[w], AnalysisOptions{quasi_static}).result.modes, expected) << "scene " << s;
-            built += answers[w].built;
-            grouped += answers[w].grouped;
-            scanned += answers[w].scanned_generators;
+            built += work[w].built;
+            grouped += work[w].grouped;
+            scanned += work[w].scanned_generators;
             ++wrenches;
             members += static_cast<int>(expected.size());
         }

@@ -18,6 +18,7 @@
 #include "../common/sizes.hpp"
 #include "cdd_oracle.hpp"
 #include "mode_oracle.hpp"
+#include "momentlab/mechanics/advanced.hpp"
 #include "momentlab/mechanics/margin.hpp"
 
 namespace momentlab {

@@ -1,4 +1,4 @@
-// query_once (mechanics/one_shot.cpp) where its error bounds decide: inputs within a few ulps of
+// query(scene, e)'s one-shot path (mechanics/one_shot.cpp) where its error bounds decide: inputs within a few ulps of
 // exact degeneracies, in numbers that are not dyadic (so that double arithmetic rounds and its
 // rounding, not the scene, would pick a sign), and wrenches within a few ulps of the boundaries
 // between modes. Every answer is the exact oracle's (reference/: the doubles read as exact
@@ -15,6 +15,7 @@
 
 #include "mode_oracle.hpp"
 #include "random_inputs.hpp"
+#include "momentlab/mechanics/advanced.hpp"
 #include "momentlab/mechanics/analysis.hpp"
 
 namespace momentlab {
@@ -27,19 +28,20 @@ struct Tally {
     int questions = 0, filtered = 0, wrong = 0;
 };
 
-// Asks query_once and compares with the oracle's answer, `expected`.
+// Asks query(scene, e) and compares with the oracle's answer, `expected`.
 void check(const Scene& scene, const Vec3& e, bool quasi_static, const std::vector<std::string>& expected, Tally& t,
            const std::string& what) {
-    const OneShotAnswer once = query_once(scene, e, AnalysisOptions{quasi_static});
+    QueryDiagnostics how;
+    const QueryAnswer once = query(scene, e, AnalysisOptions{quasi_static}, how);
     ++t.questions;
-    t.filtered += once.filtered;
+    t.filtered += how.filtered;
     if (once.letters != expected || once.verdict != verdict_of(expected.size())) {
         ++t.wrong;
         std::string got, want;
         for (const std::string& m : once.letters) got += m + " ";
         for (const std::string& m : expected) want += m + " ";
         ADD_FAILURE() << what << " (" << scene.contacts.size() << " contacts, " << (quasi_static ? "quasi-static, " : "")
-                      << (once.filtered ? "filtered" : "exact path") << ") wrench " << e.transpose() << ": query_once {"
+                      << (how.filtered ? "filtered" : "exact path") << ") wrench " << e.transpose() << ": query {"
                       << got << "} oracle {" << want << "}";
     }
 }

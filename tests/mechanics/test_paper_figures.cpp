@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "../common/label_checks.hpp"
+#include "momentlab/mechanics/advanced.hpp"
 #include "momentlab/geometry/labels.hpp"
 #include "momentlab/io/scene_json.hpp"
 #include "momentlab/mechanics/analysis.hpp"

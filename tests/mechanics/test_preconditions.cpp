@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "momentlab/mechanics/advanced.hpp"
 #include "momentlab/geometry/force_sets.hpp"
 #include "momentlab/geometry/labels.hpp"
 #include "momentlab/mechanics/query_index.hpp"

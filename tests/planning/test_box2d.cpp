@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "momentlab/mechanics/advanced.hpp"
 #include "momentlab/planning/comply.hpp"
 #include "momentlab/planning/push.hpp"
 #include "momentlab/planning/tilt.hpp"

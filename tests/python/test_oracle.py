@@ -112,7 +112,7 @@ def test_quasi_static_agrees_with_the_oracle_without_inertia(seed):
 
 
 @pytest.mark.parametrize("seed", range(30))
-def test_query_once_agrees_with_the_oracle(seed):
+def test_query_agrees_with_the_oracle(seed):
     # One question about a scene not analysed (2 to 6 contacts: the certified doubles, or the
     # exact path on degenerate scenes and boundary wrenches): the oracle's modes, sorted.
     rng = random.Random(3000 + seed)
@@ -121,80 +121,18 @@ def test_query_once_agrees_with_the_oracle(seed):
     wrenches = [oracle.random_wrench(rng) for _ in range(6)] + oracle.boundary_wrenches(exact, rng, 6)
     for w in wrenches:
         want = oracle.query(exact, w)
-        got = ml.query_once(scene, w)
-        assert got["modes"] == sorted(want), (doc, w, got["filtered"])
+        got = ml.query(scene, w)
+        assert got["modes"] == sorted(want), (doc, w)
         assert got["verdict"] == oracle.verdict(len(want))
-        if rank_of_normal_wrenches(exact) <= 2 and exact.n >= 3:
-            # Every three N_j dependent: no sign of the filtered enumeration is certified
-            # (docs/robustness.md), so the exact path answered.
-            assert got["filtered"] is False, (doc, w)
 
 
-def rank_of_normal_wrenches(scene):
-    """The rank of the contacts' N_j, exactly (3 when some three are independent)."""
-    N = [c.N for c in scene.contacts]
-    if any(oracle.dot(oracle.cross3(a, b), c) != 0 for a in N for b in N for c in N):
-        return 3
-    if any(oracle.cross3(a, b) != (0, 0, 0) for a in N for b in N):
-        return 2
-    return 1 if any(v != (0, 0, 0) for v in N) else 0
-
-
-def degenerate_or_generic(rng, kind, n):
-    """A scene of n contacts: normals through one point or parallel (every N_j in one plane), or
-    generic doubles that are not dyadic (points on an ellipse, normals turned at random)."""
-    q = (rng.randint(-512, 512) / 1024, rng.randint(0, 1024) / 1024)
-    contacts = []
-    for j in range(n):
-        a = math.pi * (1 + rng.random())
-        p = [1.2 * math.cos(a), 0.8 * math.sin(a)]
-        if kind == "concurrent":  # on the 1/1024 grid, so that the lines meet at q exactly
-            normal = [round((q[0] - p[0]) * 1024) / 1024, round((q[1] - p[1]) * 1024) / 1024]
-            p = [q[0] - normal[0], q[1] - normal[1]]
-        elif kind == "parallel":
-            normal = [0.3, 1.0]
-        else:
-            normal = [-p[0] + rng.uniform(-0.4, 0.4), -p[1] + rng.uniform(-0.4, 0.4)]
-        mu = rng.choice([0.0, 0.3, 0.5, 1.0])
-        contacts.append({"point": p, "normal": normal, "mu": mu})
-    body = {"mass": rng.uniform(0.5, 2), "com": [rng.uniform(-0.5, 0.5), rng.uniform(0, 1)], "inertia": rng.uniform(0.1, 1)}
-    return {"body": body, "contacts": contacts}
-
-
-def test_query_once_decides_generic_questions_in_doubles_and_sends_degenerate_ones_to_the_exact_path():
-    # The oracle decides every answer; `filtered` must be False wherever every three N_j are
-    # dependent (exactly, in the scene's rationals), and True for most random wrenches on scenes
-    # of random doubles (docs/robustness.md: at least 90% of generic questions).
-    rng = random.Random(77)
-    counts = {"degenerate": 0, "generic": 0, "generic filtered": 0}
-    for k in range(12):
-        kind = ("concurrent", "parallel", "generic")[k % 3]
-        doc = degenerate_or_generic(rng, kind, 3 + k % 3)
-        exact, scene = oracle.exact_scene(doc), scene_of(doc)
-        degenerate = rank_of_normal_wrenches(exact) <= 2
-        assert degenerate == (kind != "generic"), doc
-        for _ in range(3):
-            w = tuple(rng.uniform(-2, 2) for _ in range(3))
-            got = ml.query_once(scene, w)
-            want = oracle.query(exact, w)
-            assert got["modes"] == sorted(want), (doc, w, got["filtered"])
-            if degenerate:
-                assert got["filtered"] is False, (doc, w)
-                counts["degenerate"] += 1
-            else:
-                counts["generic"] += 1
-                counts["generic filtered"] += got["filtered"] is True
-    assert counts["degenerate"] == 24 and counts["generic"] == 12, counts
-    assert counts["generic filtered"] * 10 >= counts["generic"] * 9, counts
-
-
-def test_query_once_names_what_is_missing():
+def test_query_names_what_is_missing():
     doc = oracle.random_scene(random.Random(7), 3)
     del doc["body"]
-    with pytest.raises(ValueError, match="query_once"):
-        ml.query_once(scene_of(doc), [0.0, -1.0, 0.0])
-    with pytest.raises(ValueError, match="wrench"):
-        ml.query_once(scene_of(oracle.random_scene(random.Random(7), 3)), [0.0, float("nan"), 0.0])
+    with pytest.raises(ValueError, match=r'^\$: missing field "body" \(query needs'):
+        ml.query(scene_of(doc), [0.0, -1.0, 0.0])
+    with pytest.raises(ValueError, match="^wrench: expected finite numbers"):
+        ml.query(scene_of(oracle.random_scene(random.Random(7), 3)), [0.0, float("nan"), 0.0])
 
 
 def test_the_oracle_checks_itself_and_agrees_with_the_cli():

@@ -301,7 +301,7 @@ def test_push_line_bands_against_the_oracle():
         if direction == [0.0, 0.0]:
             direction = [1.0, 0.0]
         bands = ml.push_line(a, point, direction, gravity=gravity)
-        assert bands[0]["from"] == 0 and bands[-1]["to"] == "unbounded"
+        assert bands[0]["from"] == 0 and bands[-1]["to"] == math.inf
         for prev, band in zip(bands, bands[1:]):
             assert prev["to"] == band["from"] and prev["to_closed"] != band["from_closed"]
         m, com = oracle.exact(doc["body"]["mass"]), [oracle.exact(x) for x in doc["body"]["com"]]
@@ -315,7 +315,7 @@ def test_push_line_bands_against_the_oracle():
         def band_of(lam):
             """The band holding lam at least DELTA / 2 (relative) from its ends, or None."""
             for band in bands:
-                lo, hi = Fraction(band["from"]), None if band["to"] == "unbounded" else Fraction(band["to"])
+                lo, hi = Fraction(band["from"]), None if band["to"] == math.inf else Fraction(band["to"])
                 slack = Fraction(DELTA / 2) * max(lo, 1 if hi is None else hi)
                 if lo + slack < lam and (hi is None or lam < hi - slack):
                     return band
@@ -323,7 +323,7 @@ def test_push_line_bands_against_the_oracle():
 
         probes = []
         for band in bands:
-            if band["to"] == "unbounded":
+            if band["to"] == math.inf:
                 probes.append(Fraction(band["from"]) * 2 + 1)
             else:
                 probes.append((Fraction(band["from"]) + Fraction(band["to"])) / 2)

@@ -25,6 +25,13 @@ namespace momentlab {
 /// The wrench (d, p x d) of the force d acting through p, exact.
 [[nodiscard]] ExactVector force_wrench(const Vec2& point, const Vec2& direction);
 
+/// The direction n + c t of a friction edge, t = (n.y, -n.x) (c = +-mu), in the number type N:
+/// Dyadic for exact edges, certified doubles in the one-shot path of query.
+template <class N>
+[[nodiscard]] std::array<N, 2> friction_direction(const N& nx, const N& ny, const N& c) {
+    return {nx + c * ny, ny - c * nx};
+}
+
 /// An edge of the Coulomb cone with inward normal n (any length): n + mu t (`left`: the force
 /// opposing sliding along -t) or n - mu t, t = (n.y, -n.x); exact.
 [[nodiscard]] Exact2 friction_edge(const Exact2& normal, double mu, bool left);

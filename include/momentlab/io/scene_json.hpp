@@ -34,17 +34,9 @@ namespace momentlab {
 [[nodiscard]] std::vector<ModeForces> analyze_input(const Scene& scene, const std::string& command,
                                                     const AnalysisOptions& options = {});
 
-/// query_scene for a scene a user gave, with the same message as analyze_input.
-[[nodiscard]] SceneAnswer query_input(const Scene& scene, const Vec3& e, const std::string& command,
-                                      const AnalysisOptions& options = {});
-
-/// SceneQuestions for a scene a user gave, with the same message as analyze_input.
-[[nodiscard]] SceneQuestions questions_input(const Scene& scene, const std::string& command,
-                                             const AnalysisOptions& options = {});
-
-/// query_once for a scene a user gave, with the same message as analyze_input.
-[[nodiscard]] OneShotAnswer query_once_input(const Scene& scene, const Vec3& e, const std::string& command,
-                                             const AnalysisOptions& options = {});
+/// The check analyze_input makes: an InputError at "$" naming `command` when the dynamic model
+/// lacks the body.
+void require_body(const Scene& scene, const std::string& command, const AnalysisOptions& options = {});
 
 /// The mode a user named by its letters; an unknown mode is an InputError at `where` that lists
 /// the scene's modes.

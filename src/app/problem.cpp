@@ -1,0 +1,174 @@
+// Problem (app/problem.hpp): a scene, its analysis and index made on first need, and the checks
+// and messages of every front end, once.
+#include "momentlab/app/problem.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "momentlab/io/scene_json.hpp"
+
+namespace momentlab {
+namespace {
+
+// "$: missing field "body" (<why>)".
+InputError missing_body(const std::string& why) { return InputError("$", "missing field \"body\" (" + why + ")"); }
+
+bool fits_doubles(const Exact3& w) { return w[0].fits_double() && w[1].fits_double() && w[2].fits_double(); }
+
+// The modes of the analysis (indices) as a QueryAnswer: letters sorted, twists alongside.
+QueryAnswer answer_of(const std::vector<ModeForces>& analysis, std::vector<std::size_t> modes) {
+    std::sort(modes.begin(), modes.end(),
+              [&](std::size_t a, std::size_t b) { return analysis[a].mode.letters < analysis[b].mode.letters; });
+    QueryAnswer out;
+    for (std::size_t k : modes) {
+        out.letters.push_back(analysis[k].mode.letters);
+        out.twists.push_back(analysis[k].mode.twists);
+    }
+    out.verdict = verdict_of(modes.size());
+    return out;
+}
+
+}  // namespace
+
+InputNames InputNames::command_line() {
+    InputNames n;
+    for (std::string* s : {&n.goal, &n.mu, &n.gravity, &n.wrench, &n.force, &n.centre, &n.reference, &n.length, &n.edge, &n.vertex}) {
+        *s = "--" + *s;
+    }
+    n.point = n.direction = "--push";
+    return n;
+}
+
+Problem::Problem(Scene scene, bool quasi_static, InputNames names, Progress progress)
+    : scene_(std::move(scene)), quasi_static_(quasi_static), names_(std::move(names)), progress_(std::move(progress)) {}
+
+const std::vector<ModeForces>& Problem::analysis(const std::string& command) {
+    if (!analysis_) analysis_ = analyze_input(scene_, command, AnalysisOptions{quasi_static_, progress_});
+    return *analysis_;
+}
+
+const QueryIndex& Problem::index() {
+    if (!index_) index_.emplace(analysis());
+    return *index_;
+}
+
+const ModeForces& Problem::goal(const std::string& letters) { return find_mode(analysis(), letters, names_.goal); }
+
+std::optional<Exact3> Problem::wrench_of(const Load& load) const {
+    std::optional<Exact3> out;
+    const auto add = [&](const Exact3& w) { out = out ? *out + w : w; };
+    if (load.gravity) {
+        const Vec2 g = checked_vector(*load.gravity, names_.gravity);
+        if (!scene_.body) throw missing_body(names_.gravity + " acts on its mass through its centre of mass");
+        add(gravity_wrench(*scene_.body, g));
+    }
+    if (load.wrench) add(exact(checked_vector(*load.wrench, names_.wrench)));
+    for (const auto& [point, force] : load.forces) {
+        const Vec2 p = checked_vector(point, names_.force);
+        add(wrench_through(exact(p), exact(checked_vector(force, names_.force))));
+    }
+    return out;
+}
+
+QueryAnswer Problem::query(const Load& load) {
+    const std::optional<Exact3> w = wrench_of(load);
+    if (!w) throw InputError(names_.wrench, "expected the applied wrench (or gravity, or forces at points)");
+    if (fits_doubles(*w)) {
+        require_body(scene_, "query", AnalysisOptions{quasi_static_});
+        return momentlab::query(scene_, to_double(*w), AnalysisOptions{quasi_static_, progress_});
+    }
+    const std::vector<ModeForces>& a = analysis("query");
+    const ExactVector e = ExactVector::from_exact(*w);
+    std::vector<std::size_t> modes;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (a[i].applied.has(e)) modes.push_back(i);
+    }
+    return answer_of(a, std::move(modes));
+}
+
+MarginAnswer Problem::margins(const Load& load) {
+    const std::optional<Exact3> w = wrench_of(load);
+    if (!w) throw InputError(names_.wrench, "expected the applied wrench (or gravity, or forces at points)");
+    const std::vector<ModeForces>& a = analysis("query");
+    std::vector<std::size_t> modes;
+    if (fits_doubles(*w)) {
+        modes = index().query(to_double(*w)).modes;
+    } else {
+        const ExactVector e = ExactVector::from_exact(*w);
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            if (a[i].applied.has(e)) modes.push_back(i);
+        }
+    }
+    MarginAnswer out;
+    out.metric = default_metric(scene_);
+    const QueryMargins m = query_margins(a, modes, to_double(*w), out.metric);
+    // In the answer's order (letters sorted).
+    std::vector<std::size_t> order(modes.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return a[modes[x]].mode.letters < a[modes[y]].mode.letters; });
+    for (std::size_t k : order) out.inside.push_back(m.inside[k]);
+    out.to_other = m.to_other;
+    out.answer = answer_of(a, std::move(modes));
+    return out;
+}
+
+std::vector<MagnitudeBand> Problem::push_line(const Vec2& point, const Vec2& direction, const Load& load) {
+    const Vec2 p = checked_vector(point, names_.point);
+    const Vec2 d = checked_direction(direction, names_.direction);
+    const Exact3 fixed = wrench_of(load).value_or(Exact3{});
+    return magnitude_bands(analysis("query"), fixed, wrench_through(exact(p), exact(d)));
+}
+
+PlanContext Problem::context(const Load& load) {
+    PlanContext c;
+    c.fixed = wrench_of(load);
+    c.modes = analysis();
+    c.metric = default_metric(scene_);
+    return c;
+}
+
+DirectionPlan Problem::plan_tilt(const std::string& goal_letters, const Load& load) {
+    if (load.gravity) {
+        throw InputError(names_.gravity, "a tilt turns gravity itself: give a fixed wrench acting besides it with " + names_.wrench);
+    }
+    if (!scene_.body) throw missing_body("plan tilt needs its centre of mass");
+    const ModeForces& g = find_mode(analysis("plan tilt"), goal_letters, names_.goal);
+    return momentlab::plan_tilt(scene_, g, context(load));
+}
+
+std::vector<PushCase> Problem::plan_push(const std::string& goal_letters, const PushRequest& request, const Load& load) {
+    const double mu = checked_coefficient(request.mu, names_.mu);
+    if (request.edge && request.vertex) throw InputError(names_.vertex, "give " + names_.edge + " or " + names_.vertex + ", not both");
+    if (!scene_.body) throw missing_body("plan push needs its mass, com, inertia and polygon");
+    const std::size_t n = scene_.body->polygon.size();
+    if (n < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
+    if (request.edge && *request.edge >= n) throw InputError(names_.edge, "the body has edges 0 .. " + std::to_string(n - 1));
+    if (request.vertex && *request.vertex >= n) throw InputError(names_.vertex, "the body has vertices 0 .. " + std::to_string(n - 1));
+    const ModeForces& g = find_mode(analysis("plan push"), goal_letters, names_.goal);
+    std::vector<PushCase> cases;
+    for (PushCase& c : momentlab::plan_push(scene_, g, PushOptions{mu, request.ignore_interference}, context(load))) {
+        const bool is_edge = c.feature.kind == PushFeature::Kind::Edge;
+        const bool feature = (!request.edge && !request.vertex) || (request.edge && is_edge && c.feature.index == *request.edge) ||
+                             (request.vertex && !is_edge && c.feature.index == *request.vertex);
+        if (feature && (!request.slip || c.slip == *request.slip)) cases.push_back(std::move(c));
+    }
+    return cases;
+}
+
+ComplyAnswer Problem::plan_comply(const std::string& goal_letters, const std::optional<Vec2>& centre, const Load& load) {
+    const std::optional<Vec2> at = centre ? std::optional<Vec2>(checked_vector(*centre, names_.centre)) : std::nullopt;
+    const ModeForces& g = find_mode(analysis("plan comply"), goal_letters, names_.goal);
+    const PlanContext c = context(load);
+    ComplyAnswer out{compliance_labels(g, c), std::nullopt};
+    if (at) out.centre = momentlab::plan_comply(g, *at, c);
+    return out;
+}
+
+Closure Problem::closure(const std::optional<Vec2>& reference, const std::optional<double>& length) const {
+    ClosureOptions options;
+    if (reference) options.reference = checked_vector(*reference, names_.reference);
+    if (length) options.length = checked_length(*length, names_.length);
+    return momentlab::closure(scene_, options);
+}
+
+}  // namespace momentlab

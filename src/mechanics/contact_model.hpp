@@ -1,0 +1,64 @@
+// The contact model, written once for every path that builds a mode's sets (analyze, the walk of
+// query_scene, the one-shot path of query): which wrench generators a contact adds to the
+// contact cone T for each letter, with what friction coefficient, and the body's inertia
+// matrix, generic over the number type (Dyadic for exact values, certified doubles in the
+// one-shot path). docs/design.md, "Per-mode force sets".
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "momentlab/geometry/force_sets.hpp"
+#include "momentlab/mechanics/modes.hpp"
+#include "momentlab/mechanics/scene.hpp"
+
+namespace momentlab::detail {
+
+/// The four edges of a contact's friction cones, by their direction n + c t (t = (n.y, -n.x)):
+/// c = mu, -mu (the static cone), mu_k, -mu_k (the kinetic one). The values are the slots the
+/// walk names generators by.
+enum class FrictionEdge : std::uint8_t { StaticPlus = 0, StaticMinus = 1, KineticPlus = 2, KineticMinus = 3 };
+
+/// The generators a contact adds to T in a mode (at most two edges).
+struct ContactGenerators {
+    std::array<FrictionEdge, 2> edges{};
+    std::size_t count = 0;
+    [[nodiscard]] constexpr const FrictionEdge* begin() const { return edges.data(); }
+    [[nodiscard]] constexpr const FrictionEdge* end() const { return edges.data() + count; }
+};
+
+/// What a contact adds to the contact cone T of a mode where its letter is `mode_letter` (Mason 1991,
+/// section 2.1): nothing when it separates (s); both edges of the static cone when it is fixed (f);
+/// when it slides, the one kinetic edge whose friction opposes the sliding: n - mu_k t for r
+/// (sliding along +t), n + mu_k t for l.
+[[nodiscard]] constexpr ContactGenerators contact_generators(char mode_letter) {
+    switch (mode_letter) {
+        case letter(ContactMode::Fixed): return {{FrictionEdge::StaticPlus, FrictionEdge::StaticMinus}, 2};
+        case letter(ContactMode::SlidingRight): return {{FrictionEdge::KineticMinus, FrictionEdge::KineticMinus}, 1};
+        case letter(ContactMode::SlidingLeft): return {{FrictionEdge::KineticPlus, FrictionEdge::KineticPlus}, 1};
+        default: return {};
+    }
+}
+
+/// The coefficient c of the edge's direction n + c t.
+[[nodiscard]] constexpr double tangent_coefficient(const Contact& c, FrictionEdge e) {
+    switch (e) {
+        case FrictionEdge::StaticPlus: return c.mu;
+        case FrictionEdge::StaticMinus: return -c.mu;
+        case FrictionEdge::KineticPlus: return c.mu_kinetic;
+        default: return -c.mu_kinetic;
+    }
+}
+
+/// The planar inertia at the world origin in the number type N (constructible as N{double}, with
+/// +, - and *): M = [[m, 0, -m c.y], [0, m, m c.x], [-m c.y, m c.x, I_c + m |c|^2]], I_c the
+/// inertia about the centre of mass, or m rho^2 for a radius of gyration rho (exactly).
+template <class N>
+[[nodiscard]] std::array<std::array<N, 3>, 3> inertia_matrix(const Body& body) {
+    const N m{body.mass}, cx{body.com.x()}, cy{body.com.y()};
+    const N ic = body.radius_of_gyration ? m * N{*body.radius_of_gyration} * N{*body.radius_of_gyration} : N{body.inertia};
+    const N mcx = m * cx, mcy = m * cy;
+    return {std::array<N, 3>{m, N{}, -mcy}, std::array<N, 3>{N{}, m, mcx}, std::array<N, 3>{-mcy, mcx, ic + mcx * cx + mcy * cy}};
+}
+
+}  // namespace momentlab::detail
