@@ -1,192 +1,656 @@
 #include "json_read.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
+#include <array>
+#include <cassert>
 #include <charconv>
 #include <cmath>
-#include <cstdint>
 #include <cstdlib>
-#include <set>
+#include <type_traits>
 
 namespace momentlab::json_read {
 
-const json& field(const json& obj, const std::string& path, const char* name) {
-    if (!obj.contains(name)) throw InputError(path, std::string("missing field \"") + name + "\"");
-    return obj.at(name);
+using nlohmann::json;
+
+// Documents.
+
+const Schema kEverything{{}, &kEverything, std::numeric_limits<std::size_t>::max(), &kEverything};
+
+const char* Value::type_name() const {
+    switch (kind()) {
+        case Kind::Null: return "null";
+        case Kind::False:
+        case Kind::True: return "boolean";
+        case Kind::Number: return "number";
+        case Kind::String: return "string";
+        case Kind::Array: return "array";
+        case Kind::Object: return "object";
+        case Kind::Key: break;
+    }
+    return "key";
+}
+
+JsonNumber Value::number() const {
+    const Node& n = node();
+    assert(n.kind() == Kind::Number && !n.skipped());
+    return {n.number_, doc_->text(n.text_, n.tag_ >> Node::kLengthShift, n)};
+}
+
+std::string_view Value::string() const {
+    const Node& n = node();
+    assert(n.kind() == Kind::String && !n.skipped());
+    return doc_->text(n.pair_[0], n.pair_[1], n);
+}
+
+std::optional<Value> Value::find(std::string_view key) const {
+    if (!is_object() || !kept()) return std::nullopt;
+    std::size_t i = index_ + 1;
+    for (std::size_t k = 0, n = size(); k < n; ++k) {
+        const Node& name = doc_->node(i);
+        const Value value(*doc_, i + 1);
+        if (doc_->text(name.pair_[0], name.pair_[1], name) == key) return value;
+        i = value.after();
+    }
+    return std::nullopt;
+}
+
+Builder::Builder(const Schema& schema, std::string_view source) : root_(&schema) {
+    if (source.size() > std::numeric_limits<std::uint32_t>::max()) {
+        throw InputError("$", "a JSON text of 4 GiB or more (expected less)");
+    }
+    doc_.source_ = source;
+}
+
+std::string Builder::path() const {
+    std::string out = "$";
+    for (const Frame& f : frames_) {
+        if (f.is_array) {
+            out.append(1, '[').append(std::to_string(f.count - 1)).append(1, ']');
+        } else {
+            out.append(1, '.').append(f.key);
+        }
+    }
+    return out;
+}
+
+// The node of a value that begins, or nullptr inside a skipped container; `place` is what is
+// kept of it (nullptr: nothing, the node is skipped).
+Node* Builder::begin_value(Kind kind, const Schema*& place) {
+    place = root_;
+    if (!frames_.empty()) {
+        Frame& f = frames_.back();
+        if (f.is_array) {
+            ++f.count;
+            if (f.skipped) return nullptr;
+            if (f.count > f.schema->max_elements) {  // longer than its place keeps: skipped from here
+                doc_.size_ = f.node + 1;
+                doc_.node(f.node).tag_ |= Node::kSkipped;
+                f.skipped = true;
+                return nullptr;
+            }
+            place = f.schema->elements;
+        } else {
+            if (f.skipped) return nullptr;
+            place = f.member;
+        }
+    }
+    if (kind == Kind::Array && place && place->elements == nullptr) place = nullptr;
+    if (kind == Kind::Object && place && place->members.empty() && place->others == nullptr) place = nullptr;
+    return &push(kind, place == nullptr);
+}
+
+Node& Builder::push(Kind kind, bool skipped) {
+    if (doc_.size_ == doc_.blocks_.size() * Document::kBlock) {
+        doc_.blocks_.emplace_back(new Node[Document::kBlock]);  // not initialised: Node has no initialisers
+    }
+    Node& n = doc_.node(doc_.size_++);
+    n.number_ = 0.0;
+    n.text_ = 0;
+    n.tag_ = static_cast<std::uint32_t>(kind) | (skipped ? Node::kSkipped : 0u);
+    return n;
+}
+
+// A container begins: its node (if any) and its frame.
+void Builder::open(Kind kind) {
+    const Schema* place = nullptr;
+    const Node* n = begin_value(kind, place);
+    if (frames_.size() == kMaxDepth) throw InputError("$", "nested more than 1000000 levels deep (expected fewer)");
+    frames_.push_back(Frame{kind == Kind::Array, n == nullptr || n->skipped(), n == nullptr ? kNoNode : doc_.size_ - 1,
+                            place, 0, {}, nullptr, keys_.size(), copies_.size(), nullptr});
+}
+
+std::uint32_t Builder::keep(std::string_view s, Text lifetime, std::uint32_t& tag) {
+    if (lifetime == Text::Lasting) {
+        assert(s.empty() || (s.data() >= doc_.source_.data() && s.data() + s.size() <= doc_.source_.data() + doc_.source_.size()));
+        return s.empty() ? 0 : static_cast<std::uint32_t>(s.data() - doc_.source_.data());
+    }
+    if (doc_.copies_.size() + s.size() > std::numeric_limits<std::uint32_t>::max()) {
+        throw InputError(path(), "more than 4 GiB of strings (expected less)");
+    }
+    tag |= Node::kCopied;
+    const auto at = static_cast<std::uint32_t>(doc_.copies_.size());
+    doc_.copies_.append(s);
+    return at;
+}
+
+void Builder::null() {
+    const Schema* place = nullptr;
+    begin_value(Kind::Null, place);
+}
+
+void Builder::boolean(bool b) {
+    const Schema* place = nullptr;
+    begin_value(b ? Kind::True : Kind::False, place);
+}
+
+void Builder::number(double value, std::string_view text, Text lifetime) {
+    const Schema* place = nullptr;
+    Node* n = begin_value(Kind::Number, place);
+    if (value == 0.0 && nonzero_digits(text)) {
+        throw InputError(path(), "a number too small for a double: it would be taken as 0 "
+                                 "(expected 0 or a magnitude 1e-60 .. 1e60)");
+    }
+    if (n == nullptr || n->skipped()) return;
+    if (text.size() >= (std::size_t{1} << (32 - Node::kLengthShift))) {
+        throw InputError(path(), "a number of more than 100 million characters (expected fewer)");
+    }
+    n->number_ = value;
+    n->text_ = keep(text, lifetime, n->tag_);
+    n->tag_ |= static_cast<std::uint32_t>(text.size()) << Node::kLengthShift;
+}
+
+void Builder::string(std::string_view s, Text lifetime) {
+    const Schema* place = nullptr;
+    Node* n = begin_value(Kind::String, place);
+    if (n == nullptr || n->skipped()) return;
+    n->pair_[0] = keep(s, lifetime, n->tag_);
+    n->pair_[1] = static_cast<std::uint32_t>(s.size());
+}
+
+void Builder::start_object() { open(Kind::Object); }
+
+void Builder::start_array() { open(Kind::Array); }
+
+void Builder::key(std::string_view k, Text lifetime) {
+    Frame& f = frames_.back();
+    ++f.count;
+    f.member = nullptr;
+    if (!f.skipped) {
+        Node& n = push(Kind::Key, false);
+        n.pair_[0] = keep(k, lifetime, n.tag_);
+        n.pair_[1] = static_cast<std::uint32_t>(k.size());
+        f.member = f.schema->others;
+        for (const Schema::Member& m : f.schema->members) {
+            if (m.key == k) f.member = m.schema;
+        }
+    }
+    if (lifetime == Text::Transient) k = copies_.emplace_back(k);  // the document's copy may move
+    f.key = k;
+    bool repeated = false;
+    if (f.many == nullptr) {
+        repeated = std::find(keys_.begin() + static_cast<std::ptrdiff_t>(f.keys_from), keys_.end(), k) != keys_.end();
+        keys_.push_back(k);
+        if (keys_.size() - f.keys_from > kFewKeys) {  // many keys: a set of them
+            f.many = std::make_unique<std::unordered_set<std::string_view>>(keys_.begin() + static_cast<std::ptrdiff_t>(f.keys_from),
+                                                                            keys_.end());
+            keys_.resize(f.keys_from);
+        }
+    } else {
+        repeated = !f.many->insert(k).second;
+    }
+    // JSON parsers differ on which of two equal keys wins: a file with two "mu" fields would
+    // mean different scenes to different programs.
+    if (repeated) throw InputError(path(), "duplicate key (each key may appear once in an object)");
+}
+
+void Builder::close() {
+    Frame& f = frames_.back();
+    if (f.node != kNoNode) {
+        Node& n = doc_.node(f.node);
+        if (!n.skipped()) n.pair_[0] = static_cast<std::uint32_t>(doc_.size_);
+        n.pair_[1] = static_cast<std::uint32_t>(f.count);
+    }
+    keys_.resize(f.keys_from);
+    copies_.resize(f.copies_from);
+    frames_.pop_back();
+}
+
+void Builder::end_object() { close(); }
+
+void Builder::end_array() { close(); }
+
+Document Builder::finish() {
+    assert(frames_.empty() && doc_.size_ > 0);
+    return std::move(doc_);
 }
 
 namespace {
 
+// The JSON library's SAX events, to a Builder (its texts do not outlive the event).
+class LibraryEvents {
+public:
+    explicit LibraryEvents(Builder& b) : b_(b) {}
+    bool null() { return b_.null(), true; }
+    bool boolean(bool v) { return b_.boolean(v), true; }
+    bool number_integer(json::number_integer_t v) { return integer(v); }
+    bool number_unsigned(json::number_unsigned_t v) { return integer(v); }
+    bool number_float(json::number_float_t v, const json::string_t& text) {
+        return b_.number(v, text, Builder::Text::Transient), true;
+    }
+    bool string(json::string_t& s) { return b_.string(s, Builder::Text::Transient), true; }
+    bool binary(json::binary_t&) { return b_.null(), true; }  // not in JSON text
+    bool start_object(std::size_t) { return b_.start_object(), true; }
+    bool key(json::string_t& k) { return b_.key(k, Builder::Text::Transient), true; }
+    bool end_object() { return b_.end_object(), true; }
+    bool start_array(std::size_t) { return b_.start_array(), true; }
+    bool end_array() { return b_.end_array(), true; }
+    template <class Exception>
+    bool parse_error(std::size_t, const std::string&, const Exception& e) {
+        if constexpr (std::is_same_v<Exception, nlohmann::detail::out_of_range>) {  // e.g. 1e999
+            throw InputError("$", std::string("a number is out of range (expected 0 or 1e-60 .. 1e60): ") + e.what());
+        }
+        throw InputError("$", std::string("malformed JSON: ") + e.what());
+    }
+
+private:
+    template <class Integer>
+    bool integer(Integer v) {
+        char text[24];
+        const auto end = std::to_chars(text, text + sizeof text, v).ptr;
+        b_.number(static_cast<double>(v), std::string_view(text, static_cast<std::size_t>(end - text)),
+                  Builder::Text::Transient);
+        return true;
+    }
+
+    Builder& b_;
+};
+
+// A reader of the plain JSON that programs write: ASCII strings without escapes and numbers
+// that convert to finite doubles. It reads such a text in one pass over its characters with no
+// copies (the library reads a character at a time through its input adapter and copies each
+// token: bench/bench_io.cpp), and gives up on anything else, which the library then reads.
+class PlainReader {
+public:
+    PlainReader(std::string_view text, Builder& b) : p_(text.data()), end_(text.data() + text.size()), b_(b) {}
+
+    // Reads the text to the builder; false when the text is not plain JSON.
+    bool document() {
+        std::vector<bool> arrays;  // the open containers, innermost last: true for an array
+        for (;;) {
+            skip_space();
+            if (p_ == end_) return false;
+            if (*p_ == '{' || *p_ == '[') {
+                const bool array = *p_++ == '[';
+                array ? b_.start_array() : b_.start_object();
+                if (next_is(array ? ']' : '}')) {
+                    array ? b_.end_array() : b_.end_object();
+                } else {
+                    arrays.push_back(array);
+                    if (!array && !member_key()) return false;
+                    continue;  // its first value
+                }
+            } else if (!scalar()) {
+                return false;
+            }
+            // After a value: a comma and the next value, or the ends of containers.
+            for (;;) {
+                skip_space();
+                if (arrays.empty()) return p_ == end_;
+                if (p_ == end_) return false;
+                const bool array = arrays.back();
+                if (*p_ == ',') {
+                    ++p_;
+                    if (!array && !member_key()) return false;
+                    break;
+                }
+                if (*p_++ != (array ? ']' : '}')) return false;
+                arrays.pop_back();
+                array ? b_.end_array() : b_.end_object();
+            }
+        }
+    }
+
+private:
+    static bool digit(char c) { return c >= '0' && c <= '9'; }
+
+    void skip_space() {
+        while (p_ != end_ && (*p_ == ' ' || *p_ == '\n' || *p_ == '\r' || *p_ == '\t')) ++p_;
+    }
+
+    // Whether the text continues with c (after white space); consumes it if so.
+    bool next_is(char c) {
+        skip_space();
+        if (p_ == end_ || *p_ != c) return false;
+        ++p_;
+        return true;
+    }
+
+    // A member's key, then its colon (the key is an event before the colon is read, as the
+    // library has it, so that both report a repeated key at the same place).
+    bool member_key() {
+        skip_space();
+        std::string_view key;
+        if (p_ == end_ || *p_ != '"' || !string(key)) return false;
+        b_.key(key, Builder::Text::Lasting);
+        return next_is(':');
+    }
+
+    bool scalar() {
+        switch (*p_) {
+            case '"': {
+                std::string_view s;
+                if (!string(s)) return false;
+                b_.string(s, Builder::Text::Lasting);
+                return true;
+            }
+            case 't': return literal("true") && (b_.boolean(true), true);
+            case 'f': return literal("false") && (b_.boolean(false), true);
+            case 'n': return literal("null") && (b_.null(), true);
+            default: return number();
+        }
+    }
+
+    // ASCII from the space to DEL between quotes, with no escape.
+    bool string(std::string_view& out) {
+        const char* start = ++p_;
+        for (; p_ != end_; ++p_) {
+            const auto c = static_cast<unsigned char>(*p_);
+            if (c == '"') {
+                out = std::string_view(start, static_cast<std::size_t>(p_++ - start));
+                return true;
+            }
+            if (c < 0x20 || c == '\\' || c >= 0x80) return false;
+        }
+        return false;
+    }
+
+    bool literal(std::string_view word) {
+        if (static_cast<std::size_t>(end_ - p_) < word.size() || std::string_view(p_, word.size()) != word) return false;
+        p_ += word.size();
+        return true;
+    }
+
+    // JSON's number grammar, and its value as the library gives it: an integer's (+0 for "-0"),
+    // or the nearest double.
+    bool number() {
+        const char* const start = p_;
+        const char* q = p_;
+        const bool negative = *q == '-';
+        if (negative) ++q;
+        if (q == end_ || !digit(*q)) return false;
+        if (*q == '0') {
+            ++q;
+        } else {
+            while (q != end_ && digit(*q)) ++q;
+        }
+        const char* const integer_end = q;
+        if (q != end_ && *q == '.') {
+            const char* const digits = ++q;
+            while (q != end_ && digit(*q)) ++q;
+            if (q == digits) return false;
+        }
+        if (q != end_ && (*q == 'e' || *q == 'E')) {
+            ++q;
+            if (q != end_ && (*q == '+' || *q == '-')) ++q;
+            const char* const digits = q;
+            while (q != end_ && digit(*q)) ++q;
+            if (q == digits) return false;
+        }
+        p_ = q;
+        const std::string_view text(start, static_cast<std::size_t>(q - start));
+        double x = 0.0;
+        if (q == integer_end && integer_end - start <= 19) {  // up to 18 digits: exact in 64 bits
+            std::uint64_t v = 0;
+            for (const char* d = start + (negative ? 1 : 0); d != integer_end; ++d) v = v * 10 + static_cast<std::uint64_t>(*d - '0');
+            x = negative ? static_cast<double>(-static_cast<std::int64_t>(v)) : static_cast<double>(v);
+        } else {
+#if defined(__cpp_lib_to_chars)
+            const auto [end, error] = std::from_chars(start, q, x);
+            if (error != std::errc() || end != q || !std::isfinite(x)) return false;
+#else
+            return false;  // no exact conversion without a locale: the library reads the text
+#endif
+        }
+        b_.number(x, text, Builder::Text::Lasting);
+        return true;
+    }
+
+    const char* p_;
+    const char* end_;
+    Builder& b_;
+};
+
+}  // namespace
+
+std::optional<Document> read_plain(std::string_view text, const Schema& schema) {
+    Builder b(schema, text);
+    if (!PlainReader(text, b).document()) return std::nullopt;
+    return b.finish();
+}
+
+Document read_by_library(std::string_view text, const Schema& schema) {
+    Builder b(schema, text);
+    LibraryEvents events(b);
+    json::sax_parse(text.begin(), text.end(), &events);
+    return b.finish();
+}
+
+Document read(std::string_view text, const Schema& schema) {
+    // An error the plain reader's builder raises (a repeated key, an underflow) is the one the
+    // library would raise: both give the same events in the same order up to it.
+    if (std::optional<Document> doc = read_plain(text, schema)) return std::move(*doc);
+    return read_by_library(text, schema);
+}
+
+Document document_of(const json& doc, const Schema& schema) {
+    Builder b(schema, {});
+    // Each open container and the next of its items; iterative, as deep as the document is.
+    struct Open {
+        const json* container;
+        json::const_iterator next;
+    };
+    std::vector<Open> open;
+    const auto begin = [&](const json& v) {
+        switch (v.type()) {
+            case json::value_t::object: b.start_object(); open.push_back({&v, v.begin()}); return;
+            case json::value_t::array: b.start_array(); open.push_back({&v, v.begin()}); return;
+            case json::value_t::number_integer:
+            case json::value_t::number_unsigned: {
+                char text[24];
+                const auto end = v.is_number_unsigned() ? std::to_chars(text, text + sizeof text, v.get<std::uint64_t>()).ptr
+                                                        : std::to_chars(text, text + sizeof text, v.get<std::int64_t>()).ptr;
+                b.number(v.get<double>(), std::string_view(text, static_cast<std::size_t>(end - text)), Builder::Text::Transient);
+                return;
+            }
+            case json::value_t::number_float: b.number(v.get<double>(), {}, Builder::Text::Lasting); return;
+            case json::value_t::string: b.string(v.get_ref<const std::string&>(), Builder::Text::Transient); return;
+            case json::value_t::boolean: b.boolean(v.get<bool>()); return;
+            default: b.null(); return;
+        }
+    };
+    begin(doc);
+    while (!open.empty()) {
+        Open& top = open.back();
+        if (top.next == top.container->end()) {
+            top.container->is_object() ? b.end_object() : b.end_array();
+            open.pop_back();
+            continue;
+        }
+        const auto item = top.next++;
+        if (top.container->is_object()) b.key(item.key(), Builder::Text::Transient);
+        begin(*item);  // may grow `open`: top is not used after this
+    }
+    return b.finish();
+}
+
+std::optional<Decimal> exact_decimal(std::string_view text) {
+    std::size_t i = 0;
+    Decimal d;
+    d.negative = i < text.size() && text[i] == '-';
+    if (d.negative) ++i;
+    const auto digits_from = [&](std::size_t from) {
+        while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
+        return text.substr(from, i - from);
+    };
+    const std::string_view whole = digits_from(i);
+    if (whole.empty() || (whole.size() > 1 && whole[0] == '0')) return std::nullopt;
+    std::string_view fraction;
+    if (i < text.size() && text[i] == '.') {
+        fraction = digits_from(++i);
+        if (fraction.empty()) return std::nullopt;
+    }
+    std::int64_t exponent = 0;
+    if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+        ++i;
+        const bool down = i < text.size() && text[i] == '-';
+        if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+        std::string_view e = digits_from(i);
+        if (e.empty()) return std::nullopt;
+        e.remove_prefix(std::min(e.find_first_not_of('0'), e.size()));
+        if (e.size() > 18) return std::nullopt;
+        for (const char c : e) exponent = exponent * 10 + (c - '0');
+        if (down) exponent = -exponent;
+    }
+    if (i != text.size()) return std::nullopt;
+    // digits x 10^(exponent - |fraction|), then without leading and trailing zeros.
+    d.digits.reserve(whole.size() + fraction.size());
+    d.digits.append(whole).append(fraction);
+    d.exponent = exponent - static_cast<std::int64_t>(fraction.size());
+    d.digits.erase(0, std::min(d.digits.find_first_not_of('0'), d.digits.size()));
+    const std::size_t last = d.digits.find_last_not_of('0');
+    if (last == std::string::npos) return Decimal{};
+    d.exponent += static_cast<std::int64_t>(d.digits.size() - 1 - last);
+    d.digits.resize(last + 1);
+    return d;
+}
+
+// Typed access.
+
+std::string Path::str() const {
+    std::string out = parent_ ? parent_->str() : std::string();
+    if (parent_ == nullptr) return out.append(name_);
+    if (index_ != std::numeric_limits<std::size_t>::max()) return out.append(1, '[').append(std::to_string(index_)).append(1, ']');
+    return out.append(1, '.').append(name_);
+}
+
+Value field(const Value& obj, const Path& path, std::string_view name) {
+    const std::optional<Value> v = obj.find(name);
+    if (!v) throw InputError(path.str(), "missing field \"" + std::string(name) + "\"");
+    return *v;
+}
+
+namespace {
+
+// A number's value as the JSON library writes it (in messages).
+std::string dumped(double x) { return json(x).dump(); }
+
 // A finite number of magnitude at most kLargestMagnitude.
-double coordinate(const json& v, const std::string& path) {
-    if (!v.is_number()) throw InputError(path, "expected a number, got " + std::string(v.type_name()));
-    const double x = v.get<double>();
-    if (!std::isfinite(x)) throw InputError(path, "expected a finite number");
+double coordinate(const Value& v, const Path& path) {
+    if (!v.is_number()) throw InputError(path.str(), "expected a number, got " + std::string(v.type_name()));
+    const double x = v.number().value;
+    if (!std::isfinite(x)) throw InputError(path.str(), "expected a finite number");
     if (!(std::abs(x) <= kLargestMagnitude)) {
-        throw InputError(path, "the magnitude of " + v.dump() + " is out of range (expected 0 or 1e-60 .. 1e60)");
+        throw InputError(path.str(), "the magnitude of " + dumped(x) + " is out of range (expected 0 or 1e-60 .. 1e60)");
     }
     return x;
 }
 
 // A vector is 0 or has its largest coordinate in range; single coordinates may be tiny.
 template <class V>
-V checked(const V& v, const std::string& path) {
+V checked(const V& v, const Path& path) {
     if (!magnitude_in_range(v.cwiseAbs().maxCoeff())) {
-        throw InputError(path, "the vector's magnitude is out of range (expected 0 or 1e-60 .. 1e60)");
+        throw InputError(path.str(), "the vector's magnitude is out of range (expected 0 or 1e-60 .. 1e60)");
     }
     return v;
 }
 
-// What coordinate() accepts, decided without the path that only names an error.
-bool plain_coordinate(const json& v) {
-    if (!v.is_number()) return false;
-    const double x = v.get<double>();
-    return std::isfinite(x) && std::abs(x) <= kLargestMagnitude;
-}
-
-// The vector vec2(x, y, path) returns when it returns one without an error; nullopt where it
-// would throw (no path is needed to decide).
-std::optional<Vec2> accepted_vec2(const json& x, const json& y) {
-    if (!plain_coordinate(x) || !plain_coordinate(y)) return std::nullopt;
-    const Vec2 v(x.get<double>(), y.get<double>());
-    if (!magnitude_in_range(v.cwiseAbs().maxCoeff())) return std::nullopt;
-    return v;
+// The coordinates of an array of N numbers, the first bad one an error (in order).
+template <int N>
+std::array<double, N> coordinates(const Value& v, const Path& path) {
+    std::array<double, N> out{};
+    v.for_each_element([&](std::size_t k, const Value& c) { out[k] = coordinate(c, Path(path, k)); });
+    return out;
 }
 
 }  // namespace
 
-double number(const json& v, const std::string& path) {
+double number(const Value& v, const Path& path) {
     const double x = coordinate(v, path);
     if (!magnitude_in_range(std::abs(x))) {
-        throw InputError(path, "the magnitude of " + v.dump() + " is out of range (expected 0 or 1e-60 .. 1e60)");
+        throw InputError(path.str(), "the magnitude of " + dumped(x) + " is out of range (expected 0 or 1e-60 .. 1e60)");
     }
     return x;
 }
 
-double nonnegative(const json& v, const std::string& path, const char* what) {
+double nonnegative(const Value& v, const Path& path, const char* what) {
     const double x = number(v, path);
-    if (x < 0.0) throw InputError(path, std::string("expected ") + what + " >= 0");
+    if (x < 0.0) throw InputError(path.str(), std::string("expected ") + what + " >= 0");
     return x;
 }
 
-Vec2 vec2(const json& v, const std::string& path) {
-    if (!v.is_array() || v.size() != 2) throw InputError(path, "expected [x, y]");
-    return vec2(v[0], v[1], path);
+Vec2 vec2(const Value& v, const Path& path) {
+    if (!v.is_array() || v.size() != 2) throw InputError(path.str(), "expected [x, y]");
+    const auto xy = coordinates<2>(v, path);
+    return checked(Vec2(xy[0], xy[1]), path);
 }
 
-Vec2 vec2(const json& x, const json& y, const std::string& path) {
-    if (const std::optional<Vec2> v = accepted_vec2(x, y)) return *v;
-    const double a = coordinate(x, path + "[0]");  // in order: an error names the first bad coordinate
-    const double b = coordinate(y, path + "[1]");
-    return checked(Vec2(a, b), path);
+Vec3 vec3(const Value& v, const Path& path) {
+    if (!v.is_array() || v.size() != 3) throw InputError(path.str(), "expected [a, b, c]");
+    const auto abc = coordinates<3>(v, path);
+    return checked(Vec3(abc[0], abc[1], abc[2]), path);
 }
 
-Vec3 vec3(const json& v, const std::string& path) {
-    if (!v.is_array() || v.size() != 3) throw InputError(path, "expected [a, b, c]");
-    const double a = coordinate(v[0], path + "[0]");  // in order, as in vec2
-    const double b = coordinate(v[1], path + "[1]");
-    const double c = coordinate(v[2], path + "[2]");
-    return checked(Vec3(a, b, c), path);
-}
-
-std::vector<Vec3> vec3_list(const json& v, const std::string& path) {
-    if (!v.is_array()) throw InputError(path, "expected a list of [a, b, c]");
+std::vector<Vec3> vec3_list(const Value& v, const Path& path) {
+    if (!v.is_array()) throw InputError(path.str(), "expected a list of [a, b, c]");
     std::vector<Vec3> out;
-    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(vec3(v[i], at(path, i)));
+    out.reserve(v.size());
+    v.for_each_element([&](std::size_t i, const Value& e) { out.push_back(vec3(e, Path(path, i))); });
     return out;
 }
 
-Vec2 nonzero2(const json& obj, const std::string& path, const char* name) {
-    const std::string p = path + "." + name;
+std::vector<Vec2> vec2_list(const Value& v, const Path& path) {
+    if (!v.is_array()) throw InputError(path.str(), "expected a list of [x, y]");
+    std::vector<Vec2> out;
+    out.reserve(v.size());
+    v.for_each_element([&](std::size_t i, const Value& e) { out.push_back(vec2(e, Path(path, i))); });
+    return out;
+}
+
+Vec2 nonzero2(const Value& obj, const Path& path, std::string_view name) {
+    const Path p(path, name);
     return nonzero(vec2(field(obj, path, name), p), p);
 }
 
-Vec2 nonzero(const Vec2& v, const std::string& path) {
-    if (v.x() == 0.0 && v.y() == 0.0) throw InputError(path, "expected a non-zero vector");
+Vec2 nonzero(const Vec2& v, const Path& path) {
+    if (v.x() == 0.0 && v.y() == 0.0) throw InputError(path.str(), "expected a non-zero vector");
     return v;
 }
 
-namespace {
-
-// vec2(x, y, at(path, i)), with the element's path made only for an error (10^6 vertices
-// would make 10^6 path strings).
-Vec2 element_vec2(const json& x, const json& y, const std::string& path, std::size_t i) {
-    const std::optional<Vec2> v = accepted_vec2(x, y);
-    return v ? *v : vec2(x, y, at(path, i));
-}
-
-}  // namespace
-
-std::vector<Vec2> vec2_list(const json& v, const std::string& path) {
-    if (!v.is_array()) throw InputError(path, "expected a list of [x, y]");
-    std::vector<Vec2> out;
-    out.reserve(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        const json& e = v[i];
-        out.push_back(e.is_array() && e.size() == 2 ? element_vec2(e[0], e[1], path, i) : vec2(e, at(path, i)));
-    }
-    return out;
-}
-
-std::vector<Vec2> vec2_list(const std::vector<PlainPoint>& points, const std::string& path) {
-    std::vector<Vec2> out;
-    out.reserve(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) out.push_back(element_vec2(points[i][0], points[i][1], path, i));
-    return out;
-}
-
-void known_fields(const json& obj, const std::string& path, std::initializer_list<const char*> known,
+void known_fields(const Value& obj, const Path& path, std::initializer_list<std::string_view> known,
                   InputWarnings* warnings) {
     if (warnings == nullptr || !obj.is_object()) return;
-    for (const auto& [key, value] : obj.items()) {
-        bool found = false;
-        for (const char* k : known) found = found || key == k;
-        if (found) continue;
-        std::string expected;
-        for (const char* k : known) expected += std::string(expected.empty() ? "" : ", ") + k;
-        warnings->push_back(path + "." + key + ": unknown field, ignored (expected " + expected + ")");
+    const auto is_known = [&](std::string_view key) { return std::find(known.begin(), known.end(), key) != known.end(); };
+    std::vector<std::string_view> unknown;
+    obj.for_each_member([&](std::string_view key, const Value&) {
+        if (!is_known(key)) unknown.push_back(key);
+    });
+    if (unknown.empty()) return;
+    std::sort(unknown.begin(), unknown.end());
+    std::string expected;
+    for (const std::string_view k : known) expected.append(expected.empty() ? "" : ", ").append(k);
+    const std::string at = path.str();
+    for (const std::string_view key : unknown) {
+        warnings->push_back(at + "." + std::string(key) + ": unknown field, ignored (expected " + expected + ")");
     }
 }
 
-std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+}  // namespace momentlab::json_read
+
+namespace momentlab {
 
 namespace {
-
-// The containers open while parsing, to name the path of a repeated key. Each holds the keys
-// seen so far and how the container sits in its parent.
-struct Frame {
-    static constexpr std::size_t kFewKeys = 16;
-
-    bool is_array = false;
-    std::size_t count = 0;                   // elements seen (arrays)
-    std::string key;                         // the last key read (objects)
-    std::vector<std::string> keys;           // the first kFewKeys keys seen (a linear search)
-    std::set<std::string, std::less<>> many;  // all the keys seen, once there are more
-
-    // Records key; false when it was seen before.
-    bool add(const std::string& k) {
-        if (keys.size() < kFewKeys) {
-            if (std::find(keys.begin(), keys.end(), k) != keys.end()) return false;
-            keys.push_back(k);
-            return true;
-        }
-        if (many.empty()) many.insert(keys.begin(), keys.end());
-        return many.insert(k).second;
-    }
-};
-
-// The path of the element being read: each open container's place in its parent, then the
-// innermost one's current key or index.
-std::string path_of(const std::vector<Frame>& stack) {
-    std::string path = "$";
-    for (std::size_t i = 0; i < stack.size(); ++i) {
-        if (stack[i].is_array) {
-            path.append(1, '[').append(std::to_string(stack[i].count - 1)).append(1, ']');
-        } else {
-            path.append(1, '.').append(stack[i].key);
-        }
-    }
-    return path;
-}
 
 // Calls f(token) for each number of a JSON text, in order: the tokens outside strings that
 // start with '-' or a digit.
@@ -214,395 +678,13 @@ void for_each_number(std::string_view text, F f) {
     }
 }
 
-bool underflows(std::string_view token) {
-    if (!nonzero_digits(token)) return false;
-    // Without an exponent, a number below the smallest double (about 4.9e-324) needs over 300
-    // digits: the usual coordinate is decided without converting it.
-    if (token.find_first_of("eEpP") == std::string_view::npos && token.size() < 300) return false;
-    return std::strtod(std::string(token).c_str(), nullptr) == 0.0;
-}
-
-// For each number of the text, in order: whether it underflows. Empty when none does, the
-// usual case.
-std::vector<bool> underflowing_numbers(std::string_view text) {
-    std::vector<bool> flags;
-    bool any = false;
-    for_each_number(text, [&](std::string_view token) {
-        flags.push_back(underflows(token));
-        any = any || flags.back();
-    });
-    if (!any) flags.clear();
-    return flags;
-}
-
-// The document builder of the JSON library, with the checks of `parse` on each event. (The
-// library's callback parser rescans a parent array for discarded elements after every object:
-// quadratic time on a list of 10^5 contacts.)
-class CheckedBuilder {
-public:
-    explicit CheckedBuilder(json& result, const std::vector<bool>& underflow) : dom_(result), underflow_(underflow) {}
-
-    bool null() { return element() && dom_.null(); }
-    bool boolean(bool v) { return element() && dom_.boolean(v); }
-    bool number_integer(json::number_integer_t v) { return number() && dom_.number_integer(v); }
-    bool number_unsigned(json::number_unsigned_t v) { return number() && dom_.number_unsigned(v); }
-    bool number_float(json::number_float_t v, const json::string_t& s) { return number() && dom_.number_float(v, s); }
-    bool string(json::string_t& v) { return element() && dom_.string(v); }
-    bool binary(json::binary_t& v) { return element() && dom_.binary(v); }
-    bool start_object(std::size_t n) { return open(false) && dom_.start_object(n); }
-    bool start_array(std::size_t n) { return open(true) && dom_.start_array(n); }
-    bool end_object() { return close() && dom_.end_object(); }
-    bool end_array() { return close() && dom_.end_array(); }
-    bool key(json::string_t& k) {
-        Frame& f = stack_.back();
-        f.key = k;
-        if (!f.add(k)) throw InputError(path_of(stack_), "duplicate key (each key may appear once in an object)");
-        return dom_.key(k);
-    }
-    template <class Exception>
-    bool parse_error(std::size_t position, const std::string& token, const Exception& e) {
-        return dom_.parse_error(position, token, e);
-    }
-
-private:
-    bool element() {
-        if (!stack_.empty() && stack_.back().is_array) ++stack_.back().count;
-        return true;
-    }
-    bool number() {
-        element();
-        if (!underflow_.empty() && underflow_[numbers_++]) {
-            throw InputError(path_of(stack_), "a number too small for a double: it would be taken as 0 "
-                                              "(expected 0 or a magnitude 1e-60 .. 1e60)");
-        }
-        return true;
-    }
-    bool open(bool is_array) {
-        element();
-        stack_.push_back(Frame{is_array, 0, {}, {}, {}});
-        if (!spare_keys_.empty()) {  // a closed object's list, kept for its capacity
-            stack_.back().keys = std::move(spare_keys_.back());
-            spare_keys_.pop_back();
-        }
-        return true;
-    }
-    bool close() {
-        if (stack_.empty()) return true;
-        if (stack_.back().keys.capacity() != 0) {
-            stack_.back().keys.clear();
-            spare_keys_.push_back(std::move(stack_.back().keys));
-        }
-        stack_.pop_back();
-        return true;
-    }
-
-    nlohmann::detail::json_sax_dom_parser<json> dom_;
-    const std::vector<bool>& underflow_;
-    std::vector<Frame> stack_;
-    std::vector<std::vector<std::string>> spare_keys_;
-    std::size_t numbers_ = 0;
-};
-
-// A reader of the plain JSON that programs write: ASCII strings without escapes, numbers
-// that convert without underflow or overflow, no repeated key, at most kMaxDepth levels. It
-// reads such a text in one pass over its characters, about three times faster than the
-// library's reader on a scene of 10^5 contacts (0.10 s against 0.34 s for the 9 MB bowl of
-// docs/benchmarks.md: the library reads a character at a time through its input adapter and
-// copies each token), and gives up on anything else, which the library then reads and reports.
-class PlainReader {
-public:
-    // scene: where a scene's contacts and polygons go when they are plain (PlainScene), or
-    // nullptr to read any document.
-    PlainReader(std::string_view text, PlainScene* scene) : p_(text.data()), end_(text.data() + text.size()), scene_(scene) {}
-
-    std::optional<json> document() {
-        json out;
-        if (!value(out, 0, scene_ ? Place::Scene : Place::Other)) return std::nullopt;
-        skip_space();
-        if (p_ != end_) return std::nullopt;
-        return out;
-    }
-
-private:
-    static constexpr int kMaxDepth = 64;
-
-    // Where a value sits in a scene: the places whose lists the scene reader takes apart.
-    enum class Place { Other, Scene, Body, Obstacles, Obstacle };
-
-    static bool digit(char c) { return c >= '0' && c <= '9'; }
-
-    void skip_space() {
-        while (p_ != end_ && (*p_ == ' ' || *p_ == '\n' || *p_ == '\r' || *p_ == '\t')) ++p_;
-    }
-
-    // Whether the text continues with c (after white space); consumes it if so.
-    bool next_is(char c) {
-        skip_space();
-        if (p_ == end_ || *p_ != c) return false;
-        ++p_;
-        return true;
-    }
-
-    bool value(json& out, int depth, Place place = Place::Other) {
-        skip_space();
-        if (p_ == end_) return false;
-        switch (*p_) {
-            case '{': return object(out, depth, place);
-            case '[': return array(out, depth, place);
-            case '"': {
-                std::string s;
-                if (!string(s)) return false;
-                out = std::move(s);
-                return true;
-            }
-            case 't': return literal("true", out, json(true));
-            case 'f': return literal("false", out, json(false));
-            case 'n': return literal("null", out, json(nullptr));
-            default: return number(out);
-        }
-    }
-
-    bool object(json& out, int depth, Place place) {
-        if (depth == kMaxDepth) return false;
-        ++p_;
-        out = json::object();
-        auto& members = out.get_ref<json::object_t&>();
-        if (next_is('}')) return true;
-        do {
-            std::string key;
-            if (!member_key(key)) return false;
-            // The member's place, and where its list goes if it is taken apart.
-            Place inner = Place::Other;
-            std::optional<std::vector<PlainPoint>>* polygon = nullptr;
-            bool contacts = false;
-            if (place == Place::Scene) {
-                contacts = key == "contacts";
-                inner = key == "body" ? Place::Body : key == "obstacles" ? Place::Obstacles : Place::Other;
-            } else if (key == "polygon" && place == Place::Body) {
-                polygon = &scene_->body_polygon;
-            } else if (key == "polygon" && place == Place::Obstacle) {
-                if (scene_->obstacle_polygons.size() <= obstacle_) scene_->obstacle_polygons.resize(obstacle_ + 1);
-                polygon = &scene_->obstacle_polygons[obstacle_];
-            }
-            const auto [member, inserted] = members.emplace(std::move(key), json());
-            if (!inserted) return false;  // a repeated key: the library names its path
-            // A list taken apart leaves the member null.
-            if ((contacts && contact_list()) || (polygon && point_list(*polygon))) continue;
-            if (!value(member->second, depth + 1, inner)) return false;
-        } while (next_is(','));
-        return next_is('}');
-    }
-
-    // A non-empty list of [x, y] (numbers), into points. On anything else, false with the
-    // position and points as they were.
-    bool point_list(std::optional<std::vector<PlainPoint>>& points) {
-        std::vector<PlainPoint> list;
-        if (!list_of([&] { return pair(list.emplace_back()); })) return false;
-        points = std::move(list);
-        return true;
-    }
-
-    // A non-empty list of contacts, each an object of "point" and "normal" (two numbers each)
-    // and optionally "mu", "mu_kinetic" (numbers) and "name" (a string), into the scene. On
-    // anything else, false with the position and the list as they were.
-    bool contact_list() {
-        if (list_of([&] { return next_is('{') && contact(scene_->contacts.emplace_back()); })) return true;
-        scene_->contacts.clear();
-        return false;
-    }
-
-    // A non-empty list whose every element item() reads; false, with the position as it was,
-    // at the first element it cannot read or anything else.
-    template <class Item>
-    bool list_of(Item item) {
-        const char* const start = p_;
-        if (next_is('[')) {
-            do {
-                if (!item()) break;
-                if (next_is(']')) return true;
-            } while (next_is(','));
-        }
-        p_ = start;
-        return false;
-    }
-
-    // [x, y] of two numbers.
-    bool pair(PlainPoint& xy) {
-        return next_is('[') && scalar_number(xy[0]) && next_is(',') && scalar_number(xy[1]) && next_is(']');
-    }
-
-    bool contact(PlainContact& c) {
-        static constexpr std::string_view kFields[] = {"point", "normal", "mu", "mu_kinetic", "name"};
-        unsigned seen = 0;
-        do {
-            std::string key;
-            if (!member_key(key)) return false;
-            const auto field = static_cast<unsigned>(std::find(std::begin(kFields), std::end(kFields), key) - std::begin(kFields));
-            if (field == std::size(kFields) || (seen & (1u << field)) != 0) return false;
-            seen |= 1u << field;
-            bool read = false;
-            if (field <= 1) {
-                read = pair(field == 0 ? c.point : c.normal);
-            } else if (field <= 3) {
-                read = scalar_number((field == 2 ? c.mu : c.mu_kinetic).emplace());
-            } else {
-                skip_space();
-                std::string name;
-                read = p_ != end_ && *p_ == '"' && string(name);
-                c.name = std::move(name);
-            }
-            if (!read) return false;
-        } while (next_is(','));
-        return (seen & 3u) == 3u && next_is('}');
-    }
-
-    bool scalar_number(json& out) {
-        skip_space();
-        return p_ != end_ && (*p_ == '-' || digit(*p_)) && number(out);
-    }
-
-    bool array(json& out, int depth, Place place) {
-        if (depth == kMaxDepth) return false;
-        ++p_;
-        out = json::array();
-        auto& elements = out.get_ref<json::array_t&>();
-        if (next_is(']')) return true;
-        do {
-            if (place == Place::Obstacles) obstacle_ = elements.size();
-            elements.emplace_back();
-            if (!value(elements.back(), depth + 1, place == Place::Obstacles ? Place::Obstacle : Place::Other)) return false;
-        } while (next_is(','));
-        return next_is(']');
-    }
-
-    // A member's key and the colon after it.
-    bool member_key(std::string& key) {
-        skip_space();
-        return p_ != end_ && *p_ == '"' && string(key) && next_is(':');
-    }
-
-    // ASCII from the space to DEL between quotes, with no escape.
-    bool string(std::string& out) {
-        const char* start = ++p_;
-        for (; p_ != end_; ++p_) {
-            const auto c = static_cast<unsigned char>(*p_);
-            if (c == '"') {
-                out.assign(start, p_++);
-                return true;
-            }
-            if (c < 0x20 || c == '\\' || c >= 0x80) return false;
-        }
-        return false;
-    }
-
-    bool literal(std::string_view word, json& out, json v) {
-        if (static_cast<std::size_t>(end_ - p_) < word.size() || std::string_view(p_, word.size()) != word) return false;
-        p_ += word.size();
-        out = std::move(v);
-        return true;
-    }
-
-    // JSON's number grammar; the value as the library stores it: an integer without fraction
-    // or exponent (unsigned unless negative), else a double.
-    bool number(json& out) {
-        const char* const start = p_;
-        const char* q = p_;
-        const bool negative = *q == '-';
-        if (negative) ++q;
-        if (q == end_ || !digit(*q)) return false;
-        if (*q == '0') {
-            ++q;
-        } else {
-            while (q != end_ && digit(*q)) ++q;
-        }
-        const char* const integer_end = q;
-        bool fraction_or_exponent = false;
-        if (q != end_ && *q == '.') {
-            const char* const digits = ++q;
-            while (q != end_ && digit(*q)) ++q;
-            if (q == digits) return false;
-            fraction_or_exponent = true;
-        }
-        if (q != end_ && (*q == 'e' || *q == 'E')) {
-            ++q;
-            if (q != end_ && (*q == '+' || *q == '-')) ++q;
-            const char* const digits = q;
-            while (q != end_ && digit(*q)) ++q;
-            if (q == digits) return false;
-            fraction_or_exponent = true;
-        }
-        p_ = q;
-        if (!fraction_or_exponent) {
-            const char* d = start + (negative ? 1 : 0);
-            if (integer_end - d > 18) return false;  // may not fit 64 bits: the library decides
-            std::uint64_t v = 0;
-            for (; d != integer_end; ++d) v = v * 10 + static_cast<std::uint64_t>(*d - '0');
-            if (negative) {
-                out = -static_cast<std::int64_t>(v);
-            } else {
-                out = v;
-            }
-            return true;
-        }
-#if defined(__cpp_lib_to_chars)
-        double x = 0.0;
-        const auto [end, error] = std::from_chars(start, q, x);
-        if (error != std::errc() || end != q || !std::isfinite(x)) return false;
-        if (x == 0.0 && nonzero_digits(std::string_view(start, static_cast<std::size_t>(q - start)))) return false;
-        out = x;
-        return true;
-#else
-        return false;  // no exact conversion without a locale: the library reads the text
-#endif
-    }
-
-    const char* p_;
-    const char* end_;
-    PlainScene* scene_;
-    std::size_t obstacle_ = 0;  // the index of the obstacle being read
-};
-
 }  // namespace
-
-std::optional<json> parse_plain(std::string_view text) { return PlainReader(text, nullptr).document(); }
-
-std::optional<PlainScene> parse_plain_scene(std::string_view text) {
-    PlainScene out;
-    std::optional<json> doc = PlainReader(text, &out).document();
-    if (!doc) return std::nullopt;
-    out.doc = std::move(*doc);
-    return out;
-}
-
-json parse(const std::string& text) {
-    if (std::optional<json> doc = parse_plain(text)) return std::move(*doc);
-    return parse_by_library(text);
-}
-
-json parse_by_library(const std::string& text) {
-    // Duplicate keys are an error: JSON parsers differ on which one wins, so a file with two
-    // "mu" fields means different scenes to different programs.
-    const std::vector<bool> underflow = underflowing_numbers(text);
-    json result;
-    CheckedBuilder builder(result, underflow);
-    try {
-        json::sax_parse(text, &builder);
-    } catch (const json::parse_error& e) {
-        throw InputError("$", std::string("malformed JSON: ") + e.what());
-    } catch (const json::out_of_range& e) {  // e.g. 1e999: too large for a double
-        throw InputError("$", std::string("a number is out of range (expected 0 or 1e-60 .. 1e60): ") + e.what());
-    }
-    return result;
-}
-
-}  // namespace momentlab::json_read
-
-namespace momentlab {
 
 std::optional<std::string> underflowing_number(std::string_view json_text) {
     std::optional<std::string> first;
-    json_read::for_each_number(json_text, [&](std::string_view token) {
-        if (!first && json_read::underflows(token)) first = std::string(token);
+    for_each_number(json_text, [&](std::string_view token) {
+        if (first || !nonzero_digits(token)) return;
+        if (std::strtod(std::string(token).c_str(), nullptr) == 0.0) first = std::string(token);
     });
     return first;
 }

@@ -13,120 +13,121 @@ namespace momentlab {
 namespace {
 
 using nlohmann::json;
+using json_read::Schema;
+using json_read::Value;
 using namespace json_read;
 
-double positive(const json& obj, const std::string& path, const char* name) {
-    const double x = number(field(obj, path, name), path + "." + name);
-    if (!(x > 0.0)) throw InputError(path + "." + name, "expected a number > 0");
+// What the reader keeps of a scene's document: the fields below (any other is a warning).
+constexpr Schema::Member kContactFields[] = {
+    {"point", &kPair}, {"normal", &kPair}, {"mu", &kScalar}, {"mu_kinetic", &kScalar}, {"name", &kScalar}};
+constexpr Schema kContact{kContactFields};
+constexpr Schema kContacts{{}, &kContact};
+constexpr Schema::Member kBodyFields[] = {{"mass", &kScalar},
+                                          {"com", &kPair},
+                                          {"inertia", &kScalar},
+                                          {"radius_of_gyration", &kScalar},
+                                          {"polygon", &kPairs}};
+constexpr Schema kBody{kBodyFields};
+constexpr Schema::Member kObstacleFields[] = {{"polygon", &kPairs}};
+constexpr Schema kObstacle{kObstacleFields};
+constexpr Schema kObstacles{{}, &kObstacle};
+constexpr Schema::Member kSceneFields[] = {{"body", &kBody},
+                                           {"contacts", &kContacts},
+                                           {"obstacles", &kObstacles},
+                                           {"contact_distance", &kScalar},
+                                           {"mu", &kScalar}};
+constexpr Schema kScene{kSceneFields};
+
+double positive(const Value& obj, const Path& path, std::string_view name) {
+    const Path p(path, name);
+    const double x = number(field(obj, path, name), p);
+    if (!(x > 0.0)) throw InputError(p.str(), "expected a number > 0");
     return x;
 }
 
-Polygon checked_polygon(Polygon p, const std::string& path) {
+Polygon polygon(const Value& v, const Path& path) {
+    Polygon p = vec2_list(v, path);
     const std::string problem = polygon_problem(p);
-    if (!problem.empty()) throw InputError(path, problem);
+    if (!problem.empty()) throw InputError(path.str(), problem);
     return p;
 }
 
-Polygon polygon(const json& v, const std::string& path) { return checked_polygon(vec2_list(v, path), path); }
-
-// A "polygon" field's value, or the plain reader's list of it when it took the list apart.
-Polygon polygon(const json& v, const std::optional<std::vector<PlainPoint>>* plain, const std::string& path) {
-    return plain && *plain ? checked_polygon(vec2_list(**plain, path), path) : polygon(v, path);
-}
-
-Body read_body(const json& b, const std::optional<std::vector<PlainPoint>>* plain_polygon, const std::string& path,
-               InputWarnings* w) {
-    if (!b.is_object()) throw InputError(path, "expected an object with \"mass\", \"com\" and \"inertia\"");
+Body read_body(const Value& b, const Path& path, InputWarnings* w) {
+    if (!b.is_object()) throw InputError(path.str(), "expected an object with \"mass\", \"com\" and \"inertia\"");
     known_fields(b, path, {"mass", "com", "inertia", "radius_of_gyration", "polygon"}, w);
     Body body;
     body.mass = positive(b, path, "mass");
-    body.com = vec2(field(b, path, "com"), path + ".com");
+    body.com = vec2(field(b, path, "com"), Path(path, "com"));
     if (b.contains("inertia")) {
         body.inertia = positive(b, path, "inertia");
         if (b.contains("radius_of_gyration")) {
-            throw InputError(path + ".radius_of_gyration", "give either \"inertia\" or \"radius_of_gyration\", not both");
+            throw InputError(Path(path, "radius_of_gyration").str(), "give either \"inertia\" or \"radius_of_gyration\", not both");
         }
     } else if (b.contains("radius_of_gyration")) {
         const double rho = positive(b, path, "radius_of_gyration");
         body.radius_of_gyration = rho;
         body.inertia = body.mass * rho * rho;
     } else {
-        throw InputError(path, "missing field \"inertia\" (or \"radius_of_gyration\")");
+        throw InputError(path.str(), "missing field \"inertia\" (or \"radius_of_gyration\")");
     }
-    if (b.contains("polygon")) body.polygon = polygon(b.at("polygon"), plain_polygon, path + ".polygon");
+    if (const std::optional<Value> p = b.find("polygon")) body.polygon = polygon(*p, Path(path, "polygon"));
     return body;
 }
 
-// A contact from its checked point and normal and its other fields as written (nullptr: absent).
-Contact read_contact(const Vec2& point, const Vec2& normal, const json* mu, const json* mu_kinetic, const json* name,
-                     const std::string& path) {
-    const double friction = mu ? nonnegative(*mu, path + ".mu", "mu") : 0.0;
-    std::optional<double> kinetic;
-    if (mu_kinetic) kinetic = nonnegative(*mu_kinetic, path + ".mu_kinetic", "mu_kinetic");
-    if (name && !name->is_string()) throw InputError(path + ".name", "expected a string");
-    return Contact::make(point, normal, friction, kinetic, name ? name->get_ref<const std::string&>() : std::string());
-}
-
-Contact read_contact(const json& c, const std::string& path, InputWarnings* w) {
-    if (!c.is_object()) throw InputError(path, "expected an object with \"point\" and \"normal\"");
+Contact read_contact(const Value& c, const Path& path, InputWarnings* w) {
+    if (!c.is_object()) throw InputError(path.str(), "expected an object with \"point\" and \"normal\"");
     known_fields(c, path, {"point", "normal", "mu", "mu_kinetic", "name"}, w);
-    const Vec2 point = vec2(field(c, path, "point"), path + ".point");
-    const Vec2 normal = nonzero2(c, path, "normal");
-    const auto given = [&](const char* name) { return c.contains(name) ? &c.at(name) : nullptr; };
-    return read_contact(point, normal, given("mu"), given("mu_kinetic"), given("name"), path);
+    static constexpr std::array<std::string_view, 5> kFields = {"point", "normal", "mu", "mu_kinetic", "name"};
+    const auto [given_point, given_normal, mu, mu_kinetic, name] = c.find(kFields);
+    if (!given_point) throw InputError(path.str(), "missing field \"point\"");
+    const Vec2 point = vec2(*given_point, Path(path, "point"));
+    if (!given_normal) throw InputError(path.str(), "missing field \"normal\"");
+    const Path normal_path(path, "normal");
+    const Vec2 normal = nonzero(vec2(*given_normal, normal_path), normal_path);
+    const double friction = mu ? nonnegative(*mu, Path(path, "mu"), "mu") : 0.0;
+    std::optional<double> kinetic;
+    if (mu_kinetic) kinetic = nonnegative(*mu_kinetic, Path(path, "mu_kinetic"), "mu_kinetic");
+    if (name && !name->is_string()) throw InputError(Path(path, "name").str(), "expected a string");
+    return Contact::make(point, normal, friction, kinetic, name ? std::string(name->string()) : std::string());
 }
 
-// The same from a contact the plain reader took apart (it has exactly the known fields).
-Contact read_contact(const PlainContact& c, const std::string& path) {
-    const Vec2 point = vec2(c.point[0], c.point[1], path + ".point");
-    const Vec2 normal = nonzero(vec2(c.normal[0], c.normal[1], path + ".normal"), path + ".normal");
-    const auto given = [](const std::optional<json>& v) { return v ? &*v : nullptr; };
-    return read_contact(point, normal, given(c.mu), given(c.mu_kinetic), given(c.name), path);
-}
-
-// read_scene, with the lists the plain reader took apart from `plain` (nullptr: none).
-Scene read_scene(const json& doc, const PlainScene* plain_scene, InputWarnings* w) {
-    const std::span<const PlainContact> plain = plain_scene ? std::span<const PlainContact>(plain_scene->contacts)
-                                                            : std::span<const PlainContact>();
+Scene read_scene(const Value& doc, InputWarnings* w) {
+    const Path root("$");
     if (!doc.is_object()) throw InputError("$", "expected a scene object with \"body\" and \"contacts\"");
-    known_fields(doc, "$", {"body", "contacts", "obstacles", "contact_distance", "mu"}, w);
+    known_fields(doc, root, {"body", "contacts", "obstacles", "contact_distance", "mu"}, w);
     Scene scene;
-    if (doc.contains("body")) {
-        scene.body = read_body(doc.at("body"), plain_scene ? &plain_scene->body_polygon : nullptr, "$.body", w);
-    }
-    if (doc.contains("obstacles")) {
-        const json& obstacles = doc.at("obstacles");
-        if (!obstacles.is_array()) throw InputError("$.obstacles", "expected a list of obstacles");
-        for (std::size_t i = 0; i < obstacles.size(); ++i) {
-            const std::string p = at("$.obstacles", i);
-            if (!obstacles[i].is_object()) throw InputError(p, "expected an object with \"polygon\"");
-            known_fields(obstacles[i], p, {"polygon"}, w);
-            const bool plain_polygon = plain_scene && i < plain_scene->obstacle_polygons.size();
-            scene.obstacles.push_back(polygon(field(obstacles[i], p, "polygon"),
-                                              plain_polygon ? &plain_scene->obstacle_polygons[i] : nullptr, p + ".polygon"));
-        }
+    if (const std::optional<Value> body = doc.find("body")) scene.body = read_body(*body, Path(root, "body"), w);
+    if (const std::optional<Value> obstacles = doc.find("obstacles")) {
+        const Path list(root, "obstacles");
+        if (!obstacles->is_array()) throw InputError(list.str(), "expected a list of obstacles");
+        obstacles->for_each_element([&](std::size_t i, const Value& o) {
+            const Path p(list, i);
+            if (!o.is_object()) throw InputError(p.str(), "expected an object with \"polygon\"");
+            known_fields(o, p, {"polygon"}, w);
+            scene.obstacles.push_back(polygon(field(o, p, "polygon"), Path(p, "polygon")));
+        });
     }
     ContactFinding options;
-    if (doc.contains("contact_distance")) {
-        options.distance = nonnegative(doc.at("contact_distance"), "$.contact_distance", "a distance");
+    if (const std::optional<Value> distance = doc.find("contact_distance")) {
+        options.distance = nonnegative(*distance, Path(root, "contact_distance"), "a distance");
         scene.contact_distance = options.distance;
     }
-    if (doc.contains("contacts")) {
-        const json& contacts = doc.at("contacts");
-        if (plain.empty() && !contacts.is_array()) throw InputError("$.contacts", "expected a list of contacts");
-        const std::size_t count = plain.empty() ? contacts.size() : plain.size();
-        if (count == 0) {
-            throw InputError("$.contacts", "expected at least one contact (omit the field to find them from the polygons)");
+    const std::optional<Value> mu = doc.find("mu");
+    if (const std::optional<Value> contacts = doc.find("contacts")) {
+        const Path list(root, "contacts");
+        if (!contacts->is_array()) throw InputError(list.str(), "expected a list of contacts");
+        if (contacts->size() == 0) {
+            throw InputError(list.str(), "expected at least one contact (omit the field to find them from the polygons)");
         }
         // A contact must be on the body's outline when the outline is given: its edges indexed
         // once for all the contacts.
         const Polygon* outline = scene.body && !scene.body->polygon.empty() ? &scene.body->polygon : nullptr;
         const std::optional<EdgeGrid> edges = outline ? std::optional<EdgeGrid>(std::in_place, *outline, options.distance)
                                                       : std::nullopt;
-        scene.contacts.reserve(count);
-        for (std::size_t i = 0; i < count; ++i) {
-            const std::string p = at("$.contacts", i);
-            scene.contacts.push_back(plain.empty() ? read_contact(contacts[i], p, w) : read_contact(plain[i], p));
+        scene.contacts.reserve(contacts->size());
+        contacts->for_each_element([&](std::size_t i, const Value& c) {
+            const Path p(list, i);
+            scene.contacts.push_back(read_contact(c, p, w));
             if (outline) {
                 const Vec2& point = scene.contacts.back().point;
                 const auto near = edges->near(point);
@@ -139,21 +140,21 @@ Scene read_scene(const json& doc, const PlainScene* plain_scene, InputWarnings* 
                     std::snprintf(text, sizeof text,
                                   "is %.3g from the body polygon (expected on its boundary, within contact_distance = %g)",
                                   d, options.distance);
-                    throw InputError(p + ".point", text);
+                    throw InputError(Path(p, "point").str(), text);
                 }
             }
-        }
-        if (doc.contains("mu") && w != nullptr) w->push_back("$.mu: ignored: it applies to contacts found from the polygons");
+        });
+        if (mu && w != nullptr) w->push_back("$.mu: ignored: it applies to contacts found from the polygons");
     } else {
         if (!scene.body || scene.body->polygon.empty() || scene.obstacles.empty()) {
             throw InputError("$", "missing field \"contacts\" (or a body polygon and obstacles to find them from)");
         }
-        if (doc.contains("mu")) {
-            options.mu = nonnegative(doc.at("mu"), "$.mu", "mu");
+        if (mu) {
+            options.mu = nonnegative(*mu, Path(root, "mu"), "mu");
             options.mu_kinetic = options.mu;
         }
         try {
-            // The outlines were found simple as they were read (checked_polygon).
+            // The outlines were found simple as they were read (polygon()).
             scene.contacts = detail::find_contacts_of_simple(scene.body->polygon, scene.obstacles, options);
         } catch (const std::invalid_argument& e) {
             throw InputError("$", e.what());
@@ -173,11 +174,18 @@ Scene read_scene(const json& doc, const PlainScene* plain_scene, InputWarnings* 
 
 }  // namespace
 
-Scene read_scene(const json& doc, InputWarnings* w) { return read_scene(doc, nullptr, w); }
+namespace json_read {
+
+const Schema& scene_schema() { return kScene; }
+
+Scene scene_of(const Document& doc, InputWarnings* warnings) { return read_scene(doc.root(), warnings); }
+
+}  // namespace json_read
+
+Scene read_scene(const json& doc, InputWarnings* w) { return read_scene(document_of(doc, kScene).root(), w); }
 
 Scene read_scene_text(const std::string& text, InputWarnings* warnings) {
-    if (const std::optional<PlainScene> plain = parse_plain_scene(text)) return read_scene(plain->doc, &*plain, warnings);
-    return read_scene(parse_by_library(text), nullptr, warnings);
+    return read_scene(json_read::read(text, kScene).root(), warnings);
 }
 
 json to_json(const Scene& scene) {
