@@ -20,6 +20,7 @@
 #include "momentlab/geometry/force_sets.hpp"
 #include "checks.hpp"
 #include "mode_walk.hpp"
+#include "../geometry/held_cone.hpp"
 
 namespace momentlab {
 
