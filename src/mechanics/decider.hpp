@@ -10,6 +10,7 @@
 
 #include "momentlab/core/exact.hpp"
 #include "momentlab/geometry/cone.hpp"
+#include "../geometry/held_cone.hpp"
 #include "friction_edges.hpp"
 #include "generators.hpp"
 #include "grouped_edges.hpp"

@@ -14,6 +14,7 @@
 #include "cone_membership.hpp"
 #include "random_inputs.hpp"
 #include "geometry/cone_build.hpp"
+#include "geometry/held_cone.hpp"
 #include "momentlab/geometry/labels.hpp"
 
 namespace momentlab {

@@ -4,9 +4,7 @@
 /// Closed polyhedral convex cones of R^3 (planar wrenches, twists, covectors), kept in both
 /// representations at once, each minimal (docs/design.md, "The mathematics").
 
-#include <array>
 #include <initializer_list>
-#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -18,34 +16,16 @@
 
 namespace momentlab {
 
-/// Which extreme rays lie on each facet, stored as compressed rows: while every row has the
-/// same length (the two rays of each facet of a pointed cone) only the indices are stored, one
-/// allocation; rows of different lengths add their offsets. The cyclic incidence of a pointed
-/// cone of up to 1024 facets is read from tables shared by all cones: no allocation.
+/// Which extreme rays lie on each facet: one row of ray indices per facet.
 class Incidence {
 public:
     /// Appends the row of the next facet: indices of the rays on it, increasing.
     void add_row(std::initializer_list<int> rays) { add_row(std::span<const int>(rays.begin(), rays.size())); }
+    void add_row(std::span<const int> rays);
     /// Reserves room for `rows` rows of `per_row` rays on average.
     void reserve(std::size_t rows, std::size_t per_row) { indices_.reserve(rows * per_row); }
-    void add_row(std::span<const int> rays) {
-        if (shared_ != nullptr) own();
-        const int length = static_cast<int>(rays.size());
-        if (offsets_.empty() && rows_ > 0 && length != stride_) {  // lengths differ from now on
-            offsets_.reserve(static_cast<std::size_t>(rows_) + 2);
-            for (int j = 0; j <= rows_; ++j) offsets_.push_back(j * stride_);
-        }
-        if (rows_ == 0) stride_ = length;
-        indices_.insert(indices_.end(), rays.begin(), rays.end());
-        if (!offsets_.empty()) offsets_.push_back(static_cast<int>(indices_.size()));
-        ++rows_;
-    }
     /// The rays on facet j.
-    [[nodiscard]] std::span<const int> row(std::size_t j) const {
-        if (shared_ != nullptr) return {j + 1 < static_cast<std::size_t>(rows_) ? shared_ + 2 * j : last_, 2};
-        if (offsets_.empty()) return {indices_.data() + j * static_cast<std::size_t>(stride_), static_cast<std::size_t>(stride_)};
-        return {indices_.data() + offsets_[j], static_cast<std::size_t>(offsets_[j + 1] - offsets_[j])};
-    }
+    [[nodiscard]] std::span<const int> row(std::size_t j) const;
     /// The number of facets.
     [[nodiscard]] std::size_t size() const { return static_cast<std::size_t>(rows_); }
     /// The incidence of a pointed cone's k >= 3 facets in cyclic order: facet i holds rays i
@@ -55,17 +35,12 @@ public:
     [[nodiscard]] Incidence transposed(std::size_t columns) const;
 
 private:
-    // Row j is indices_[offsets_[j], offsets_[j + 1]), or indices_[j * stride_, (j + 1) *
-    // stride_) while offsets_ is empty (every row so far has stride_ indices). A cyclic
-    // incidence from the shared tables has no indices_: row j is shared_[2j, 2j + 2) = {j, j + 1},
-    // and the last row last_[0, 2) = {0, rows_ - 1}.
-    void own();  // the shared rows copied into indices_
-    const int* shared_ = nullptr;
-    const int* last_ = nullptr;
+    // How the rows are stored is incidence.cpp's.
     std::vector<int> offsets_;
     std::vector<int> indices_;
     int rows_ = 0;
     int stride_ = 0;
+    bool cyclic_ = false;  // the rows of cyclic(rows_), which keeps no indices
 };
 
 /// Which representation of a cone was given exactly; the other one is computed from it.
@@ -212,35 +187,6 @@ private:
 [[nodiscard]] Cone intersection(const Cone& f, const Cone& g);
 /// True when F is a subset of G. Exact (F's generators against G's half-spaces, both exact).
 [[nodiscard]] bool subset(const Cone& f, const Cone& g);
-
-/// Whether cone(generators) holds w, with a certificate, without the double description when
-/// the cone is pointed and full-dimensional: its extreme rays are found in cyclic order (as by
-/// Cone::from_generators) but its facets are not built, which saves an exact construction per
-/// facet; w is tested against each facet as det(r_i, r_i+1, w). Other cones are built.
-struct Held {
-    bool member = false;
-    /// For non-members: a facet normal or +-an equation h of the cone, with h . w < 0.
-    ExactVector separator;
-    /// For members of a pointed full-dimensional cone: three generators (indices into the
-    /// argument) whose cone holds w.
-    std::optional<std::array<std::size_t, 3>> triangle;
-};
-[[nodiscard]] Held cone_holds(std::span<const ExactVector> generators, const Vec3& w);
-
-/// cone(generators) kept for membership tests of many wrenches, found once as cone_holds finds
-/// it: a pointed full-dimensional cone as its extreme rays in cyclic order (no facets built),
-/// any other as the Cone. holds(w) answers as cone_holds(generators, w) does.
-class HeldCone {
-public:
-    explicit HeldCone(std::vector<ExactVector> generators);
-    [[nodiscard]] Held holds(const Vec3& w) const;
-
-private:
-    std::vector<ExactVector> generators_;  // the non-zero generators
-    std::vector<std::size_t> from_;        // their indices in the argument (empty: no zero ones)
-    std::vector<int> cycle_;               // indices into generators_, or empty
-    std::optional<Cone> cone_;             // when not pointed and full-dimensional
-};
 
 /// True when the cone c (a subset of e) contains a point of the interior of e: c lies in no
 /// facet of e. False whenever e is not full-dimensional. Exact.
