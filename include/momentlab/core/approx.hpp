@@ -17,7 +17,6 @@
 /// static filter (CGAL's Static_filters, whose constants come from Static_filter_error).
 
 #include <cmath>
-#include <limits>
 
 #include "momentlab/core/sign.hpp"
 
@@ -70,11 +69,11 @@ struct Approx {
 [[nodiscard]] constexpr double error_factor(int depth) { return depth * kUnitRoundoff * (1 + 0x1p-40); }
 
 /// The certified sign of the exact number `a` stands for: true (and the sign in `out`) when the
-/// bound decides it, false when it does not (or when anything overflowed: then value is not
-/// finite, or magnitude is infinite or NaN). Precondition: depth <= 1024.
+/// bound decides it, false when it does not. An overflow anywhere makes the magnitude infinite
+/// (each node's |value| is at most its magnitude: rounding is monotone), and a NaN fails every
+/// comparison: neither is ever certified. Precondition: depth <= 1024.
 [[nodiscard]] inline bool certified_sign(const Approx& a, Sign& out) {
-    const double v = std::fabs(a.value);
-    if (!(v > error_factor(a.depth) * a.magnitude && v <= std::numeric_limits<double>::max())) return false;
+    if (!(std::fabs(a.value) > error_factor(a.depth) * a.magnitude)) return false;
     out = a.value > 0 ? Sign::Positive : Sign::Negative;
     return true;
 }
