@@ -274,6 +274,28 @@ TEST(Predicates, DotSignIsExact) {
     }
 }
 
+// Consecutive points of a circle of 10^6 (seen as generators (cos t, sin t, 1)), rounded: the sign
+// of each triple's determinant against GMP. Those determinants, near 1e-16 and below the filter's bound,
+// are decided by the filter on the accurate cross product of the last two (src/core/predicates.cpp),
+// not by expansions: fails without that stage (all 20,000 then take expansions).
+TEST(Predicates, NearlyCollinearTriplesAreDecidedBeforeTheExpansions) {
+    predicate_stats() = {};
+    const int n = 1000000;
+    int undecided_by_the_filter = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const auto point = [&](int k) {
+            const double t = 6.283185307179586 * static_cast<double>(k) / n;
+            return Vec3(std::cos(t), std::sin(t), 1.0);
+        };
+        const Vec3 a = point(50 * i), b = point(50 * i + 1), c = point(50 * i + 2);
+        Sign s = Sign::Zero;
+        undecided_by_the_filter += !filter_sign(Det{}, s, approximate(a), approximate(b), approximate(c));
+        ASSERT_EQ(to_int(det_sign(a, b, c)), exact_det(a, b, c)) << i;
+    }
+    EXPECT_GT(undecided_by_the_filter, 15000);  // (the first filter decides few of them)
+    EXPECT_LT(predicate_stats().expansion, 200);
+}
+
 // Nearly parallel pairs (b a rounded multiple of a, some moved by an ulp) at every scale: each
 // 2x2 minor against GMP.
 TEST(Predicates, MinorSignIsExactNearParallel) {

@@ -38,7 +38,7 @@ struct Approx {
     int depth = 0;
 
     /// The double x itself (no error).
-    static constexpr Approx exact(double x) { return {x, x < 0 ? -x : x, 0}; }
+    static Approx exact(double x) { return {x, std::fabs(x), 0}; }
     /// An x known to lie within `error` of `value` (any finite error >= 0; +inf: unknown). The
     /// error is written as gamma(4) times a magnitude, which costs nothing for errors up to
     /// 4u |value| (a rounded exact number).
@@ -57,9 +57,13 @@ struct Approx {
 [[nodiscard]] constexpr Approx operator-(const Approx& a, const Approx& b) {
     return {a.value - b.value, a.magnitude + b.magnitude, (a.depth > b.depth ? a.depth : b.depth) + 1};
 }
-// Input errors multiply: (1 + gamma(m))(1 + gamma(n))(1 + u) <= 1 + gamma(m + n + 1).
-[[nodiscard]] constexpr Approx operator*(const Approx& a, const Approx& b) {
-    return {a.value * b.value, a.magnitude * b.magnitude + kUnderflowMagnitude, a.depth + b.depth + 1};
+// Input errors multiply: (1 + gamma(m))(1 + gamma(n))(1 + u) <= 1 + gamma(m + n + 1). (The
+// product of two exact doubles has the magnitude |value|, one instruction where the depths are
+// known at compile time.)
+[[nodiscard]] inline Approx operator*(const Approx& a, const Approx& b) {
+    const double v = a.value * b.value;
+    const double m = a.depth == 0 && b.depth == 0 ? std::fabs(v) : a.magnitude * b.magnitude;
+    return {v, m + kUnderflowMagnitude, a.depth + b.depth + 1};
 }
 
 /// A bound on gamma(depth) / (1 - u)^(2 depth + 2), which also covers the rounding of the

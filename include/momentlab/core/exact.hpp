@@ -144,8 +144,8 @@ private:
     Vec3 u_ = Vec3::Zero();
     Vec3 v_ = Vec3::Zero();
     // Computed: the three exact coordinates packed in one shared block of words (their
-    // exponents, signs and sizes, then their limbs: no unused room); the approximation lives in
-    // the object (u_, v_).
+    // exponents, signs and sizes, then their limbs: no unused room); the approximation and its
+    // magnitudes live in the object (u_, v_).
     std::shared_ptr<const Dyadic::Limb> computed_;
     signed char sign_ = 1;  // Cross and Computed: the vector is sign_ times the construction
     Kind kind_ = Kind::Input;

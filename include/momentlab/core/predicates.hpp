@@ -31,16 +31,16 @@ constexpr Sign sign_of(double x) {
 
 /// a . b, for vectors indexed 0..2 of any number type.
 struct Dot {
-    template <class V>
-    constexpr auto operator()(const V& a, const V& b) const {
+    template <class A, class B>
+    constexpr auto operator()(const A& a, const B& b) const {
         return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     }
 };
 
 /// det[a b c] = a . (b x c), for vectors indexed 0..2 of any number type.
 struct Det {
-    template <class V>
-    constexpr auto operator()(const V& a, const V& b, const V& c) const {
+    template <class A, class B, class C>
+    constexpr auto operator()(const A& a, const B& b, const C& c) const {
         return a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
     }
 };
@@ -48,8 +48,8 @@ struct Det {
 /// The 2x2 minor a[i] b[j] - a[j] b[i], for vectors indexed 0..2 of any number type.
 struct Minor {
     int i, j;
-    template <class V>
-    constexpr auto operator()(const V& a, const V& b) const {
+    template <class A, class B>
+    constexpr auto operator()(const A& a, const B& b) const {
         return a[i] * b[j] - a[j] * b[i];
     }
 };
@@ -57,16 +57,23 @@ struct Minor {
 /// Certified approximations of the three coordinates of a vector.
 using Approx3 = std::array<Approx, 3>;
 
-/// The approximation of stored doubles: themselves, without error.
-[[nodiscard]] inline Approx3 approximate(const Vec3& v) {
-    return {Approx::exact(v.x()), Approx::exact(v.y()), Approx::exact(v.z())};
-}
+/// Stored doubles as the filter reads them: themselves, without error (each coordinate made
+/// where a predicate reads it, so a minor reads two of the three).
+struct ExactDoubles {
+    const Vec3& v;
+    [[nodiscard]] Approx operator[](int k) const { return Approx::exact(v[k]); }
+};
+
+/// The approximation of stored doubles.
+[[nodiscard]] inline ExactDoubles approximate(const Vec3& v) { return {v}; }
 
 /// The sign of p on the operands' approximations, when their bound decides it (true, the sign in
-/// `out`); false when only exact arithmetic can. Operands: Approx3 (or anything p accepts whose
-/// numbers are Approx).
+/// `out`); false when only exact arithmetic can. Operands: Approx3, ExactDoubles (anything
+/// indexed 0..2 whose numbers are Approx).
+/// (Flattened: the predicate and its arithmetic inline into one straight line of code, whose
+/// depths the compiler folds into constants.)
 template <class Predicate, class... A>
-[[nodiscard]] inline bool filter_sign(const Predicate& p, Sign& out, const A&... approximations) {
+[[nodiscard, gnu::flatten]] inline bool filter_sign(const Predicate& p, Sign& out, const A&... approximations) {
     return certified_sign(p(approximations...), out);
 }
 
