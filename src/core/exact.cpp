@@ -1,19 +1,9 @@
-// Exact vectors (core/exact.hpp): certified approximations first, Dyadic arithmetic when they
-// cannot decide.
-//
-// The filters. Each operand is 2^k (a + d) with |d_i| <= e_i coordinate by coordinate and
-// max |a_i| <= 2 (a positive power of two never changes a sign). A determinant is multilinear
-// in its columns, so det(a+da, b+db, c+dc) - det(a, b, c) is a sum of terms, each a product of
-// entries of which at least one is a d: at most perm(|a|+ea, |b|+eb, |c|+ec) - perm(|a|, |b|,
-// |c|) for the permanent perm of non-negative columns. Both permanents are evaluated in the
-// same order, and rounding is monotone, so the first is never below the second; each is within
-// 6u of its exact value (u = 2^-53: six roundings deep) and the difference within u of its own,
-// so 10u of the first covers them. The evaluation of det(a, b, c) in doubles adds at most 5u per
-// term of the permanent; 8u is used. Products of numbers below 2 plus their errors never
-// overflow; an absolute 2^-1000 covers underflow. Dot products and 2x2 minors are bounded the
-// same way. With bounds per coordinate (not one bound for the whole vector) the filters decide
-// the same signs when one coordinate of every operand is scaled by a power of two, as the
-// torques of a scene are when its lengths are.
+// Exact vectors (core/exact.hpp). Each kind keeps or makes a certified approximation (the
+// vector scaled by a power of two, rounded, with a bound on each coordinate's error), which the
+// predicates' filter adaptor (core/predicates.hpp) reads; where it cannot decide, the exact
+// stages below take over: exact zeros the constructions show, the wrenches of three forces taken
+// about one of their points, and Dyadic arithmetic. The predicates' homogeneity (each is linear
+// in each operand) is what lets every operand carry its own power of two.
 #include "momentlab/core/exact.hpp"
 
 #include "error_free.hpp"
@@ -31,8 +21,8 @@
 namespace momentlab {
 namespace {
 
-constexpr double kU = detail::kApproximationUnit;
-constexpr double kUnderflow = detail::kApproximationFloor;
+constexpr double kU = kUnitRoundoff;
+constexpr double kUnderflow = 0x1p-1000;  // an absolute floor of the approximations' error bounds
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Every filtered predicate counts itself here: in the initial-exec model on ELF systems, where
@@ -108,37 +98,12 @@ Vec3 readable(const Vec3& v) {
 
 double norm1(const Vec3& v) { return std::fabs(v.x()) + std::fabs(v.y()) + std::fabs(v.z()); }
 
-// The permanent of three non-negative columns, in det_terms' order (so that, for |a|, |b|, |c|,
-// it is det_terms' permanent bit for bit).
-double permanent(const Vec3& a, const Vec3& b, const Vec3& c) {
-    return a.x() * (b.y() * c.z() + b.z() * c.y()) + a.y() * (b.z() * c.x() + b.x() * c.z()) +
-           a.z() * (b.x() * c.y() + b.y() * c.x());
-}
-
-bool det_filter(const ExactVector::Approximation& pa, const ExactVector::Approximation& pb,
-                const ExactVector::Approximation& pc, Sign& out) {
-    const Vec3 &a = pa.approx, &b = pb.approx, &c = pc.approx;
-    const auto [value, permanent0] = detail::det_terms(a, b, c);
-    const double permanent1 = permanent(a.cwiseAbs() + pa.err, b.cwiseAbs() + pb.err, c.cwiseAbs() + pc.err);
-    // (+inf or NaN when an operand has no approximation: then no sign is returned.)
-    const double bound = (permanent1 - permanent0 + 8 * kU * permanent0 + 10 * kU * permanent1 + kUnderflow) * (1 + 0x1p-40);
-    if (!(std::fabs(value) > bound)) return false;
-    out = sign_of(value);
-    return true;
-}
-
-bool minor_filter(const ExactVector::Approximation& pa, const ExactVector::Approximation& pb, int i, int j,
-                  Sign& out) {
-    const Vec3 &a = pa.approx, &b = pb.approx;
-    const double p = a[i] * b[j], q = a[j] * b[i];
-    const double value = p - q;
-    const double permanent0 = std::fabs(p) + std::fabs(q);
-    const double permanent1 = (std::fabs(a[i]) + pa.err[i]) * (std::fabs(b[j]) + pb.err[j]) +
-                              (std::fabs(a[j]) + pa.err[j]) * (std::fabs(b[i]) + pb.err[i]);
-    const double bound = (permanent1 - permanent0 + 3 * kU * permanent0 + 10 * kU * permanent1 + kUnderflow) * (1 + 0x1p-40);
-    if (!(std::fabs(value) > bound)) return false;
-    out = sign_of(value);
-    return true;
+// An approximation whose coordinates err by at most err_i: the filters' magnitudes for it
+// (Approx::within, coordinate by coordinate).
+ExactVector::Approximation with_error(const Vec3& a, const Vec3& err) {
+    ExactVector::Approximation out{a, err, {}};
+    for (int i = 0; i < 3; ++i) out.magnitude[i] = Approx::within(a[i], err[i]).magnitude;
+    return out;
 }
 
 // The error of a coordinate rounded to nearest with relative error below 2^-52 (below 2^-51 of
@@ -149,14 +114,14 @@ Vec3 rounding_error(const Vec3& a, double floor) {
 
 ExactVector::Approximation input_approximation(const Vec3& v) {
     const double m = v.cwiseAbs().maxCoeff();
-    if (m == 0.0) return {};
+    if (m == 0.0) return {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
     const int e = binary_exponent(m);
-    ExactVector::Approximation out;
+    Vec3 a, err = Vec3::Zero();
     for (int i = 0; i < 3; ++i) {
-        out.approx[i] = detail::times_power_of_two(v[i], 1 - e);
-        if (detail::times_power_of_two(out.approx[i], e - 1) != v[i]) out.err[i] = kUnderflow;  // a tiny coordinate lost bits
+        a[i] = detail::times_power_of_two(v[i], 1 - e);
+        if (detail::times_power_of_two(a[i], e - 1) != v[i]) err[i] = kUnderflow;  // a tiny coordinate lost bits
     }
-    return out;
+    return with_error(a, err);
 }
 
 ExactVector::Approximation exact_approximation(const Exact3& v) {
@@ -164,14 +129,15 @@ ExactVector::Approximation exact_approximation(const Exact3& v) {
     for (const Dyadic& x : v) {
         if (!x.is_zero()) top = std::max(top, x.exponent());
     }
-    if (top == std::numeric_limits<std::int64_t>::min()) return {};
+    if (top == std::numeric_limits<std::int64_t>::min()) return {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
     // Each coordinate rounded with relative error below 2^-52 on a scale where the largest is
     // in [1, 2); coordinates below the double range flush to 0 (error below 2^-1022).
     const Vec3 a(v[0].to_double_scaled(top), v[1].to_double_scaled(top), v[2].to_double_scaled(top));
-    return {a, rounding_error(a, 0x1p-1021)};
+    return with_error(a, rounding_error(a, 0x1p-1021));
 }
 
-Sign exact_sign(const Dyadic& x) {
+// The sign of an exact value computed in Dyadic arithmetic: the last stage, counted.
+Sign dyadic_sign(const Dyadic& x) {
     ++g_stats.exact;
     return x.sign();
 }
@@ -191,13 +157,13 @@ ExactMatrix exact(const Mat3& m) {
     return {exact(Vec3(m.row(0).transpose())), exact(Vec3(m.row(1).transpose())), exact(Vec3(m.row(2).transpose()))};
 }
 
-Dyadic dot(const Exact3& a, const Exact3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Dyadic dot(const Exact3& a, const Exact3& b) { return Dot{}(a, b); }
 
 Exact3 cross(const Exact3& a, const Exact3& b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-Dyadic det(const Exact3& a, const Exact3& b, const Exact3& c) { return dot(a, cross(b, c)); }
+Dyadic det(const Exact3& a, const Exact3& b, const Exact3& c) { return Det{}(a, b, c); }
 
 Dyadic cross2(const Exact2& a, const Exact2& b) { return a[0] * b[1] - a[1] * b[0]; }
 
@@ -304,7 +270,7 @@ ExactVector ExactVector::computed(Exact3 e) {
     // predicates read it without following the pointer, which on a cone of 10^5 constructed
     // generators is a cache miss per predicate.
     out.u_ = approximation.approx;
-    out.v_ = approximation.err;
+    out.v_ = approximation.magnitude;
     // Packed: words 0-2 the binary exponents, 3-5 each coordinate's limb count times 4 plus its
     // sign + 1, then the limbs. A coordinate of a friction edge or of a ray of A has two or
     // three limbs, so the block is about half of three Dyadic objects (six inline limbs each).
@@ -383,10 +349,10 @@ double underflow_at(int scale) { return scale <= 72 ? kUnderflow : detail::times
 
 ExactVector::Approximation cross_approximation(const Vec3& p, const Vec3& q, int sign) {
     const std::optional<CrossScale> s = cross_scale(p, q);
-    if (!s) return {Vec3::Zero(), Vec3::Constant(kInf)};
+    if (!s) return {Vec3::Zero(), Vec3::Constant(kInf), Vec3::Constant(kInf)};
     // (2u + u^2)(|a| + |b|) <= 2^-51 fl(|a| + |b|): the sum in doubles errs by at most 2u.
-    return {times_power_of_two(p.cross(q) * static_cast<double>(sign), s->scale),
-            times_power_of_two(s->sums, s->scale - 51) + Vec3::Constant(underflow_at(s->scale))};
+    return with_error(times_power_of_two(p.cross(q) * static_cast<double>(sign), s->scale),
+                      times_power_of_two(s->sums, s->scale - 51) + Vec3::Constant(underflow_at(s->scale)));
 }
 
 }  // namespace
@@ -417,10 +383,14 @@ ExactVector::Approximation ExactVector::approximation() const {
                 // scale that takes it below 2^65: a coordinate below the normal range erred by
                 // at most 2^-1074 before that scaling.
                 const Vec3 a = times_power_of_two(value_, approx_shift_);
-                return {a, rounding_error(a, 0x1p-990)};
+                return with_error(a, rounding_error(a, 0x1p-990));
             }
             return cross_approximation(u_, v_, sign_);
-        case Kind::Computed: return {sign_ > 0 ? u_ : Vec3(-u_), v_};
+        case Kind::Computed: {
+            // u_ the approximation, v_ its magnitudes (exact_approximation).
+            const Vec3 a = sign_ > 0 ? u_ : Vec3(-u_);
+            return {a, rounding_error(a, 0x1p-1021), v_};
+        }
     }
     return {};
 }
@@ -469,7 +439,7 @@ ExactVector ExactVector::signed_permuted(const Mat3& p) const {
         }
         e.value_ = p * value_;
         e.u_ = p * u_;
-        e.v_ = p.cwiseAbs() * v_;  // the errors move with their coordinates
+        e.v_ = p.cwiseAbs() * v_;  // the magnitudes move with their coordinates
         return e;
     }
     ExactVector e = *this;
@@ -485,47 +455,6 @@ ExactVector ExactVector::signed_permuted(const Mat3& p) const {
 
 ExactVector ExactVector::transformed(const ExactMatrix& m) const { return from_exact(m * exact()); }
 
-// ---------------------------------------------------------------------------------------------
-// Predicates.
-
-Sign dot_sign(const ExactVector& a, const ExactVector& b) {
-    if (!a.is_constructed() && !b.is_constructed()) return dot_sign(a.value(), b.value());
-    Sign s = Sign::Zero;
-    if (dot_sign_by_approximations(a.approximation(), b.approximation(), s)) {
-        ++g_stats.filtered;
-        return s;
-    }
-    return exact_sign(dot(a.exact(), b.exact()));
-}
-
-Sign dot_sign(const ExactVector& a, const ExactVector& b, const ExactVector::Approximation& pa,
-              const ExactVector::Approximation& pb) {
-    if (!a.is_constructed() && !b.is_constructed()) return dot_sign(a.value(), b.value());
-    Sign s = Sign::Zero;
-    if (dot_sign_by_approximations(pa, pb, s)) {
-        ++g_stats.filtered;
-        return s;
-    }
-    return exact_sign(dot(a.exact(), b.exact()));
-}
-
-Sign dot_sign(const ExactVector& a, const Exact3& b) { return dot_sign(a, b, exact_approximation(b)); }
-
-ExactVector::Approximation approximation(const Exact3& b) { return exact_approximation(b); }
-
-Sign dot_sign(const ExactVector& a, const Exact3& b, const ExactVector::Approximation& b_approximation) {
-    return dot_sign(a, b, a.approximation(), b_approximation);
-}
-
-Sign dot_sign(const ExactVector& a, const Exact3& b, const ExactVector::Approximation& pa, const ExactVector::Approximation& pb) {
-    Sign s = Sign::Zero;
-    if (dot_sign_by_approximations(pa, pb, s)) {
-        ++g_stats.filtered;
-        return s;
-    }
-    return exact_sign(dot(a.exact(), b));
-}
-
 bool ExactVector::force(Vec2& point, Vec2& direction, int& sign) const {
     if (kind_ != Kind::Cross || u_.z() != 1.0 || v_.z() != 0.0) return false;
     // (a, b, 1) x (c, e, 0) = (-e, c, a e - b c): the force (-e, c) through (-b, a).
@@ -533,6 +462,49 @@ bool ExactVector::force(Vec2& point, Vec2& direction, int& sign) const {
     direction = Vec2(-v_.y(), v_.x());
     sign = sign_;
     return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Predicates: the filter adaptor of core/predicates.hpp on three kinds of operand, an
+// ExactVector, a vector given by its Dyadic coordinates (Exact3), and either with the
+// approximation its caller keeps (Kept); their exact stages below. (In namespace momentlab,
+// where the adaptor's argument-dependent lookup finds them; internal linkage.)
+
+namespace {
+
+// An operand with the approximation its caller made once (a plane tested against many vectors).
+template <class V>
+struct Kept {
+    const V& vector;
+    const ExactVector::Approximation& approximation;
+};
+
+}  // namespace
+
+template <class V>
+static Approx3 approximate(const Kept<V>& x) {
+    return approximate(x.approximation);
+}
+static Approx3 approximate(const Exact3& v) { return approximate(exact_approximation(v)); }
+
+static const ExactVector* vector_of(const ExactVector& v) { return &v; }
+template <class V>
+static const ExactVector* vector_of(const Kept<V>& x) {
+    return vector_of(x.vector);
+}
+static Exact3 exact_of(const ExactVector& v) { return v.exact(); }
+static const Exact3& exact_of(const Exact3& v) { return v; }
+template <class V>
+static decltype(auto) exact_of(const Kept<V>& x) {
+    return exact_of(x.vector);
+}
+
+// Two operands that store one construction are parallel: a zero of every predicate that is
+// linear in both (a contact's normal against A's facet copied from it), without arithmetic.
+template <class A, class B>
+static bool same_construction(const A& a, const B& b) {
+    const ExactVector *x = vector_of(a), *y = vector_of(b);
+    return x && y && x->same_construction(*y);
 }
 
 namespace {
@@ -545,35 +517,32 @@ std::optional<double> exact_difference(double x, double y) {
     return s;
 }
 
-// The sign of det(w1, w2, w3) for the wrenches w_i = s_i (d_i, p_i x d_i) of three forces,
-// taken about the first force's point: subtracting q x d_i from every torque (adding multiples
-// of the first two rows) leaves the determinant as it is, and for q = p_1 it is
-// s_1 s_2 s_3 (t_3 (d_1 x d_2) - t_2 (d_1 x d_3)) with t_i = (p_i - p_1) x d_i. A scene far
-// from the origin has torques near o x f, whose rounding hides what tells nearly dependent
-// wrenches apart (the normals of a body in a bowl 1000 away from the origin); about p_1 nothing
-// is hidden. Decides only when p_i - p_1 are exact doubles and the value exceeds its bound:
-// each of t_i and d_j x d_k errs by at most 2u of its permanent (T_i, C_jk), so each product
-// by at most (4u + 4u^2 + u) T C and the difference adds u of the sum: 6u (T_3 C_12 + T_2 C_13)
-// with everything below the normal range adding at most 2^-1070 (T_2 + T_3 + C_12 + C_13 + 2);
-// 8u is used.
-bool force_det_bound(const Vec2& p1, const Vec2& p2, const Vec2& p3, const Vec2& d1, const Vec2& d2, const Vec2& d3,
-                     Sign& out) {
+// det(w_1, w_2, w_3) / (s_1 s_2 s_3) for the wrenches w_i = s_i (d_i, p_i x d_i) of three forces,
+// taken about the first force's point, over any number type: subtracting q x d_i from every
+// torque (adding multiples of the first two rows) leaves the determinant as it is, and for
+// q = p_1 it is t_3 (d_1 x d_2) - t_2 (d_1 x d_3) with t_i = (p_i - p_1) x d_i. A scene far from
+// the origin has torques near o x f, whose rounding hides what tells nearly dependent wrenches
+// apart (the normals of a body in a bowl 1000 away from the origin); about p_1 nothing is hidden.
+struct ForcesAboutTheFirstPoint {
+    template <class T>
+    T operator()(const std::array<T, 2>& q2, const std::array<T, 2>& q3, const std::array<T, 2>& d1,
+                 const std::array<T, 2>& d2, const std::array<T, 2>& d3) const {
+        const T t2 = q2[0] * d2[1] - q2[1] * d2[0], t3 = q3[0] * d3[1] - q3[1] * d3[0];
+        return t3 * (d1[0] * d2[1] - d1[1] * d2[0]) - t2 * (d1[0] * d3[1] - d1[1] * d3[0]);
+    }
+};
+
+std::array<Approx, 2> approximate(double x, double y) { return {Approx::exact(x), Approx::exact(y)}; }
+std::array<Approx, 2> approximate(const Vec2& v) { return approximate(v.x(), v.y()); }
+
+// ForcesAboutTheFirstPoint's filter, when the differences p_i - p_1 are doubles.
+bool forces_filter(const Vec2& p1, const Vec2& p2, const Vec2& p3, const Vec2& d1, const Vec2& d2, const Vec2& d3,
+                   Sign& out) {
     const std::optional<double> x2 = exact_difference(p2.x(), p1.x()), y2 = exact_difference(p2.y(), p1.y());
     const std::optional<double> x3 = exact_difference(p3.x(), p1.x()), y3 = exact_difference(p3.y(), p1.y());
     if (!x2 || !y2 || !x3 || !y3) return false;
-    const double t2 = *x2 * d2.y() - *y2 * d2.x(), t3 = *x3 * d3.y() - *y3 * d3.x();
-    const double big_t2 = std::fabs(*x2 * d2.y()) + std::fabs(*y2 * d2.x());
-    const double big_t3 = std::fabs(*x3 * d3.y()) + std::fabs(*y3 * d3.x());
-    const double c12 = d1.x() * d2.y() - d1.y() * d2.x(), c13 = d1.x() * d3.y() - d1.y() * d3.x();
-    const double big_c12 = std::fabs(d1.x() * d2.y()) + std::fabs(d1.y() * d2.x());
-    const double big_c13 = std::fabs(d1.x() * d3.y()) + std::fabs(d1.y() * d3.x());
-    const double value = t3 * c12 - t2 * c13;
-    const double permanent = big_t3 * big_c12 + big_t2 * big_c13;
-    if (!(permanent < 0x1p1000)) return false;  // (an overflow, or a NaN)
-    const double bound = (8 * kU * permanent + 0x1p-1070 * (big_t2 + big_t3 + big_c12 + big_c13 + 2)) * (1 + 0x1p-40);
-    if (!(std::fabs(value) > bound)) return false;
-    out = sign_of(value);
-    return true;
+    return filter_sign(ForcesAboutTheFirstPoint{}, out, approximate(*x2, *y2), approximate(*x3, *y3), approximate(d1),
+                       approximate(d2), approximate(d3));
 }
 
 // The sign of t_3 (d_1 x d_2) - t_2 (d_1 x d_3), t_i = (p_i - p_1) x d_i = det(P_1, P_i, D_i)
@@ -593,16 +562,17 @@ bool parallel_forces_det(const Vec2& p1, const Vec2& p2, const Vec2& p3, const V
     return true;
 }
 
-// force_det_bound, or where it does not decide, the exact zeros of parallel forces: two of the
-// three directions parallel (the determinant is invariant under a cyclic permutation, so the
-// parallel pair is taken about the third force's point). Three wrenches of parallel forces are
-// dependent; the friction edges of contacts along a line have two directions.
-bool force_det_filter(const ExactVector& a, const ExactVector& b, const ExactVector& c, Sign& out) {
+// The wrenches' stage: for three forces, their determinant about the first point (filtered), or
+// where that does not decide, the exact zeros of parallel forces: two of the three directions
+// parallel (the determinant is invariant under a cyclic permutation, so the parallel pair is
+// taken about the third force's point). Three wrenches of parallel forces are dependent; the
+// friction edges of contacts along a line have two directions.
+bool forces_det(const ExactVector& a, const ExactVector& b, const ExactVector& c, Sign& out) {
     Vec2 p1, p2, p3, d1, d2, d3;
     int s1 = 1, s2 = 1, s3 = 1;
     if (!a.force(p1, d1, s1) || !b.force(p2, d2, s2) || !c.force(p3, d3, s3)) return false;
     Sign v = Sign::Zero;
-    if (!force_det_bound(p1, p2, p3, d1, d2, d3, v) && !parallel_forces_det(p1, p2, p3, d1, d2, d3, v) &&
+    if (!forces_filter(p1, p2, p3, d1, d2, d3, v) && !parallel_forces_det(p1, p2, p3, d1, d2, d3, v) &&
         !parallel_forces_det(p2, p3, p1, d2, d3, d1, v)) {
         return false;
     }
@@ -610,55 +580,84 @@ bool force_det_filter(const ExactVector& a, const ExactVector& b, const ExactVec
     return true;
 }
 
-// det_sign of exact vectors given with their approximations (inlined into both entry points).
-inline Sign det_sign_approximated(const ExactVector& a, const ExactVector& b, const ExactVector& c,
-                                  const ExactVector::Approximation& pa, const ExactVector::Approximation& pb,
-                                  const ExactVector::Approximation& pc) {
-    Sign s = Sign::Zero;
-    if (det_filter(pa, pb, pc, s)) {
-        ++g_stats.filtered;
-        return s;
-    }
-    if (a.same_construction(b) || b.same_construction(c) || a.same_construction(c)) return Sign::Zero;  // two parallel columns
-    if (force_det_filter(a, b, c, s)) {
-        ++g_stats.filtered;
-        return s;
-    }
-    return exact_sign(det(a.exact(), b.exact(), c.exact()));
+}  // namespace
+
+template <class A, class B>
+static Sign exact_sign(const Dot& p, const A& a, const B& b) {
+    return dyadic_sign(p(exact_of(a), exact_of(b)));
 }
 
-}  // namespace
+template <class A, class B>
+static Sign exact_sign(const Minor& p, const A& a, const B& b) {
+    if (same_construction(a, b)) return Sign::Zero;
+    return dyadic_sign(p(exact_of(a), exact_of(b)));
+}
+
+template <class A, class B, class C>
+static Sign exact_sign(const Det& p, const A& a, const B& b, const C& c) {
+    if (same_construction(a, b) || same_construction(b, c) || same_construction(a, c)) return Sign::Zero;  // two parallel columns
+    Sign s = Sign::Zero;
+    const ExactVector *x = vector_of(a), *y = vector_of(b), *z = vector_of(c);
+    if (x && y && z && forces_det(*x, *y, *z, s)) return s;
+    return dyadic_sign(p(exact_of(a), exact_of(b), exact_of(c)));
+}
+
+// The adaptor, counting what it decided without Dyadic arithmetic.
+template <class Predicate, class... Operands>
+static Sign counted_sign(const Predicate& p, const Operands&... x) {
+    const long exact_before = g_stats.exact;
+    const Sign s = filtered_sign(p, x...);
+    if (g_stats.exact == exact_before) ++g_stats.filtered;
+    return s;
+}
+
+Sign dot_sign(const ExactVector& a, const ExactVector& b) {
+    if (!a.is_constructed() && !b.is_constructed()) return dot_sign(a.value(), b.value());
+    return counted_sign(Dot{}, a, b);
+}
+
+Sign dot_sign(const ExactVector& a, const ExactVector& b, const ExactVector::Approximation& pa,
+              const ExactVector::Approximation& pb) {
+    if (!a.is_constructed() && !b.is_constructed()) return dot_sign(a.value(), b.value());
+    return counted_sign(Dot{}, Kept<ExactVector>{a, pa}, Kept<ExactVector>{b, pb});
+}
+
+Sign dot_sign(const ExactVector& a, const Exact3& b) { return counted_sign(Dot{}, a, b); }
+
+ExactVector::Approximation approximation(const Exact3& b) { return exact_approximation(b); }
+
+Sign dot_sign(const ExactVector& a, const Exact3& b, const ExactVector::Approximation& b_approximation) {
+    return counted_sign(Dot{}, a, Kept<Exact3>{b, b_approximation});
+}
+
+Sign dot_sign(const ExactVector& a, const Exact3& b, const ExactVector::Approximation& pa, const ExactVector::Approximation& pb) {
+    return counted_sign(Dot{}, Kept<ExactVector>{a, pa}, Kept<Exact3>{b, pb});
+}
 
 Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c) {
     if (!a.is_constructed() && !b.is_constructed() && !c.is_constructed()) return det_sign(a.value(), b.value(), c.value());
-    return det_sign_approximated(a, b, c, a.approximation(), b.approximation(), c.approximation());
+    return counted_sign(Det{}, a, b, c);
 }
 
 Sign det_sign(const ExactVector& a, const ExactVector& b, const ExactVector& c, const ExactVector::Approximation& pa,
               const ExactVector::Approximation& pb, const ExactVector::Approximation& pc) {
     if (!a.is_constructed() && !b.is_constructed() && !c.is_constructed()) return det_sign(a.value(), b.value(), c.value());
-    return det_sign_approximated(a, b, c, pa, pb, pc);
+    return counted_sign(Det{}, Kept<ExactVector>{a, pa}, Kept<ExactVector>{b, pb}, Kept<ExactVector>{c, pc});
 }
 
 Sign minor_sign(const ExactVector& a, const ExactVector& b, int i, int j) {
     if (!a.is_constructed() && !b.is_constructed()) return minor_sign(a.value(), b.value(), i, j);
-    Sign s = Sign::Zero;
-    if (minor_filter(a.approximation(), b.approximation(), i, j, s)) {
-        ++g_stats.filtered;
-        return s;
-    }
-    if (a.same_construction(b)) return Sign::Zero;  // parallel
-    const Exact3 x = a.exact(), y = b.exact();
-    return exact_sign(x[static_cast<std::size_t>(i)] * y[static_cast<std::size_t>(j)] -
-                      x[static_cast<std::size_t>(j)] * y[static_cast<std::size_t>(i)]);
+    return counted_sign(Minor{i, j}, a, b);
 }
 
 bool parallel(const ExactVector& a, const ExactVector& b) {
     if (!a.is_constructed() && !b.is_constructed()) return parallel(a.value(), b.value());
-    const ExactVector::Approximation pa = a.approximation(), pb = b.approximation();
+    // Parallel unless a minor is certainly not zero: the filter on each (a cross product is
+    // linear in both); then exactly.
+    const Approx3 pa = approximate(a), pb = approximate(b);
     Sign s = Sign::Zero;
     for (int k = 0; k < 3; ++k) {
-        if (minor_filter(pa, pb, (k + 1) % 3, (k + 2) % 3, s) && s != Sign::Zero) {
+        if (filter_sign(Minor{(k + 1) % 3, (k + 2) % 3}, s, pa, pb)) {
             ++g_stats.filtered;
             return false;
         }
@@ -672,11 +671,11 @@ bool is_zero(const ExactVector& v) {
     // Constructions that are exactly doubles are stored as inputs, so a computed vector is
     // never zero; a lazy cross product is zero when its factors are parallel.
     if (!v.is_constructed()) return is_zero(v.value());
-    // A coordinate whose approximation is further from 0 than its error bound is not 0 (no
-    // Dyadic coordinates made for the many that are not: the cones' generators are tested).
-    const ExactVector::Approximation p = v.approximation();
-    for (int i = 0; i < 3; ++i) {
-        if (std::abs(p.approx[i]) > p.err[i]) return false;
+    // A coordinate whose approximation certainly is not 0 is not 0 (no Dyadic coordinates made
+    // for the many that are not: the cones' generators are tested).
+    Sign s = Sign::Zero;
+    for (const Approx& x : approximate(v)) {
+        if (certified_sign(x, s)) return false;
     }
     return is_zero(v.exact());
 }

@@ -225,6 +225,56 @@ TEST(ExactVector, PredicatesAgreeWithGmpOnHardCases) {
     EXPECT_GT(exact_stats().exact, 5000);
 }
 
+// Constructions whose exact coordinates are not doubles (friction edges n + mu t through p, their
+// cross products: 100 bits and more), so that every approximation is rounded, in triples exactly
+// dependent (c = a + s b, s a double), moved off by 1 to 4 ulps of c's first coordinate (a
+// Dyadic nudge below the approximations' precision) or by 2^30 ulps: det, minor, dot with the
+// facet a x b, and
+// parallel, against GMP; and the filter alone (filter_sign on the approximations) is right
+// whenever it decides and decides none of the zeros. Fails when the approximations' magnitudes
+// understate their errors (Approx::within's 2^51 taken as 2^45).
+TEST(ExactVector, RoundedConstructionsNearDegeneracyAgreeWithGmp) {
+    testing::Random r(47);
+    exact_stats() = {};
+    int zeros = 0, filtered = 0, moved = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const auto edge = [&] {
+            const Vec2 p(r.uniform(-1, 1), r.uniform(-1, 1)), n = r.vec3(1).head<2>(), t(n.y(), -n.x());
+            return ExactVector::from_exact(wrench_through(exact(p), exact(n) + Dyadic(r.uniform(0.1, 0.9)) * exact(t)));
+        };
+        const ExactVector a = edge(), b = i % 3 == 0 ? ExactVector::cross(edge(), edge()) : edge();
+        Exact3 c = a.exact() + Dyadic(r.uniform(-2, 2)) * b.exact();
+        // Half exactly dependent, a quarter moved by a few ulps, a quarter by 2^30 of them.
+        const int ulps = i % 4 < 2 ? 0 : r.integer(1, 4) * (r.integer(0, 1) ? 1 : -1);
+        if (ulps != 0 && !c[0].is_zero()) {
+            c[0] += Dyadic(std::ldexp(static_cast<double>(ulps), static_cast<int>(c[0].exponent()) - (i % 4 == 2 ? 52 : 22)));
+            moved += i % 4 == 2;
+        }
+        const ExactVector cv = ExactVector::from_exact(c);
+        ASSERT_TRUE(a.is_constructed() && b.is_constructed() && cv.is_constructed()) << i;
+        const reference::QVec qa = to_q(a), qb = to_q(b), qc = to_q(cv);
+        const int expected = sgn(reference::det(qa, qb, qc));
+        zeros += expected == 0;
+        ASSERT_EQ(to_int(det_sign(a, b, cv)), expected) << i;
+        ASSERT_EQ(to_int(det_sign(cv, a, b)), expected) << i;
+        ASSERT_EQ(to_int(dot_sign(ExactVector::cross(a, b), cv)), expected) << i;
+        ASSERT_EQ(to_int(dot_sign(ExactVector::cross(a, b), c)), expected) << i;
+        const int k = r.integer(0, 2), l = (k + 1) % 3;
+        ASSERT_EQ(to_int(minor_sign(a, cv, k, l)), sgn(qa[k] * qc[l] - qa[l] * qc[k])) << i;
+        ASSERT_EQ(parallel(b, cv), reference::is_zero(reference::cross(qb, qc))) << i;
+        Sign s = Sign::Zero;
+        if (filter_sign(Det{}, s, approximate(a), approximate(b), approximate(cv))) {
+            ASSERT_EQ(to_int(s), expected) << i;
+            ASSERT_NE(expected, 0) << i;
+            ++filtered;
+        }
+    }
+    EXPECT_GT(zeros, 5000);
+    EXPECT_GT(moved, 4000);
+    EXPECT_GT(filtered, 4000);  // (most of those moved by 2^30 ulps)
+    EXPECT_GT(exact_stats().exact, 10000);
+}
+
 // ExactVector::wrench keeps a force's wrench as a cross product of two stored vectors: its exact
 // value, its predicates and its filter against the raw formula (d, p x d) in GMP, for points and
 // directions of every magnitude (integers, denormals, far exponents); its printed value is the
@@ -414,7 +464,7 @@ TEST(ExactVector, IntegerCrossValueIsReducedByTheGcd) {
 }
 
 // Every kind's approximation certifies each coordinate on its own: |exact 2^-k - approx_i| <=
-// err_i (GMP), for inputs, wrenches, computed vectors (friction edges, crosses of those) and
+// err_i and <= 4u magnitude_i (GMP), for inputs, wrenches, computed vectors (friction edges, crosses of those) and
 // their signed permutations, with coordinates of very different sizes.
 TEST(ExactVector, ApproximationBoundsEachCoordinate) {
     testing::Random r(8);
@@ -442,6 +492,10 @@ TEST(ExactVector, ApproximationBoundsEachCoordinate) {
                 if (k >= 0) mpq_div_2exp(scaled.get_mpq_t(), scaled.get_mpq_t(), static_cast<mp_bitcnt_t>(k));
                 else mpq_mul_2exp(scaled.get_mpq_t(), scaled.get_mpq_t(), static_cast<mp_bitcnt_t>(-k));
                 ASSERT_LE(abs(scaled - Q(a.approx[j])), Q(a.err[j])) << i << " coordinate " << j;
+                // The filters' form: within gamma(4) magnitude_j (4u magnitude_j is less), and
+                // magnitude_j >= |approx_j|.
+                ASSERT_LE(abs(scaled - Q(a.approx[j])), Q(0x1p-51) * Q(a.magnitude[j])) << i << " coordinate " << j;
+                ASSERT_GE(a.magnitude[j], std::fabs(a.approx[j])) << i << " coordinate " << j;
             }
             ++checked;
         }

@@ -8,16 +8,19 @@
 /// Every vector momentlab decides with is an exact expression of the input doubles: a
 /// contact wrench (n, p x n), a friction edge n + mu t acting at p, a facet normal u x v, an
 /// image M r under the inertia matrix. An `ExactVector` carries that exact value, a rounded
-/// value for printing, and a certified approximation. Predicates (signs of dot products,
-/// 2x2 minors and 3x3 determinants) first evaluate the approximations with a forward error
-/// bound and fall back to exact Dyadic arithmetic only when the bound cannot decide
+/// value for printing, and a certified approximation. Its predicates (signs of dot products,
+/// 2x2 minors and 3x3 determinants) are those of core/predicates.hpp, decided by the same
+/// filter adaptor: on the approximations (core/approx.hpp) when their bound decides, else by
+/// exact zeros the constructions show, the wrenches' own stage, and Dyadic arithmetic
 /// (docs/robustness.md).
 
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 
+#include "momentlab/core/approx.hpp"
 #include "momentlab/core/dyadic.hpp"
 #include "momentlab/core/predicates.hpp"
 #include "momentlab/core/vec.hpp"
@@ -106,13 +109,16 @@ public:
     [[nodiscard]] ExactVector transformed(const ExactMatrix& m) const;
 
     /// A certified approximation: the exact vector is 2^k (approx + d) for some integer k, with
-    /// |d_i| <= err_i coordinate by coordinate and max |approx_i| <= 2; err is +inf when there
+    /// max |approx_i| <= 2 and, coordinate by coordinate, |d_i| <= err_i and |d_i| <= gamma(4)
+    /// magnitude_i with magnitude_i >= |approx_i| (the form the filters read: coordinate i is
+    /// Approx{approx_i, magnitude_i, 4}, core/approx.hpp). err and magnitude are +inf when there
     /// is none (then every predicate takes the exact path). Bounds per coordinate make the
     /// filters blind to a scaling of one coordinate: a scene 2^40 times larger has torques 2^40
     /// times larger than its forces, and its wrenches keep every bit of their forces.
     struct Approximation {
         Vec3 approx = Vec3::Zero();
         Vec3 err = Vec3::Zero();
+        Vec3 magnitude = Vec3::Constant(std::numeric_limits<double>::infinity());  ///< (unset: no bound)
     };
     [[nodiscard]] Approximation approximation() const;
 
@@ -138,8 +144,8 @@ private:
     Vec3 u_ = Vec3::Zero();
     Vec3 v_ = Vec3::Zero();
     // Computed: the three exact coordinates packed in one shared block of words (their
-    // exponents, signs and sizes, then their limbs: no unused room); the approximation lives in
-    // the object (u_, v_).
+    // exponents, signs and sizes, then their limbs: no unused room); the approximation and its
+    // magnitudes live in the object (u_, v_).
     std::shared_ptr<const Dyadic::Limb> computed_;
     signed char sign_ = 1;  // Cross and Computed: the vector is sign_ times the construction
     Kind kind_ = Kind::Input;
@@ -156,11 +162,13 @@ private:
     void keep_approximation_shift(const Vec3& base);
 };
 
-namespace detail {
-/// The unit roundoff, and the absolute floor of the approximations' error bounds.
-inline constexpr double kApproximationUnit = 0x1p-53;
-inline constexpr double kApproximationFloor = 0x1p-1000;
-}  // namespace detail
+/// The certified approximations of a vector's coordinates, as the filters read them.
+[[nodiscard]] inline Approx3 approximate(const ExactVector::Approximation& p) {
+    return {Approx{p.approx.x(), p.magnitude.x(), Approx::kWithinDepth}, Approx{p.approx.y(), p.magnitude.y(), Approx::kWithinDepth},
+            Approx{p.approx.z(), p.magnitude.z(), Approx::kWithinDepth}};
+}
+/// An exact vector's approximation, for the filter adaptor (core/predicates.hpp).
+[[nodiscard]] inline Approx3 approximate(const ExactVector& v) { return approximate(v.approximation()); }
 
 /// The sign of a . b from the approximations of a and b alone: true (and the sign in `out`)
 /// when their error bounds decide it, false when only exact arithmetic can. It is the filter
@@ -169,17 +177,7 @@ inline constexpr double kApproximationFloor = 0x1p-1000;
 /// counted in exact_stats()).
 [[nodiscard]] inline bool dot_sign_by_approximations(const ExactVector::Approximation& pa,
                                                      const ExactVector::Approximation& pb, Sign& out) {
-    constexpr double u = detail::kApproximationUnit;
-    const Vec3 &a = pa.approx, &b = pb.approx;
-    const double p0 = a.x() * b.x(), p1 = a.y() * b.y(), p2 = a.z() * b.z();
-    const double value = p0 + p1 + p2;
-    const double permanent0 = std::fabs(p0) + std::fabs(p1) + std::fabs(p2);
-    const double permanent1 = (a.cwiseAbs() + pa.err).dot(b.cwiseAbs() + pb.err);
-    const double bound =
-        (permanent1 - permanent0 + 4 * u * permanent0 + 10 * u * permanent1 + detail::kApproximationFloor) * (1 + 0x1p-40);
-    if (!(std::fabs(value) > bound)) return false;
-    out = sign_of(value);
-    return true;
+    return filter_sign(Dot{}, out, approximate(pa), approximate(pb));
 }
 
 /// The exact sign of a . b.
