@@ -93,12 +93,8 @@ void walk(simdjson::ondemand::value v, Builder& b) {
         case json_type::object:
             b.start_object();
             for (auto member : v.get_object()) {
-                const std::string_view raw = member.escaped_key();
-                if (raw.find('\\') == std::string_view::npos) {
-                    b.key(raw, Builder::Text::Lasting);  // in the text read
-                } else {
-                    b.key(member.unescaped_key(), Builder::Text::Transient);
-                }
+                // (simdjson 3.0's field has no escaped_key(): every key is copied, as with nlohmann.)
+                b.key(member.unescaped_key(), Builder::Text::Transient);
                 walk(member.value(), b);
             }
             b.end_object();
