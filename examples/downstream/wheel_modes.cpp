@@ -25,9 +25,9 @@ int main(int argc, char** argv) {
         if (argc == 5) {
             const momentlab::Vec3 e(std::strtod(argv[2], nullptr), std::strtod(argv[3], nullptr),
                                     std::strtod(argv[4], nullptr));
-            const momentlab::QueryResult r = momentlab::query(analysis, e);
+            const momentlab::QueryAnswer r = momentlab::query(scene, e);
             std::cout << "query:";
-            for (std::size_t i : r.modes) std::cout << ' ' << analysis[i].mode.letters;
+            for (const std::string& letters : r.letters) std::cout << ' ' << letters;
             std::cout << "\nverdict: " << momentlab::to_string(r.verdict) << '\n';
         }
     } catch (const std::exception& e) {

@@ -83,11 +83,10 @@ print("   push (1, -1) through the centre of mass:", a.query([1.0, -1.0, -0.75])
 assert a.query([1.0, -1.0, -0.75]) == ["rr"]
 print("   gravity alone (0, -1, -1/2):", a.query([0.0, -1.0, -0.5]))
 assert a.query([0.0, -1.0, -0.5]) == ["ff"]  # at rest on the floor
-# One question about a scene not analysed, as a simulator asks at each step: query_once answers
-# it exactly without building every mode's sets (certified doubles, the exact path where they
-# cannot decide; docs/robustness.md).
-once = ml.query_once(block, [1.0, -1.0, -0.75])
-print("   the same push asked once, without the analysis:", once["modes"], "| decided in certified doubles:", once["filtered"])
+# One question about a scene not analysed, as a simulator asks at each step: ml.query answers
+# it exactly without building every mode's sets (docs/robustness.md).
+once = ml.query(block, [1.0, -1.0, -0.75])
+print("   the same push asked once, without the analysis:", once["modes"], once["verdict"])
 assert once["modes"] == ["rr"]
 fig, axes = plt.subplots(1, 3, figsize=(13, 4.5))
 mp.mode_sets(axes, a, "rr")

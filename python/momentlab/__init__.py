@@ -376,9 +376,10 @@ def _forces(forces):
 
 
 def _unbounded_as_inf(value):
-    # The JSON views say "unbounded" where Python says math.inf.
+    # The JSON views say "unbounded" where Python says math.inf (for numbers: a region's kind
+    # "unbounded" stays a word).
     if isinstance(value, dict):
-        return {k: _unbounded_as_inf(v) for k, v in value.items()}
+        return {k: v if k == "kind" else _unbounded_as_inf(v) for k, v in value.items()}
     if isinstance(value, list):
         return [_unbounded_as_inf(v) for v in value]
     return math.inf if value == "unbounded" else value
