@@ -202,7 +202,7 @@ TEST(Analysis, QueryAgreesWithExactLpOracle) {
     for (const auto& [k, v] : verdicts) std::cout << " " << k << "=" << v;
     std::cout << "\n";
     EXPECT_EQ(failures, 0);
-    EXPECT_GE(wrenches, testing::sized(10000));
+    EXPECT_GE(wrenches, testing::floor_of(10000));
 }
 
 // Quasi-static (inertia neglected): E_i = -T_i, decided against the exact LP with the inertia
@@ -257,8 +257,8 @@ TEST(Analysis, QuasiStaticAgreesWithExactLpWithoutInertia) {
               << " in none), " << failures << " disagreements\n";
     EXPECT_EQ(failures, 0);
     EXPECT_EQ(wrenches, testing::sized(120) * 30);
-    EXPECT_GE(several, testing::sized(100));
-    EXPECT_GE(none, testing::sized(100));
+    EXPECT_GE(several, testing::floor_of(100));
+    EXPECT_GE(none, testing::floor_of(100));
 }
 
 // By hand, the block on the floor (contacts (0, 0) and (1, 0), normal +y, mu 1/2) held
@@ -337,8 +337,8 @@ TEST(Analysis, QueryIndexAgreesWithPerModeQueryOnHardWrenches) {
     }
     std::cout << "[Analysis] QueryIndex: " << checked << " wrenches (" << on_boundary << " in several modes), "
               << exact_path_scenes << " scenes with > 32 modes\n";
-    EXPECT_GE(exact_path_scenes, testing::sized(5));
-    EXPECT_GE(on_boundary, testing::sized(1000));
+    EXPECT_GE(exact_path_scenes, testing::floor_of(5));
+    EXPECT_GE(on_boundary, testing::floor_of(1000));
 }
 
 TEST(Analysis, QueryIndexRejectsNonFiniteWrenches) {
@@ -407,7 +407,7 @@ TEST(Analysis, BoundaryWrenchesAgreeWithExactLpOracle) {
               << " disagreements\n";
     EXPECT_EQ(failures, 0);
     EXPECT_EQ(wrenches, testing::sized(160) * 24);
-    EXPECT_GE(several, testing::sized(1000));
+    EXPECT_GE(several, testing::floor_of(1000));
 }
 
 // The direct path on scenes of many contacts, where it rules most modes out by planes and takes
@@ -461,9 +461,9 @@ TEST(Analysis, DirectQueryAgreesWithExactLpOnManyContacts) {
     std::cout << "[Analysis] query_scene: " << wrenches << " wrenches on 6-9 contacts, " << members << " mode answers 'yes', "
               << failures << " disagreements; E built for " << built << " of " << tested << " modes\n";
     EXPECT_EQ(failures, 0);
-    EXPECT_LT(built, tested);  // the certificates decide some modes
+    if (testing::kFullSize) EXPECT_LT(built, tested);  // the certificates decide some modes
     EXPECT_EQ(wrenches, testing::sized(24) * 12);
-    EXPECT_GE(members, testing::sized(400));
+    EXPECT_GE(members, testing::floor_of(400));
 }
 
 // query_once on scenes of 2 to 12 contacts: generic ones (random doubles), nearly degenerate ones
@@ -533,7 +533,7 @@ TEST(Analysis, OneShotAgreesWithExactLp) {
     std::cout << "\n";
     EXPECT_EQ(failures, 0);
     EXPECT_EQ(questions, testing::sized(72) * 10);
-    EXPECT_GE(on_boundary, testing::sized(72) / 3 * 2);  // the exactly degenerate (dyadic) scenes' sums
+    EXPECT_GE(on_boundary, testing::floor_of(72) / 3 * 2);  // the exactly degenerate (dyadic) scenes' sums
     EXPECT_GE(filtered[0].first * 10, filtered[0].second * 9);  // generic: at least 90% without the exact path
     EXPECT_EQ(filtered[2].first, 0);                             // exactly degenerate: never
 }
@@ -944,9 +944,9 @@ TEST(Analysis, SceneQuestionsAnswersEveryWrenchOfASequenceAsTheExactLp) {
               << fixed_members << " with the all-f mode; " << batched << " asked again in batches; "
               << bounded << " scenes bounded above 1 mode before any answer\n";
     EXPECT_EQ(batched, questions);
-    EXPECT_GE(bounded, testing::sized(24) / 2);  // the bound says more than the all-f mode
+    EXPECT_GE(bounded, testing::floor_of(24) / 2);  // the bound says more than the all-f mode
     EXPECT_EQ(questions, testing::sized(24) * 8);
-    EXPECT_GE(fixed_members, testing::sized(24) * 2);
+    EXPECT_GE(fixed_members, testing::floor_of(24) * 2);
 }
 
 // The verdicts of random wrenches on the slanted-normal families are the same after an exact
@@ -984,7 +984,7 @@ TEST(Analysis, QueriesAreInvariantUnderExactTransforms) {
         }
     }
     std::cout << "[Analysis] " << checked << " wrenches compared under exact transforms\n";
-    EXPECT_GE(checked, testing::sized(3000));
+    EXPECT_GE(checked, testing::floor_of(3000));
 }
 
 // Far from the origin: the block on a table moved by (1e8, 0) gives the same answers for the

@@ -185,8 +185,8 @@ TEST(Closure, AgreesWithTheExactLpOnRandomGrasps) {
     }
     std::cout << "[Closure] " << scenes << " random grasps: form closure " << held_form << ", force closure "
               << held_force << "\n";
-    EXPECT_GE(held_form, testing::sized(10));
-    EXPECT_GE(held_force, testing::sized(30));
+    EXPECT_GE(held_form, testing::floor_of(10));
+    EXPECT_GE(held_force, testing::floor_of(30));
     EXPECT_LT(held_force, scenes);
 }
 

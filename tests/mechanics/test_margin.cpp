@@ -235,9 +235,9 @@ TEST(Margin, MarginsAreTheOraclesDistancesAndTight) {
     std::cout << "[Margin] " << compared << " margins equal to the oracle's; tight: " << tight_inside << " inside, " << tight_other
               << " to another set (" << other_flat << " flat ones approached only); " << kept << " random moves kept the answer; "
               << small << " margins too small to move\n";
-    EXPECT_GE(tight_inside, testing::sized(60));
-    EXPECT_GE(tight_other, testing::sized(60));
-    EXPECT_GE(kept, testing::sized(100));
+    EXPECT_GE(tight_inside, testing::floor_of(60));
+    EXPECT_GE(tight_other, testing::floor_of(60));
+    EXPECT_GE(kept, testing::floor_of(100));
 }
 
 }  // namespace
