@@ -14,14 +14,19 @@
 ///      r, l per contact (`Mode::letters`), with its set of twists and `rotation_centres`.
 ///   4. Per-mode sets: `analyze` (mechanics/analysis.hpp) gives, per mode, the cones F (total
 ///      wrenches), T (contact wrenches) and E (applied wrenches) as `ModeForces`.
-///   5. Questions: `query(analysis, e)` gives the modes an applied wrench e produces (`.modes`,
-///      `.verdict`: unique, ambiguous, inconsistent); `QueryIndex` (mechanics/query_index.hpp)
-///      answers millions of them.
+///   5. Questions: `query(scene, e)` (mechanics/analysis.hpp) gives the modes an applied wrench e
+///      produces (`.letters`, sorted; `.verdict`: unique, ambiguous, inconsistent), the fast way
+///      (certified doubles for 2 to 12 contacts, the exact walk where they cannot decide);
+///      `QueryIndex(scene)` (mechanics/query_index.hpp) answers millions of them on one scene.
+///      Other paths and each answer's diagnostics are in mechanics/advanced.hpp.
 ///   5b. Grasp closure: `closure` (mechanics/closure.hpp): form and force closure, exactly, with
 ///      a certificate either way.
 ///   6. Plans (planning/): `plan_tilt`, `plan_push`, `plan_comply`: the actions W whose
 ///      W ∩ E_goal reaches a goal mode (Mason 1991, section 3).
 ///   7. Pictures (render/): figures of labels, modes and plans as SVG, PDF or PNG.
+///
+/// A front end (CLI, Python, web) poses these through the application layer, `Problem`
+/// (app/problem.hpp), where the checks of what a user gives and their messages live once.
 ///
 /// Underneath: `Cone` (geometry/cone.hpp), a closed polyhedral cone of wrenches or twists in
 /// both representations; `Labels` (geometry/labels.hpp), its moment labels; the force sets of
