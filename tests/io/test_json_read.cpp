@@ -271,9 +271,10 @@ TEST(JsonRead, EveryExampleIsPlain) {
         std::ifstream in(entry.path());
         std::ostringstream s;
         s << in.rdbuf();
-        const std::optional<Document> plain = json_read::read_plain(s.str(), json_read::kEverything);
+        const std::string text = s.str();  // the document's texts lie in it: kept while it is read
+        const std::optional<Document> plain = json_read::read_plain(text, json_read::kEverything);
         ASSERT_TRUE(plain.has_value()) << entry.path();
-        EXPECT_EQ(describe(*plain), by_library(s.str())) << entry.path();
+        EXPECT_EQ(describe(*plain), by_library(text)) << entry.path();
         ++files;
     }
     EXPECT_GT(files, 10);
