@@ -1,0 +1,180 @@
+"""Regressions of issue 44 through the front ends (the command line's text and JSON, the Python
+module), each against an oracle written here or in tests/python/oracle.py: exact Fractions read
+from the scene's raw numbers, never momentlab's wrenches, cones or mode lists.
+
+1. Unique and shared arcs when the goal holds every direction and one direction is shared.
+2. Margins invariant under exact translations (the centre-of-mass frame).
+"""
+
+import itertools
+import json
+import math
+from fractions import Fraction
+
+import pytest
+
+import momentlab as ml
+import oracle
+from conftest import cli
+
+# ---------------------------------------------------------------------------------------------
+# 1. The goal holds every direction; one other set meets the plane in one direction.
+
+# Two fingers at (0, 0) and (2, 1), antipodal within both friction cones (mu = 1/2): E_ff = R^3
+# quasi-statically. Of the other sets only sf's -FC_2 (forces through (2, 1)) meets the forces
+# through (0, 1), along y = 1 in the direction (1, 0).
+ANTIPODAL = {"body": {"mass": 1, "com": [0, 1], "inertia": 1},
+             "contacts": [{"point": [0, 0], "normal": [1, 1], "mu": 0.5, "mu_kinetic": 2},
+                          {"point": [2, 1], "normal": [-4, -1], "mu": 0.5, "mu_kinetic": 2}]}
+
+
+def quasi_static_answer(doc, e):
+    """The modes whose quasi-static set E_i = -T_i holds the wrench e (Fractions): -e a
+    non-negative combination of T_i's generators, by an exact LP (oracle.lp_feasible)."""
+    scene = oracle.exact_scene(doc)
+    out = set()
+    for letters in oracle.modes(scene):
+        gens = oracle._contact_generators(scene, letters)
+        if not gens:
+            held = all(v == 0 for v in e)
+        else:
+            eqs = [([g[r] for g in gens], -e[r]) for r in range(3)]
+            held = oracle.lp_feasible(len(gens), eqs, [], nonneg=range(len(gens))) is not None
+        if held:
+            out.add(letters)
+    return out
+
+
+def pythagorean_directions():
+    """Exact rational unit vectors all round the circle (from the triples (3, 4, 5), (5, 12, 13),
+    (8, 15, 17), (7, 24, 25)), with the four axis directions."""
+    out = {(Fraction(1), Fraction(0)), (Fraction(-1), Fraction(0)), (Fraction(0), Fraction(1)), (Fraction(0), Fraction(-1))}
+    for a, b, c in [(3, 4, 5), (5, 12, 13), (8, 15, 17), (7, 24, 25)]:
+        for x, y in [(a, b), (b, a)]:
+            for sx, sy in itertools.product((1, -1), repeat=2):
+                out.add((Fraction(sx * x, c), Fraction(sy * y, c)))
+    return sorted(out, key=lambda d: math.atan2(d[1], d[0]))
+
+
+def test_antipodal_grasp_oracle_shares_only_theta_zero():
+    """The oracle's own reading of the scene: ff everywhere, sf too only at theta = 0."""
+    com = (Fraction(0), Fraction(1))
+    for d in pythagorean_directions():
+        got = quasi_static_answer(ANTIPODAL, oracle.wrench_at(com, d))
+        assert got == ({"ff", "sf"} if d == (1, 0) else {"ff"}), (d, got)
+
+
+def check_whole_turn_but_zero(plan):
+    assert plan["intervals"] == [[-math.pi, math.pi]], plan
+    assert plan["unique"] == [[-math.pi, math.pi]], plan  # the closure of the turn less theta = 0
+    assert plan["shared"] == [[0.0, 0.0]], plan
+    assert plan["best_unique"] is True
+    assert abs(plan["best"]) == math.pi and plan["margin"] == math.pi, plan
+    # The oracle at the best direction (rounded cos and sin, read exactly): ff alone.
+    d = (Fraction(math.cos(plan["best"])), Fraction(math.sin(plan["best"])))
+    assert quasi_static_answer(ANTIPODAL, oracle.wrench_at((Fraction(0), Fraction(1)), d)) == {"ff"}
+
+
+def test_tilt_and_comply_when_the_goal_holds_every_direction(tmp_path):
+    scene = tmp_path / "antipodal.json"
+    scene.write_text(json.dumps(ANTIPODAL))
+    check_whole_turn_but_zero(cli("plan", "tilt", scene, "--goal", "ff", "--quasi-static", "--json"))
+    check_whole_turn_but_zero(cli("plan", "comply", scene, "--goal", "ff", "--quasi-static", "--centre", "0", "1", "--json")["centre"])
+    a = ml.analyze(ml.Scene.from_json(json.dumps(ANTIPODAL)), quasi_static=True)
+    check_whole_turn_but_zero(ml.plan_tilt(a, "ff"))
+    check_whole_turn_but_zero(ml.plan_comply(a, "ff", [0, 1])["centre"])
+    text = cli("plan", "tilt", scene, "--goal", "ff", "--quasi-static").stdout
+    assert "the goal alone: [-3.14159, 3.14159]\n  shared with another mode: 0 only\n" in text, text
+    assert "no arc where the goal is alone" not in text
+
+
+# ---------------------------------------------------------------------------------------------
+# 2. Margins about the centre of mass do not change when the scene moves.
+
+# One frictionless contact at p = (1.5, -1.375), normal n = (1/2, 2); mass m = 3, com c =
+# (1/2, -5/8), inertia I = 1. By hand: with torques about c, the contact point's normal
+# acceleration under a wrench (f, tau_c) is h . (f, tau_c), h = (n / m, (r x n) / I), r = p - c.
+# E_s (contact separating) is the half-space h . e >= 0; every other mode keeps the contact
+# (h . e = 0 before its force, which adds -G with h . G = |n|^2 / m + (r x n)^2 / I > 0), so
+# those sets lie in h . e <= 0 and together cover the plane h . e = 0 (its twists slide left,
+# right or stay). For e with h . e > 0 both margins are the distance to that plane in the
+# metric's coordinates q = (fx, fy, tau_c / L), L = |r| (the farthest contact): |h_q . q| / |h_q|,
+# h_q = (n / m, (r x n) L / I).
+ONE_CONTACT = {"contacts": [{"point": [1.5, -1.375], "normal": [0.5, 2.0], "mu": 0.0}],
+               "body": {"mass": 3.0, "com": [0.5, -0.625], "inertia": 1.0}}
+
+
+def moved(doc, d):
+    """The scene moved by d (exactly: every coordinate and offset a dyadic rational that the
+    sum keeps within a double, checked)."""
+    out = json.loads(json.dumps(doc))
+    for pt in [out["body"]["com"]] + [c["point"] for c in out["contacts"]]:
+        for k in range(2):
+            s = pt[k] + d[k]
+            assert Fraction(s) == Fraction(pt[k]) + Fraction(d[k])
+            pt[k] = s
+    return out
+
+
+def moved_wrench(doc, w, d):
+    """The wrench w (about the origin) of the scene moved by d: the same forces, the torque
+    tau + d x f, as a double only when exact."""
+    tau = Fraction(w[2]) + oracle.cross((Fraction(d[0]), Fraction(d[1])), (Fraction(w[0]), Fraction(w[1])))
+    assert Fraction(float(tau)) == tau
+    return [w[0], w[1], float(tau)]
+
+
+def one_contact_plane():
+    """h_q and L of the hand derivation, in Fractions, from the raw numbers."""
+    c, = ONE_CONTACT["contacts"]
+    b = ONE_CONTACT["body"]
+    m, inertia = Fraction(b["mass"]), Fraction(b["inertia"])
+    r = (Fraction(c["point"][0]) - Fraction(b["com"][0]), Fraction(c["point"][1]) - Fraction(b["com"][1]))
+    n = (Fraction(c["normal"][0]), Fraction(c["normal"][1]))
+    length_sq = r[0] ** 2 + r[1] ** 2
+    length = Fraction(math.isqrt(length_sq.numerator), math.isqrt(length_sq.denominator))
+    assert length ** 2 == length_sq  # 5/4 here
+    return (n[0] / m, n[1] / m, oracle.cross(r, n) * length / inertia), length
+
+
+def hand_distance(w_com):
+    """The hand derivation's margin of the wrench (fx, fy, tau about the com), Fractions."""
+    h, length = one_contact_plane()
+    q = (w_com[0], w_com[1], w_com[2] / length)
+    dot = sum(a * b for a, b in zip(h, q))
+    assert dot > 0  # the wrench separates the contact: the answer is s
+    return math.sqrt(dot * dot / sum(a * a for a in h))
+
+
+OFFSETS = [(0, 0), (1e8, -1e8), (2.0 ** 30, 2.0 ** 29), (-3 * 2.0 ** 26, 5 * 2.0 ** 24), (-123456789, 987654321)]
+
+
+@pytest.mark.parametrize("d", OFFSETS)
+def test_query_margins_do_not_change_when_the_scene_moves(tmp_path, d):
+    w = [-0.25, 2.75, 0.5]
+    com = [Fraction(x) for x in ONE_CONTACT["body"]["com"]]
+    w_com = (Fraction(w[0]), Fraction(w[1]), Fraction(w[2]) - oracle.cross(com, (Fraction(w[0]), Fraction(w[1]))))
+    want = hand_distance(w_com)  # 0.0277744...
+    doc, wd = moved(ONE_CONTACT, d), moved_wrench(ONE_CONTACT, w, d)
+    scene = tmp_path / "moved.json"
+    scene.write_text(json.dumps(doc))
+    got = cli("query", scene, "--wrench", *map(repr, wd), "--margin", "--json")
+    assert got["modes"] == ["s"]
+    assert math.isclose(got["margins"]["inside"][0], want, rel_tol=1e-12), (d, got, want)
+    assert math.isclose(got["margins"]["to_other"], want, rel_tol=1e-12), (d, got, want)
+    py = ml.analyze(ml.Scene.from_json(json.dumps(doc))).margins(wd)
+    assert math.isclose(py["inside"]["s"], want, rel_tol=1e-12) and math.isclose(py["to_other"], want, rel_tol=1e-12), (d, py)
+
+
+@pytest.mark.parametrize("d", OFFSETS)
+def test_tilt_margins_do_not_change_when_the_scene_moves(tmp_path, d):
+    """The best tilt u = (cos best, sin best), a unit force through the com (no torque about it):
+    both margins are the hand's distance of (u, 0)."""
+    scene = tmp_path / "moved.json"
+    scene.write_text(json.dumps(moved(ONE_CONTACT, d)))
+    plan = cli("plan", "tilt", scene, "--goal", "s", "--json")
+    u = (Fraction(math.cos(plan["best"])), Fraction(math.sin(plan["best"])))
+    want = hand_distance((u[0], u[1], Fraction(0)))  # 0.22551...
+    bm = plan["best_margins"]
+    assert math.isclose(bm["inside"][0], want, rel_tol=1e-12), (d, bm, want)
+    assert math.isclose(bm["to_other"], want, rel_tol=1e-12), (d, bm, want)
