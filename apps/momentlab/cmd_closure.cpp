@@ -34,7 +34,9 @@ int run(const ClosureCommandOptions& o) {
     const std::optional<Box> view = checked_picture_options(o.picture, {o.file});
     ClosureOptions options;
     if (!o.reference.empty()) options.reference = checked_points(o.reference, "--reference", 1).front();
-    if (o.length && !(*o.length > 0.0)) throw InputError("--length", "expected a length > 0");
+    if (o.length && (!(*o.length > 0.0) || !magnitude_in_range(*o.length))) {
+        throw InputError("--length", "expected a length > 0, of magnitude 1e-60 .. 1e60");
+    }
     options.length = o.length;
     const Scene scene = read_scene_file(o.file);
     const Closure c = closure(scene, options);

@@ -518,7 +518,9 @@ PYBIND11_MODULE(_momentlab, m) {
         ClosureOptions options;
         if (!reference.is_none()) options.reference = vector_of<2>(reference, "reference");
         if (length) {
-            if (!(number_of(*length, "length") > 0.0)) throw InputError("length", "expected a length > 0");
+            if (!(*length > 0.0) || !magnitude_in_range(*length)) {
+                throw InputError("length", "expected a length > 0, of magnitude 1e-60 .. 1e60");
+            }
             options.length = length;
         }
         return python_of(to_json(closure(scene, options)));

@@ -4,18 +4,21 @@ from the scene's raw numbers, never momentlab's wrenches, cones or mode lists.
 
 1. Unique and shared arcs when the goal holds every direction and one direction is shared.
 2. Margins invariant under exact translations (the centre-of-mass frame).
+3. Closure quality in (0, 1], against the inner radius of the unit wrenches' hull.
 """
 
 import itertools
 import json
 import math
+import subprocess
+from decimal import Decimal, getcontext
 from fractions import Fraction
 
 import pytest
 
 import momentlab as ml
 import oracle
-from conftest import cli
+from conftest import CLI, EXAMPLES, cli
 
 # ---------------------------------------------------------------------------------------------
 # 1. The goal holds every direction; one other set meets the plane in one direction.
@@ -108,7 +111,7 @@ def moved(doc, d):
     """The scene moved by d (exactly: every coordinate and offset a dyadic rational that the
     sum keeps within a double, checked)."""
     out = json.loads(json.dumps(doc))
-    for pt in [out["body"]["com"]] + [c["point"] for c in out["contacts"]]:
+    for pt in [out["body"]["com"]] + out["body"].get("polygon", []) + [c["point"] for c in out["contacts"]]:
         for k in range(2):
             s = pt[k] + d[k]
             assert Fraction(s) == Fraction(pt[k]) + Fraction(d[k])
@@ -178,3 +181,126 @@ def test_tilt_margins_do_not_change_when_the_scene_moves(tmp_path, d):
     bm = plan["best_margins"]
     assert math.isclose(bm["inside"][0], want, rel_tol=1e-12), (d, bm, want)
     assert math.isclose(bm["to_other"], want, rel_tol=1e-12), (d, bm, want)
+
+
+# ---------------------------------------------------------------------------------------------
+# 3. Closure quality: the radius of the largest ball about 0 in the hull of the unit wrenches.
+
+def _decimal(x):
+    return Decimal(x.numerator) / Decimal(x.denominator)
+
+
+def _sqrt(x):
+    """sqrt of a non-negative Fraction to 80 digits, as a Fraction."""
+    getcontext().prec = 80
+    return Fraction(_decimal(Fraction(x)).sqrt())
+
+
+def unit_wrenches(doc, force, length=None, reference=None):
+    """The contacts' unit wrenches (u, ((p - r) x u) / L) from the raw numbers: u the unit normal
+    (form) or the unit friction edges n +- mu t (force), to 80 digits; r the com (else the
+    contacts' centroid), L the farthest contact from it (else `length`)."""
+    cs = doc["contacts"]
+    if reference is None:
+        if "body" in doc:
+            reference = doc["body"]["com"]
+        else:
+            reference = [sum(Fraction(c["point"][k]) for c in cs) / len(cs) for k in range(2)]
+    r = [Fraction(reference[0]), Fraction(reference[1])]
+    if length is None:
+        length = max(_sqrt((Fraction(c["point"][0]) - r[0]) ** 2 + (Fraction(c["point"][1]) - r[1]) ** 2) for c in cs)
+    length = Fraction(length)
+    out = []
+    for c in cs:
+        n = (Fraction(c["normal"][0]), Fraction(c["normal"][1]))
+        mu = Fraction(c.get("mu", 0))
+        t = (-n[1], n[0])
+        dirs = [n] if not force else [(n[0] + mu * t[0], n[1] + mu * t[1]), (n[0] - mu * t[0], n[1] - mu * t[1])]
+        p = (Fraction(c["point"][0]) - r[0], Fraction(c["point"][1]) - r[1])
+        for d in dirs:
+            norm = _sqrt(d[0] ** 2 + d[1] ** 2)
+            u = (d[0] / norm, d[1] / norm)
+            out.append((u[0], u[1], oracle.cross(p, u) / length))
+    return out
+
+
+def inner_radius(points):
+    """min over the hull's facets (planes through three points with every point on one side) of
+    their distance from 0 (which the hull holds: every call here is of a closure that holds)."""
+    best = None
+    for a, b, c in itertools.combinations(points, 3):
+        ab = [b[i] - a[i] for i in range(3)]
+        ac = [c[i] - a[i] for i in range(3)]
+        n = (ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0])
+        if n == (0, 0, 0):
+            continue
+        d = sum(n[i] * a[i] for i in range(3))
+        if d < 0:
+            n, d = tuple(-x for x in n), -d
+        if all(sum(n[i] * p[i] for i in range(3)) <= d for p in points):
+            assert d > 0
+            radius = d / _sqrt(sum(x * x for x in n))
+            best = radius if best is None or radius < best else best
+    return best
+
+
+# Six axis-aligned contacts, two of them 2^-40 off the axis: form closure by a hull 2^-40 thin.
+THIN_GRASP = {"contacts": [{"point": [0, -1], "normal": [0, 1]}, {"point": [0, 1], "normal": [0, -1]},
+                           {"point": [-1, 0], "normal": [1, 0]}, {"point": [-1, 2.0 ** -40], "normal": [1, 0]},
+                           {"point": [1, 0], "normal": [-1, 0]}, {"point": [1, 2.0 ** -40], "normal": [-1, 0]}]}
+FIVE = json.loads((EXAMPLES / "closure-five-contacts.json").read_text())
+# Five contacts with oblique normals, whose torques about the origin are not exact far from it.
+OBLIQUE = {"body": {"mass": 1, "com": [0, -0.25], "inertia": 1},
+           "contacts": [{"point": [0.25, -1], "normal": [0.2, 1], "mu": 0.25}, {"point": [-0.375, -1], "normal": [-0.1, 1], "mu": 0.25},
+                        {"point": [0.125, 1], "normal": [-0.3, -1], "mu": 0.25}, {"point": [-1, 0.125], "normal": [1, 0.1], "mu": 0.25},
+                        {"point": [1, -0.25], "normal": [-1, 0.3], "mu": 0.25}]}
+
+
+def check_quality(got, want, absolute=0.0):
+    assert got > 0 and abs(Fraction(got) - want) <= Fraction(1, 10 ** 9) * want + Fraction(absolute), (got, float(want))
+
+
+@pytest.mark.parametrize("length", [None, 1e-15, 1e-10, 1e20, 1e-60, 1e60])
+def test_closure_quality_is_the_oracles_at_any_length(tmp_path, length):
+    path = tmp_path / "five.json"
+    path.write_text(json.dumps(FIVE))
+    extra = [] if length is None else ["--length", repr(length)]
+    got = cli("closure", path, *extra, "--json")
+    want_form = inner_radius(unit_wrenches(FIVE, False, length))
+    want_force = inner_radius(unit_wrenches(FIVE, True, length))
+    check_quality(got["form"]["quality"], want_form)
+    check_quality(got["force"]["quality"], want_force)
+    py = ml.closure(ml.Scene.from_json(json.dumps(FIVE)), length=length)
+    check_quality(py["form"]["quality"], want_form)
+
+
+def test_a_thin_closure_has_its_thin_quality(tmp_path):
+    """2^-41 by the oracle (the rounding of the unit wrenches moves it by at most 1e-16)."""
+    path = tmp_path / "thin.json"
+    path.write_text(json.dumps(THIN_GRASP))
+    got = cli("closure", path, "--json")
+    want = inner_radius(unit_wrenches(THIN_GRASP, False))
+    assert 4e-13 < want < 5e-13
+    check_quality(got["form"]["quality"], want, absolute=1e-15)
+    check_quality(got["force"]["quality"], want, absolute=1e-15)
+
+
+@pytest.mark.parametrize("d", [(0, 0), (1e8, -1e8), (2.0 ** 30, 3 * 2.0 ** 28), (-123456789, 987654321)])
+@pytest.mark.parametrize("grasp", ["five", "oblique"])
+def test_closure_quality_does_not_change_when_the_grasp_moves(tmp_path, d, grasp):
+    doc = {"five": FIVE, "oblique": OBLIQUE}[grasp]
+    path = tmp_path / "moved.json"
+    path.write_text(json.dumps(moved(doc, d)))
+    got = cli("closure", path, "--json")
+    # The oracle in place (the exact move changes no unit wrench).
+    check_quality(got["form"]["quality"], inner_radius(unit_wrenches(doc, False)))
+    check_quality(got["force"]["quality"], inner_radius(unit_wrenches(doc, True)))
+
+
+@pytest.mark.parametrize("length", ["1e-300", "5e-324", "1.7e308", "1e61", "0", "-1"])
+def test_every_front_end_refuses_the_same_lengths(length):
+    r = subprocess.run([CLI, "closure", str(EXAMPLES / "closure-five-contacts.json"), "--length", length],
+                       capture_output=True, text=True)
+    assert r.returncode == 2 and r.stderr.count("\n") == 1 and "--length" in r.stderr, r.stderr
+    with pytest.raises(ValueError, match="length"):
+        ml.closure(ml.Scene.from_json(json.dumps(FIVE)), length=float(length))
