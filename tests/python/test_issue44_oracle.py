@@ -5,11 +5,13 @@ from the scene's raw numbers, never momentlab's wrenches, cones or mode lists.
 1. Unique and shared arcs when the goal holds every direction and one direction is shared.
 2. Margins invariant under exact translations (the centre-of-mass frame).
 3. Closure quality in (0, 1], against the inner radius of the unit wrenches' hull.
-"""
+7. A push plan's printed push is the push its magnitudes belong to."""
 
 import itertools
 import json
 import math
+import random
+import re
 import subprocess
 from decimal import Decimal, getcontext
 from fractions import Fraction
@@ -304,3 +306,100 @@ def test_every_front_end_refuses_the_same_lengths(length):
     assert r.returncode == 2 and r.stderr.count("\n") == 1 and "--length" in r.stderr, r.stderr
     with pytest.raises(ValueError, match="length"):
         ml.closure(ml.Scene.from_json(json.dumps(FIVE)), length=float(length))
+
+
+# ---------------------------------------------------------------------------------------------
+# 7. The printed push is the push measured.
+
+# The block on two floor contacts of the issue's search, with gravity (-1.375, 0.5): the best push
+# on edge 1 is nearly parallel to a facet of E_ss, so its magnitude bound -h.g / h.u moves by
+# orders of magnitude with the last bit of the push.
+NEAR_FACET = {"body": {"mass": 1, "com": [0.4375, 0.625], "inertia": 0.125,
+                       "polygon": [[0, 0], [1.125, 0], [1.125, 1.25], [0, 1.25]]},
+              "contacts": [{"point": [0, 0], "normal": [0, 1], "mu": 0.5}, {"point": [1.125, 0], "normal": [0, 1], "mu": 1.0}]}
+
+
+def gravity_wrench(doc, g):
+    m = oracle.exact(doc["body"]["mass"])
+    c = (oracle.exact(doc["body"]["com"][0]), oracle.exact(doc["body"]["com"][1]))
+    return oracle.wrench_at(c, (m * oracle.exact(g[0]), m * oracle.exact(g[1])))
+
+
+def check_magnitudes(doc, goal, g, point, direction, lo, hi, rel):
+    """The oracle on g + lambda u, u the push (point, direction) read exactly: lo and hi (None:
+    unbounded) are the ends of the goal's magnitudes within `rel` (relative)."""
+    scene = oracle.exact_scene(doc)
+    gw = gravity_wrench(doc, g)
+    u = oracle.wrench_at((oracle.exact(point[0]), oracle.exact(point[1])),
+                         (oracle.exact(direction[0]), oracle.exact(direction[1])))
+
+    def holds(lam):
+        lam = Fraction(lam)
+        return oracle.produces(scene, goal, [gw[k] + lam * u[k] for k in range(3)])
+
+    k = Fraction(rel)
+    lo, hi = Fraction(lo), None if hi is None else Fraction(hi)
+    assert lo == 0 or not holds(lo * (1 - k)), (point, direction, lo)
+    if hi is not None and hi <= lo * (1 + 2 * k):  # one magnitude (rounded): only outside it is tested
+        assert not holds(hi * (1 + k)), (point, direction, hi)
+        return
+    assert holds(lo * (1 + k)), (point, direction, lo)
+    if hi is None:
+        assert holds(Fraction(2) ** 200), (point, direction, "unbounded")
+    else:
+        assert holds(hi * (1 - k)) and not holds(hi * (1 + k)), (point, direction, hi)
+
+
+def test_the_printed_best_push_has_the_printed_magnitudes(tmp_path):
+    scene = tmp_path / "near_facet.json"
+    scene.write_text(json.dumps(NEAR_FACET))
+    args = ("plan", "push", scene, "--goal", "ss", "--mu", "0.5", "--ignore-interference", "--gravity", "-1.375", "0.5",
+            "--edge", "1", "--slip", "f")
+    text = cli(*args).stdout
+    m = re.search(r"best push \(([^,]+), ([^)]+)\) at \(([^,]+), ([^)]+)\).*; magnitudes from (\S+) (?:to (\S+)|up)", text)
+    assert m, text
+    dx, dy, px, py = (float(v) for v in m.group(1, 2, 3, 4))
+    lo, hi = float(m.group(5)), None if m.group(6) is None else float(m.group(6))
+    check_magnitudes(NEAR_FACET, "ss", (-1.375, 0.5), (px, py), (dx, dy), lo, hi, 1e-5)  # printed with 6 digits
+    case = cli(*args, "--json")["cases"][0]
+    best, bm = case["best"], case["best_magnitudes"]
+    check_magnitudes(NEAR_FACET, "ss", (-1.375, 0.5), best["point"], best["direction_vector"], bm["from"],
+                     None if bm["to"] == "unbounded" else bm["to"], 1e-12)
+
+
+def goal_band(bands, goal):
+    """The magnitudes of push_line's bands that hold the goal: (from, to), to None when unbounded."""
+    held = [b for b in bands if goal in b["modes"]]
+    if not held:
+        return None
+    to = held[-1]["to"]
+    return held[0]["from"], None if to == "unbounded" else to
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_best_pushes_with_gravity_are_the_pushes_measured(seed):
+    """Random dyadic blocks with gravity: every feasible case's best push, as the JSON gives it,
+    has the magnitudes of push_line at that push (bit for bit) and of the oracle."""
+    rng = random.Random(4400 + seed)
+    checked = 0
+    while checked < 4:
+        w, h = rng.randint(2, 16) / 8, rng.randint(2, 16) / 8
+        doc = {"body": {"mass": rng.choice([0.5, 1, 2]), "com": [w / 2 + rng.randint(-2, 2) / 16, h / 2 + rng.randint(-2, 2) / 16],
+                        "inertia": rng.choice([0.125, 0.25, 1]), "polygon": [[0, 0], [w, 0], [w, h], [0, h]]},
+               "contacts": [{"point": [0, 0], "normal": [0, 1], "mu": rng.choice([0.25, 0.5, 1.0])},
+                            {"point": [w, 0], "normal": [0, 1], "mu": rng.choice([0.25, 0.5, 1.0])}]}
+        g = [rng.randint(-16, 16) / 8, rng.randint(-16, 16) / 8]
+        if g == [0, 0]:
+            continue
+        a = ml.analyze(ml.Scene.from_json(json.dumps(doc)))
+        goal = rng.choice(a.modes)
+        for c in ml.plan_push(a, goal, mu=0.5, ignore_interference=True, gravity=g):
+            if not c["feasible"] or not c.get("best_magnitudes"):
+                continue
+            best, bm = c["best"], c["best_magnitudes"]
+            hi = None if bm["to"] == "unbounded" else bm["to"]
+            band = goal_band(ml.push_line(a, best["point"], best["direction_vector"], gravity=g), goal)
+            assert band == (bm["from"], hi), (doc, goal, g, c, band)
+            if checked < 4:
+                check_magnitudes(doc, goal, g, best["point"], best["direction_vector"], bm["from"], hi, 1e-9)
+            checked += 1
