@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Large inputs (docs/reliability.md): 10^5 and 10^6 contacts and generators through the real
 # command, with time and peak memory. Fails if a run fails or its peak exceeds LIMIT_KB
-# (default 2 GiB), or if memory grows more than 15x from 10^5 to 10^6 (not linear).
+# (default 2 GiB), or if memory grows more than 15x from 10^5 to 10^6 (not linear). Then the
+# pushing table of a circle of 10^5 vertices: one case (--vertex 5 --slip f) must need no more
+# than twice the memory of `modes` on it and a tenth of the table's time, the table no more
+# than LIMIT_KB.
 set -euo pipefail
 bin=${1:-build/release/momentlab}
 dir=${2:-build/large}
@@ -18,8 +21,13 @@ for n in (100000, 1000000):
     if not os.path.exists(f"{d}/gens_{n}.json"):
         g = [[random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(0.5, 1)] for _ in range(n)]
         json.dump([{"type": "wrenches", "generators": g}], open(f"{d}/gens_{n}.json", "w"))
+n = 100000
+if not os.path.exists(f"{d}/circle_{n}.json"):
+    poly = [[math.cos(2 * math.pi * k / n), math.sin(2 * math.pi * k / n)] for k in range(n)]
+    contacts = [{"point": poly[k], "normal": [-poly[k][0], -poly[k][1]], "mu": 0.5} for k in (3 * n // 4, 7 * n // 8)]
+    json.dump({"body": {"mass": 1, "com": [0, 0], "inertia": 0.5, "polygon": poly}, "contacts": contacts}, open(f"{d}/circle_{n}.json", "w"))
 PY
-declare -A peak
+declare -A peak seconds
 run() {  # name, then the command
     local name=$1; shift
     local out
@@ -27,6 +35,7 @@ run() {  # name, then the command
     local secs=${out% *} kb=${out#* }
     printf "%-28s %8.2f s %10d KB peak\n" "$name" "$secs" "$kb"
     peak[$name]=$kb
+    seconds[$name]=$secs
     if (( kb > limit_kb )); then echo "FAIL: $name used more than $limit_kb KB"; exit 1; fi
 }
 for n in 100000 1000000; do
@@ -37,4 +46,13 @@ for what in "query, %s contacts" "label, %s generators"; do
     small=${peak[$(printf "$what" 100000)]} big=${peak[$(printf "$what" 1000000)]}
     if (( big > 15 * small )); then echo "FAIL: $(printf "$what" N): $small KB -> $big KB is not linear"; exit 1; fi
 done
+circle=$dir/circle_100000.json
+run "modes, 10^5-gon" "$bin" modes "$circle"
+run "push, one case of a 10^5-gon" "$bin" plan push "$circle" --goal ss --vertex 5 --slip f
+run "push, table of a 10^5-gon" "$bin" plan push "$circle" --goal ss
+one=${peak["push, one case of a 10^5-gon"]} modes=${peak["modes, 10^5-gon"]}
+if (( one > 2 * modes )); then echo "FAIL: one push case needs $one KB, more than twice the $modes KB of modes"; exit 1; fi
+if ! awk -v a="${seconds["push, one case of a 10^5-gon"]}" -v b="${seconds["push, table of a 10^5-gon"]}" 'BEGIN { exit !(10 * a <= b) }'; then
+    echo "FAIL: one push case takes more than a tenth of the table's time"; exit 1
+fi
 echo "large inputs: ok"

@@ -195,6 +195,26 @@ std::string case_line(const PushCase& c) {
     return line;
 }
 
+// A feasible case's best push, as measured: its direction and point with every digit (17
+// significant: they read back as the same doubles), so that `query --push` at the printed push
+// gives the printed magnitudes.
+std::string best_push_line(const PushCase& c) {
+    if (!c.best || c.verdict != PushVerdict::Feasible) return "";
+    std::ostringstream s;
+    s << "  " << c.feature.name() << " slip " << letter(c.slip) << ": best push " << fmt(c.best->direction, 17) << " at "
+      << fmt(c.best->point, 17) << (c.best_unique ? " (the goal alone)" : "");
+    if (c.unique && c.unique_directions) {
+        s << "; the goal alone touching " << segments_text(c.unique_touch) << ", directions "
+          << degrees(c.unique_directions->from) << " .. " << degrees(c.unique_directions->to);
+    }
+    if (c.best_margins) s << "; as a unit force, " << margins_text(*c.best_margins);
+    if (c.magnitudes_known) {
+        s << "; magnitudes " << (c.best_magnitudes ? magnitude_text(*c.best_magnitudes) : std::string("none (only in the limit)"));
+    }
+    s << "\n";
+    return s.str();
+}
+
 int run_push(const PlanOptions& o) {
     const std::optional<Box> view = checked_picture_options(o.picture, {o.file});
     if (!o.picture.files.empty() && ((!o.edge && !o.vertex) || o.slip.empty())) {
@@ -205,53 +225,52 @@ int run_push(const PlanOptions& o) {
     const Load load = load_of(o.gravity, o.fixed, o.forces);
     PushRequest request{o.mu, o.ignore_interference, o.edge, o.vertex, std::nullopt};
     if (!o.slip.empty()) request.slip = contact_mode(o.slip[0]);
-    const std::vector<PushCase> cases = p.plan_push(o.goal, request, load);
-    progress.finish();
     const Scene& scene = p.scene();
     const std::vector<ModeForces>& analysis = p.analysis();
+    progress.finish();
     const ModeForces& goal = p.goal(o.goal);
     const std::optional<Exact3> fixed = p.wrench_of(load);
     const char* interference = o.ignore_interference ? "ignored" : "considered";
+    // The cases as they are solved: only their printed rows are kept (a table of 6 n cases needs
+    // the memory of its output), and the first case whole, for a picture or its bands.
+    std::size_t count = 0, feasible = 0;
+    std::optional<PushCase> first;
+    std::string rows, bests;
+    p.plan_push(o.goal, request, load, [&](PushCase&& c) {
+        ++count;
+        feasible += c.feasible();
+        if (o.json) {
+            rows += (rows.empty() ? "" : ",") + to_json(c).dump();
+        } else {
+            rows += case_line(c) + "\n";
+            bests += best_push_line(c);
+        }
+        if (!first) first = std::move(c);
+    });
     if (o.json) {
-        nlohmann::json out = {{"goal", o.goal}, {"mu", o.mu}, {"interference", interference}, {"cases", nlohmann::json::array()}};
-        if (fixed) out["fixed"] = vector_json(to_double(*fixed));
-        for (const PushCase& c : cases) out["cases"].push_back(to_json(c));
-        std::cout << out.dump() << "\n";
+        // The document as one nlohmann object would dump it: keys in order, "cases" first.
+        nlohmann::json rest = {{"goal", o.goal}, {"mu", o.mu}, {"interference", interference}};
+        if (fixed) rest["fixed"] = vector_json(to_double(*fixed));
+        std::cout << "{\"cases\":[" << rows << "]," << rest.dump().substr(1) << "\n";
     } else {
-        const auto feasible = std::count_if(cases.begin(), cases.end(), [](const PushCase& c) { return c.feasible(); });
         std::cout << "pushing into mode " << o.goal << ": a point finger with mu = " << fmt(o.mu) << ", obstacles "
-                  << interference << "; " << feasible << " of " << cases.size() << " cases feasible\n";
+                  << interference << "; " << feasible << " of " << count << " cases feasible\n";
         if (fixed) std::cout << "  with the fixed wrench " << fmt(to_double(*fixed)) << " (--gravity, --wrench) acting too\n";
         std::cout << "  " << std::left << std::setw(10) << "feature" << std::setw(6) << "slip" << std::setw(10) << "verdict";
         if (!fixed) std::cout << std::setw(8) << "goal";
-        std::cout << std::setw(34) << "touch" << "push directions (from +x)\n";
-        for (const PushCase& c : cases) std::cout << case_line(c) << "\n";
+        std::cout << std::setw(34) << "touch" << "push directions (from +x)\n" << rows;
         std::cout << "  (feasible: some push lies inside E_" << o.goal << "; boundary: only on its boundary, a knife edge;\n"
                   << "   blocked: only where obstacles leave no room;"
-                  << (fixed ? "" : " goal: alone, shared with another mode, or both\n   in parts;") << " docs/planning.md)\n";
-        for (const PushCase& c : cases) {
-            if (!c.best || c.verdict != PushVerdict::Feasible) continue;
-            std::cout << "  " << c.feature.name() << " slip " << letter(c.slip) << ": best push " << fmt(c.best->direction)
-                      << " at " << fmt(c.best->point) << (c.best_unique ? " (the goal alone)" : "");
-            if (c.unique && c.unique_directions) {
-                std::cout << "; the goal alone touching " << segments_text(c.unique_touch) << ", directions " << degrees(c.unique_directions->from)
-                          << " .. " << degrees(c.unique_directions->to);
-            }
-            if (c.best_margins) std::cout << "; as a unit force, " << margins_text(*c.best_margins);
-            if (c.magnitudes_known) {
-                std::cout << "; magnitudes "
-                          << (c.best_magnitudes ? magnitude_text(*c.best_magnitudes) : std::string("none (only in the limit)"));
-            }
-            std::cout << "\n";
-            if (fixed && cases.size() == 1) {
-                std::cout << "  the best push's magnitude from 0 up (with the fixed wrench):\n";
-                print_bands(magnitude_bands(analysis, *fixed, wrench_through(exact(c.best->point), exact(c.best->direction))),
-                            analysis);
-            }
+                  << (fixed ? "" : " goal: alone, shared with another mode, or both\n   in parts;") << " docs/planning.md)\n"
+                  << bests;
+        if (fixed && count == 1 && first->best && first->verdict == PushVerdict::Feasible) {
+            std::cout << "  the best push's magnitude from 0 up (with the fixed wrench):\n";
+            print_bands(magnitude_bands(analysis, *fixed, wrench_through(exact(first->best->point), exact(first->best->direction))),
+                        analysis);
         }
     }
-    if (!o.picture.files.empty() && !cases.empty()) {
-        const PushCase& c = cases.front();
+    if (!o.picture.files.empty() && first) {
+        const PushCase& c = *first;
         const std::string what = c.feature.name() + ", slip " + std::string(1, letter(c.slip));
         const std::string title =
             o.picture.title.empty() ? stem(o.file) + ": pushing " + what + " to mode " + o.goal : o.picture.title;

@@ -136,7 +136,8 @@ DirectionPlan Problem::plan_tilt(const std::string& goal_letters, const Load& lo
     return momentlab::plan_tilt(scene_, g, context(load));
 }
 
-std::vector<PushCase> Problem::plan_push(const std::string& goal_letters, const PushRequest& request, const Load& load) {
+void Problem::plan_push(const std::string& goal_letters, const PushRequest& request, const Load& load,
+                        const std::function<void(PushCase&&)>& each) {
     const double mu = checked_coefficient(request.mu, names_.mu);
     if (request.edge && request.vertex) throw InputError(names_.vertex, "give " + names_.edge + " or " + names_.vertex + ", not both");
     if (!scene_.body) throw missing_body("plan push needs its mass, com, inertia and polygon");
@@ -145,13 +146,16 @@ std::vector<PushCase> Problem::plan_push(const std::string& goal_letters, const 
     if (request.edge && *request.edge >= n) throw InputError(names_.edge, "the body has edges 0 .. " + std::to_string(n - 1));
     if (request.vertex && *request.vertex >= n) throw InputError(names_.vertex, "the body has vertices 0 .. " + std::to_string(n - 1));
     const ModeForces& g = find_mode(analysis("plan push"), goal_letters, names_.goal);
+    PushOptions options{mu, request.ignore_interference};
+    if (request.edge) options.feature = PushFeatureId{PushFeature::Kind::Edge, *request.edge};
+    if (request.vertex) options.feature = PushFeatureId{PushFeature::Kind::Vertex, *request.vertex};
+    options.slip = request.slip;
+    momentlab::plan_push(scene_, g, options, context(load), each);
+}
+
+std::vector<PushCase> Problem::plan_push(const std::string& goal_letters, const PushRequest& request, const Load& load) {
     std::vector<PushCase> cases;
-    for (PushCase& c : momentlab::plan_push(scene_, g, PushOptions{mu, request.ignore_interference}, context(load))) {
-        const bool is_edge = c.feature.kind == PushFeature::Kind::Edge;
-        const bool feature = (!request.edge && !request.vertex) || (request.edge && is_edge && c.feature.index == *request.edge) ||
-                             (request.vertex && !is_edge && c.feature.index == *request.vertex);
-        if (feature && (!request.slip || c.slip == *request.slip)) cases.push_back(std::move(c));
-    }
+    plan_push(goal_letters, request, load, [&cases](PushCase&& c) { cases.push_back(std::move(c)); });
     return cases;
 }
 

@@ -123,8 +123,11 @@ nlohmann::json to_json(const PushCase& c) {
     out["directions"] = c.directions ? nlohmann::json{output_value(c.directions->from), output_value(c.directions->to)}
                                      : nlohmann::json();
     if (c.best) {
+        // The push measured (its magnitudes, margins and uniqueness) is the point and the unit vector
+        // exactly; the angle is rounded from it.
         out["best"] = {{"point", vector_json(c.best->point)},
-                       {"direction", output_value(std::atan2(c.best->direction.y(), c.best->direction.x()))}};
+                       {"direction", output_value(std::atan2(c.best->direction.y(), c.best->direction.x()))},
+                       {"direction_vector", vector_json(c.best->direction)}};
     }
     if (c.uniqueness_known) {
         out["unique"] = c.unique;

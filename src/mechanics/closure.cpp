@@ -16,29 +16,40 @@ namespace momentlab {
 namespace {
 
 // The radius of the largest ball about 0 inside conv(points), 0 in the interior (the caller
-// knows it is: the points' cone is R^3). Each facet of the hull is a plane through three points
-// with every point on one side; the radius is the nearest such plane's distance. O(k^4).
+// knows it is for the exact wrenches: their cone is R^3). Each facet of the hull is a plane
+// through three points with every point on one side; the radius is the nearest such plane's
+// distance. Which triples span a plane and which planes support the hull is decided exactly on
+// the (rounded) points, at any scale: a tolerance here took planes 1e-12 beyond a point as
+// supporting, and thin triangles as lines, and gave 0 for grasps that hold (issue 44). The
+// distance |det(a, b, c)| / |(b - a) x (c - a)| is rounded once from exact values. O(k^4).
 double inner_radius(const std::vector<Vec3>& points) {
     const std::size_t k = points.size();
-    double scale = 0.0;
-    for (const Vec3& p : points) scale = std::max(scale, p.norm());
-    const double slack = 1e-12 * scale;
+    std::vector<Exact3> exact_points;
+    for (const Vec3& p : points) exact_points.push_back(exact(p));
     double radius = std::numeric_limits<double>::infinity();
+    std::vector<ExactVector> from_a(k);  // p - a, exactly
     for (std::size_t a = 0; a < k; ++a) {
+        for (std::size_t p = 0; p < k; ++p) from_a[p] = ExactVector::from_exact(exact_points[p] - exact_points[a]);
+        const ExactVector origin_from_a = ExactVector::from_exact(-exact_points[a]);
         for (std::size_t b = a + 1; b < k; ++b) {
             for (std::size_t c = b + 1; c < k; ++c) {
-                Vec3 n = (points[b] - points[a]).cross(points[c] - points[a]);
-                const double length = n.norm();
-                if (!(length > 1e-12 * scale * scale)) continue;  // three points on a line
-                n /= length;
-                double d = n.dot(points[a]);
-                if (d < 0.0) {
-                    n = -n;
-                    d = -d;
+                const ExactVector n = ExactVector::cross(from_a[b], from_a[c]);
+                if (is_zero(n)) continue;  // three points on a line
+                Sign side = Sign::Zero;  // of the points off the plane, all on one side
+                bool supporting = true;
+                for (std::size_t p = 0; p < k && supporting; ++p) {
+                    const Sign s = dot_sign(n, from_a[p]);
+                    if (s == Sign::Zero) continue;
+                    if (side == Sign::Zero) side = s;
+                    supporting = s == side;
                 }
-                const bool supporting =
-                    std::all_of(points.begin(), points.end(), [&](const Vec3& p) { return n.dot(p) <= d + slack; });
-                if (supporting) radius = std::min(radius, d);
+                if (!supporting) continue;
+                // The origin beyond or on a supporting plane: the rounded points' hull lost the
+                // ball (thinner than their rounding).
+                if (dot_sign(n, origin_from_a) != side) return 0.0;
+                const Exact3 normal = n.exact();
+                const double d = std::abs(dot(normal, exact_points[a]).to_double()) / to_double(normal).norm();
+                radius = std::min(radius, d);
             }
         }
     }
@@ -63,10 +74,13 @@ ClosureTest test(const std::vector<ExactVector>& generators, const std::vector<V
     return t;
 }
 
-// The wrench of a unit force along `force` at `point`, in the metric's scaled space.
+// The wrench of a unit force along `force` at `point`, in the metric's scaled space: the torque
+// (point - reference) x u exactly, rounded once (not p x u about the origin less r x u, which
+// cancels for a grasp far from the origin), then divided by the length.
 Vec3 unit_wrench(const Vec2& point, const Vec2& force, const WrenchMetric& metric) {
     const Vec2 u = force / force.norm();
-    return metric.scaled(Vec3(u.x(), u.y(), point.x() * u.y() - point.y() * u.x()));
+    const double torque = cross2(exact(point) - exact(metric.reference), exact(u)).to_double();
+    return Vec3(u.x(), u.y(), torque / metric.length);
 }
 
 }  // namespace

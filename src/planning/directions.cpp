@@ -153,7 +153,8 @@ DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal,
         }
         if (context.metric) {
             plan.best_margins =
-                margins_of(context.modes, wrench_at(point, Vec2(std::cos(plan.best), std::sin(plan.best))), *context.metric);
+                margins_of(context.modes, wrench_through(exact(point), exact(Vec2(std::cos(plan.best), std::sin(plan.best)))),
+                           *context.metric);
         }
     }
     // A knife edge: no solution inside E_goal (with a fixed wrench: no g + lambda u inside it, which

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "momentlab/core/predicates.hpp"
 #include "momentlab/geometry/force_sets.hpp"
@@ -316,7 +317,7 @@ PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, c
         tell_uniqueness(c, shown, goal_mode, context.modes, free ? &obstacles : nullptr);
     }
     if (!context.modes.empty() && !context.fixed && context.metric && c.best) {
-        c.best_margins = margins_of(context.modes, c.best->wrench(), *context.metric);
+        c.best_margins = margins_of(context.modes, wrench_through(exact(c.best->point), exact(c.best->direction)), *context.metric);
     }
     c.magnitudes_known = context.fixed.has_value();
     if (context.fixed && c.best) c.best_magnitudes = magnitudes(goal_mode.applied, *context.fixed, wrench_through(exact(c.best->point), exact(c.best->direction)));
@@ -331,42 +332,55 @@ std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, cons
 
 std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options,
                                 const PlanContext& context) {
+    std::vector<PushCase> cases;
+    plan_push(scene, goal, options, context, [&](PushCase&& c) { cases.push_back(std::move(c)); });
+    return cases;
+}
+
+void plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options, const PlanContext& context,
+               const std::function<void(PushCase&&)>& each) {
     if (!scene.body || scene.body->polygon.size() < 3) throw std::invalid_argument("plan_push: the body needs a polygon");
     if (!(options.mu >= 0.0) || !std::isfinite(options.mu)) throw std::invalid_argument("plan_push: mu must be finite and >= 0");
     const Polygon& poly = scene.body->polygon;
     const std::size_t n = poly.size();
+    if (options.feature && options.feature->index >= n) {
+        throw std::invalid_argument("plan_push: the body has " +
+                                    std::string(options.feature->kind == PushFeature::Kind::Edge ? "edges" : "vertices") +
+                                    " 0 .. " + std::to_string(n - 1));
+    }
+    if (options.slip == ContactMode::Separating) throw std::invalid_argument("plan_push: the slip must be l, f or r");
     const bool ccw = is_counter_clockwise(poly);
     const Cone target = planned_set(goal, context);
     // The inward normal of edge i, exact (not unit: every condition is homogeneous in it), and
     // its unit rounding for the feature's description.
-    std::vector<Exact2> normals(n);
-    std::vector<Vec2> units(n);
-    for (std::size_t i = 0; i < n; ++i) {
+    const auto normal = [&](std::size_t i) {
         const Exact2 d = exact(poly[(i + 1) % n]) - exact(poly[i]);
-        normals[i] = ccw ? Exact2{-d[1], d[0]} : Exact2{d[1], -d[0]};
-        units[i] = to_double(normals[i]).normalized();
-    }
-    std::vector<PushCase> cases;
-    for (int pass = 0; pass < 2; ++pass) {
-        for (std::size_t i = 0; i < n; ++i) {
+        return ccw ? Exact2{-d[1], d[0]} : Exact2{d[1], -d[0]};
+    };
+    const auto unit = [](const Exact2& n_exact) -> Vec2 { return to_double(n_exact).normalized(); };
+    for (PushFeature::Kind kind : {PushFeature::Kind::Edge, PushFeature::Kind::Vertex}) {
+        if (options.feature && options.feature->kind != kind) continue;
+        const std::size_t first = options.feature ? options.feature->index : 0;
+        const std::size_t last = options.feature ? first + 1 : n;
+        for (std::size_t i = first; i < last; ++i) {
             PushFeature f;
-            Exact2 cw = normals[i], ccw_normal = normals[i], bisector = normals[i];
-            if (pass == 0) {
-                f = {PushFeature::Kind::Edge, i, poly[i], poly[(i + 1) % n], units[i], false};
+            Exact2 cw = normal(i), ccw_normal = cw, bisector = cw;
+            if (kind == PushFeature::Kind::Edge) {
+                f = {PushFeature::Kind::Edge, i, poly[i], poly[(i + 1) % n], unit(cw), false};
             } else {
                 const Vec2 &prev = poly[(i + n - 1) % n], &next = poly[(i + 1) % n];
-                const std::size_t in = (i + n - 1) % n;
+                const Exact2 in = normal((i + n - 1) % n), out = cw;
                 const Sign turn = orient2d(prev, poly[i], next);
                 const bool reflex = turn == (ccw ? Sign::Negative : Sign::Positive);
                 // Convex: the normals turn counter-clockwise from n_in to n_out on a
                 // counter-clockwise outline, clockwise on a clockwise one.
-                cw = ccw ? normals[in] : normals[i];
-                ccw_normal = ccw ? normals[i] : normals[in];
+                cw = ccw ? in : out;
+                ccw_normal = ccw ? out : in;
                 if (reflex) std::swap(cw, ccw_normal);
                 // The split direction of a wide arc: strictly inside it (the sum of the unit
                 // normals, rounded, is far from both ends there); the same exact vector bounds
                 // both halves, so their union is the whole arc.
-                const Vec2 unit_bisector = (units[in] + units[i]).normalized();
+                const Vec2 unit_bisector = (unit(in) + unit(out)).normalized();
                 bisector = exact(unit_bisector);
                 f = {PushFeature::Kind::Vertex, i, poly[i], poly[i], unit_bisector, reflex};
             }
@@ -374,12 +388,11 @@ std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, cons
             const std::optional<FreeParts> free =
                 options.ignore_interference ? std::nullopt : std::optional(free_parts(f.from, f.to, scene.obstacles));
             for (ContactMode slip : {ContactMode::SlidingLeft, ContactMode::Fixed, ContactMode::SlidingRight}) {
-                cases.push_back(
-                    solve_case(f, cw, ccw_normal, bisector, slip, options.mu, free, target, scene.obstacles, goal, context));
+                if (options.slip && *options.slip != slip) continue;
+                each(solve_case(f, cw, ccw_normal, bisector, slip, options.mu, free, target, scene.obstacles, goal, context));
             }
         }
     }
-    return cases;
 }
 
 }  // namespace momentlab

@@ -49,7 +49,7 @@ enum class Cover : unsigned char { None, Unique, Shared };
 }  // namespace
 
 ExactVector arc_middle(const ExactVector& nu, const WrenchArc& arc) {
-    if (arc.whole) return arc.from;
+    if (arc.whole) return arc.from.negated();  // the half-turn from where the turn starts
     const Sign turn = det_sign(nu, arc.from, arc.to);
     if (turn == Sign::Positive) return sum_of(arc.from, arc.to);
     if (turn == Sign::Zero) {
@@ -138,13 +138,17 @@ PlaneSplit split_plane(const ExactVector& nu, const Cone& s, std::span<const Mod
         emit(cover.front(), WrenchArc{any, any, true});
         return out;
     }
-    const auto begin_of = [&](std::size_t p) { return order[p / 2]; };
-    const auto end_of = [&](std::size_t p) { return p % 2 == 0 ? order[p / 2] : order[(p / 2 + 1) % k_count]; };
+    const auto begin_of = [&](std::size_t p) { return p / 2; };
+    const auto end_of = [&](std::size_t p) { return p % 2 == 0 ? p / 2 : (p / 2 + 1) % k_count; };
     std::size_t p = start;
     do {
         std::size_t q = p;
         while (cover[(q + 1) % n_pieces] == cover[p] && (q + 1) % n_pieces != start) q = (q + 1) % n_pieces;
-        emit(cover[p], WrenchArc{begin_of(p), end_of(q)});
+        // A run that is more than one point and ends where it begins goes all the way round but
+        // for that point (the goal holds every direction and one other set meets it in one): the
+        // whole turn from there, as a closure, not the single direction {d, d}.
+        const bool around = !(p % 2 == 0 && q == p) && begin_of(p) == end_of(q);
+        emit(cover[p], WrenchArc{order[begin_of(p)], order[end_of(q)], around});
         p = (q + 1) % n_pieces;
     } while (p != start);
     return out;

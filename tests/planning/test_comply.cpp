@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "mode_oracle.hpp"
+#include "momentlab/io/scene_json.hpp"
 #include "momentlab/planning/comply.hpp"
 
 namespace momentlab {
@@ -103,6 +105,41 @@ TEST(Comply, BestDirectionLiesInItsArcEvenWhenTheArcIsTiny) {
     EXPECT_LE(near.directions.best, arc.to);
     EXPECT_LE(near.directions.margin, (arc.to - arc.from) / 2.0 + 1e-300);
     EXPECT_LT(arc.to - arc.from, 1e-15);
+}
+
+
+// Issue 44, item 1, for springs: the antipodal grasp of test_tilt's
+// GoalHoldingEveryTiltButSharingOneIsAloneOnTheRestOfTheTurn (E_ff = R^3, quasi-static), with the
+// compliance centre at (0, 1): the spring forces through it are the tilts there, so ff is alone
+// on every direction but (1, 0), which sf's -FC_2 (forces through (2, 1)) shares. The exact LP
+// on the raw numbers: (1, 0) through (0, 1) is in E_ff and E_sf, (-1, 0) in E_ff alone.
+TEST(Comply, GoalHoldingEveryDirectionButSharingOneIsAloneOnTheRestOfTheTurn) {
+    const Scene scene = read_scene_text(
+        R"({"body": {"mass": 1, "com": [0, 1], "inertia": 1}, "contacts": [{"point": [0, 0], "normal": [1, 1], "mu": 0.5, "mu_kinetic": 2}, {"point": [2, 1], "normal": [-4, -1], "mu": 0.5, "mu_kinetic": 2}]})");
+    const auto analysis = analyze(scene, AnalysisOptions{.quasi_static = true});
+    const auto holding = [&](const reference::QVec& e) {
+        std::string out;
+        for (const ModeForces& m : analysis) {
+            if (testing::exact_lp_quasi_static_in_mode(scene, m.mode.letters, e)) out += m.mode.letters + " ";
+        }
+        return out;
+    };
+    EXPECT_EQ(holding(reference::wrench(0, 1, 1, 0)), "ff sf ");
+    EXPECT_EQ(holding(reference::wrench(0, 1, -1, 0)), "ff ");
+    const ModeForces* ff = nullptr;
+    for (const ModeForces& m : analysis) ff = m.mode.letters == "ff" ? &m : ff;
+    ASSERT_NE(ff, nullptr);
+    const ComplyPlan plan = plan_comply(*ff, Vec2(0, 1), PlanContext{.modes = analysis, .fixed = std::nullopt, .metric = std::nullopt});
+    const DirectionPlan& d = plan.directions;
+    ASSERT_EQ(d.unique.size(), 1u);
+    EXPECT_EQ(d.unique[0].from, -M_PI);
+    EXPECT_EQ(d.unique[0].to, M_PI);
+    ASSERT_EQ(d.shared.size(), 1u);
+    EXPECT_EQ(d.shared[0].from, 0.0);
+    EXPECT_EQ(d.shared[0].to, 0.0);
+    EXPECT_TRUE(d.best_unique);
+    EXPECT_EQ(std::abs(d.best), M_PI);
+    EXPECT_EQ(d.margin, M_PI);
 }
 
 }  // namespace

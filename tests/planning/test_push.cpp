@@ -172,6 +172,70 @@ TEST(Push, OrientationOfTheOutlineDoesNotMatter) {
     }
 }
 
+// Issue 44, item 8: one feature and slip asked for (PushOptions::feature, slip) is solved alone
+// and is exactly the case of the whole table, on a body with a notch (reflex vertex) under
+// gravity and obstacles; a wrong index or the slip s is refused. What the selector saves (one
+// case of a 10^5-gon in the time and memory of the analysis) is measured by make large-inputs.
+TEST(Push, OneCaseAskedForIsTheTablesCase) {
+    Scene scene = testing::example_scene("figure-3-block-along-wall.json");
+    scene.body->polygon = {{0, 0}, {1, 0}, {1, 0.25}, {0.5, 0.25}, {0.5, 0.5}, {0, 0.5}};
+    const auto analysis = analyze(scene);
+    const ModeForces& rr = mode(analysis, "rr");
+    const std::size_t n = scene.body->polygon.size();
+    for (const bool with_modes : {false, true}) {
+        PlanContext context;
+        if (with_modes) context.modes = analysis;
+        const PushOptions all{0.5, false};
+        const std::vector<PushCase> table = plan_push(scene, rr, all, context);
+        ASSERT_EQ(table.size(), 6 * n);
+        std::vector<PushCase> streamed;
+        plan_push(scene, rr, all, context, [&](PushCase&& c) { streamed.push_back(std::move(c)); });
+        ASSERT_EQ(streamed.size(), table.size());
+        for (const PushCase& c : table) {
+            PushOptions one = all;
+            one.feature = PushFeatureId{c.feature.kind, c.feature.index};
+            one.slip = c.slip;
+            const std::vector<PushCase> got = plan_push(scene, rr, one, context);
+            ASSERT_EQ(got.size(), 1u);
+            const PushCase& g = got[0];
+            SCOPED_TRACE(c.feature.name() + " slip " + letter(c.slip));
+            EXPECT_EQ(g.feature.name(), c.feature.name());
+            EXPECT_EQ(g.slip, c.slip);
+            EXPECT_EQ(g.verdict, c.verdict);
+            EXPECT_EQ(g.feature.reflex, c.feature.reflex);
+            EXPECT_EQ(g.touch, c.touch);
+            EXPECT_EQ(g.directions.has_value(), c.directions.has_value());
+            if (g.directions && c.directions) {
+                EXPECT_EQ(g.directions->from, c.directions->from);
+                EXPECT_EQ(g.directions->to, c.directions->to);
+            }
+            EXPECT_EQ(g.best.has_value(), c.best.has_value());
+            if (g.best && c.best) {
+                EXPECT_EQ(g.best->point, c.best->point);
+                EXPECT_EQ(g.best->direction, c.best->direction);
+            }
+            EXPECT_EQ(g.unique, c.unique);
+            EXPECT_EQ(g.shared, c.shared);
+            EXPECT_EQ(g.best_unique, c.best_unique);
+            const std::size_t k = static_cast<std::size_t>(&c - table.data());
+            EXPECT_EQ(streamed[k].feature.name(), c.feature.name());
+            EXPECT_EQ(streamed[k].verdict, c.verdict);
+        }
+        // A feature alone: its three slips, l, f, r, in the table's order.
+        PushOptions vertex = all;
+        vertex.feature = PushFeatureId{PushFeature::Kind::Vertex, 3};
+        const std::vector<PushCase> three = plan_push(scene, rr, vertex, context);
+        ASSERT_EQ(three.size(), 3u);
+        for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(three[k].verdict, table[3 * (n + 3) + k].verdict);
+    }
+    PushOptions bad{0.5, false};
+    bad.feature = PushFeatureId{PushFeature::Kind::Edge, n};
+    EXPECT_THROW((void)plan_push(scene, rr, bad), std::invalid_argument);
+    bad.feature.reset();
+    bad.slip = ContactMode::Separating;
+    EXPECT_THROW((void)plan_push(scene, rr, bad), std::invalid_argument);
+}
+
 // An L-shaped body: its notch vertex is reported as such for sliding fingers, and a finger
 // stuck in the notch pushes with both edges' friction cones.
 TEST(Push, NotchVerticesAreReportedAndAStuckFingerUsesBothEdges) {

@@ -8,6 +8,7 @@
 /// points: summed exactly), and asks the library's questions and plans with the same checks
 /// and messages for every front end. The front ends only convert values and print.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -113,6 +114,9 @@ public:
     /// plan_push for the goal: the body needs a polygon; the request's feature and slip, when
     /// given, select the cases.
     [[nodiscard]] std::vector<PushCase> plan_push(const std::string& goal, const PushRequest& request, const Load& load);
+    /// The same case by case, as each is solved (a table of 6 n cases in the memory of one).
+    void plan_push(const std::string& goal, const PushRequest& request, const Load& load,
+                   const std::function<void(PushCase&&)>& each);
     /// The compliance regions of the goal, and the plan of `centre` when given.
     [[nodiscard]] ComplyAnswer plan_comply(const std::string& goal, const std::optional<Vec2>& centre, const Load& load);
     /// Grasp closure of the scene's contacts (no body needed).

@@ -27,7 +27,9 @@ struct ClosureTest {
     std::optional<ExactVector> unresisted;
     /// When it holds: the radius of the largest ball about 0 inside the convex hull of the
     /// contacts' unit wrenches (form: the unit normals; force: the unit friction-cone edges),
-    /// each (u, ((p - reference) x u) / length); rounded, in (0, 1].
+    /// each (u, ((p - reference) x u) / length); rounded, in (0, 1]. The hull's facets are chosen
+    /// exactly on the rounded unit wrenches, so the quality is 0 only when the ball is thinner
+    /// than their rounding (a relative 1e-16).
     double quality = 0.0;
 };
 

@@ -7,7 +7,10 @@
 /// the torque about a reference point r, L a characteristic length, so that a margin is a force
 /// and does not change when the scene is moved or its units of length change. Rounded values:
 /// which modes hold the wrench is decided exactly by query; the margins measure, they do not
-/// decide.
+/// decide. Every wrench, generator and facet is taken to torques about the reference exactly and
+/// rounded once there, so a margin is the same, to rounding, for a scene moved anywhere (about a
+/// reference that moves exactly with it: the centre of mass, or a given point); no tolerance
+/// chooses the nearest face.
 
 #include <optional>
 #include <span>
@@ -24,7 +27,8 @@ struct WrenchMetric {
     Vec2 reference = Vec2::Zero();
     double length = 1.0;
 
-    /// (fx, fy, (tau - r x f) / length) for a wrench (fx, fy, tau) with tau about the origin.
+    /// (fx, fy, (tau - r x f) / length) for a wrench (fx, fy, tau) with tau about the origin
+    /// (tau - r x f exact, then rounded).
     [[nodiscard]] Vec3 scaled(const Vec3& w) const;
 };
 
@@ -53,5 +57,7 @@ struct QueryMargins {
 
 /// The margins of a wrench whose answer is computed here (exactly, by each mode's own set).
 [[nodiscard]] QueryMargins margins_of(std::span<const ModeForces> analysis, const Vec3& e, const WrenchMetric& metric);
+/// The same for an exactly known wrench (a plan's action, whose torque a double would round).
+[[nodiscard]] QueryMargins margins_of(std::span<const ModeForces> analysis, const Exact3& e, const WrenchMetric& metric);
 
 }  // namespace momentlab

@@ -10,6 +10,7 @@
 /// has the definitions and the block-along-the-wall table worked by hand.
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -117,17 +118,30 @@ struct PushCase {
     [[nodiscard]] bool feasible() const { return verdict == PushVerdict::Feasible; }
 };
 
+/// One feature of the body polygon: edge `index` (from vertex index to the next) or vertex `index`.
+struct PushFeatureId {
+    PushFeature::Kind kind = PushFeature::Kind::Edge;
+    std::size_t index = 0;
+};
+
 /// Options of plan_push.
 struct PushOptions {
     double mu = 0.5;  ///< the finger's friction coefficient (>= 0)
     /// Ignore obstacles (as the paper does for Figure 6); otherwise a point of a feature lying
     /// in a closed obstacle polygon cannot be touched by the (point) finger.
     bool ignore_interference = false;
+    /// Only the cases of this feature (none: every feature).
+    std::optional<PushFeatureId> feature = std::nullopt;
+    /// Only the cases of this slip, l, f or r (none: all three).
+    std::optional<ContactMode> slip = std::nullopt;
 };
 
 /// Every feature of the body polygon (its edges, then its vertices) with each slip l, f, r, in
-/// that order: 6 n cases for n vertices. Throws std::invalid_argument if the scene has no body
-/// polygon or mu is negative or not finite.
+/// that order: 6 n cases for n vertices, or those of `options.feature` and `options.slip`. The
+/// cases chosen cost O(n) together (the polygon's orientation) plus each its own solution
+/// (docs/reliability.md, "Large inputs": one case of a 10^5-gon in the time of its analysis).
+/// Throws std::invalid_argument if the scene has no body polygon, mu is negative or not finite,
+/// the feature's index is not one of the polygon's, or the slip is s.
 [[nodiscard]] std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options = {});
 
 /// The same told the context (directions.hpp): with the modes, which cases push into the goal
@@ -136,5 +150,10 @@ struct PushOptions {
 /// case's best push.
 [[nodiscard]] std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options,
                                               const PlanContext& context);
+
+/// The same, case by case: `each` is given every case as it is solved, in the same order, so that
+/// a table of 6 n cases needs the memory of one case at a time (a caller keeps what it prints).
+void plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options, const PlanContext& context,
+               const std::function<void(PushCase&&)>& each);
 
 }  // namespace momentlab

@@ -20,7 +20,10 @@
 namespace momentlab {
 
 /// An arc of the directions of a plane of wrenches, counter-clockwise about the plane's normal
-/// from `from` to `to` (exact rays; equal for a single direction), or the whole turn.
+/// from `from` to `to` (exact rays; equal for a single direction), or (`whole`) the whole turn
+/// from `from` round to it again. A split's arcs are closures: a run of directions that covers
+/// the whole turn but one direction, held by another arc of the split, is the whole turn from
+/// that direction.
 struct WrenchArc {
     ExactVector from;
     ExactVector to;
@@ -57,7 +60,8 @@ struct Uniqueness {
 [[nodiscard]] Uniqueness uniqueness(const Cone& s, std::span<const ModeForces> modes, const ModeForces& goal);
 
 /// A vector in the relative interior of an arc (exact): the sum of its ends when it is narrower
-/// than a half-turn, the quarter turn from `from` at a half-turn, minus the sum when wider.
+/// than a half-turn, the quarter turn from `from` at a half-turn, minus the sum when wider, and
+/// -`from` for the whole turn (the direction farthest from where it starts).
 [[nodiscard]] ExactVector arc_middle(const ExactVector& normal, const WrenchArc& arc);
 
 }  // namespace momentlab
