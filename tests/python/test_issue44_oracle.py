@@ -373,7 +373,7 @@ def goal_band(bands, goal):
     if not held:
         return None
     to = held[-1]["to"]
-    return held[0]["from"], None if to == "unbounded" else to
+    return held[0]["from"], None if to == math.inf else to
 
 
 @pytest.mark.parametrize("seed", range(6))
@@ -397,7 +397,7 @@ def test_best_pushes_with_gravity_are_the_pushes_measured(seed):
             if not c["feasible"] or not c.get("best_magnitudes"):
                 continue
             best, bm = c["best"], c["best_magnitudes"]
-            hi = None if bm["to"] == "unbounded" else bm["to"]
+            hi = None if bm["to"] == math.inf else bm["to"]
             band = goal_band(ml.push_line(a, best["point"], best["direction_vector"], gravity=g), goal)
             assert band == (bm["from"], hi), (doc, goal, g, c, band)
             if checked < 4:
