@@ -1,11 +1,16 @@
 #!/usr/bin/python3
-"""Writes the nearly degenerate scene families of docs/benchmarks.md ("Nearly degenerate scenes")
+"""Writes the (nearly) degenerate scene families of docs/benchmarks.md ("Nearly degenerate scenes")
 as scene files: python3 tools/families.py DIR FAMILY N [FAMILY N ...].
 
 Families (a unit body at the origin, mu = 0.3):
-  bowl        contacts on the lower half of the unit circle, normals towards the centre, every
-              coordinate rounded to 9 digits: the normal lines nearly meet in the centre
-  bowl-exact  the same points, normals exactly -p: the normal lines all meet in the centre
+  bowl        contacts on the lower half of the unit circle, every coordinate rounded to 9
+              digits, normals exactly -p (round(-c, 9) is -round(c, 9)): the normal lines all
+              meet in the centre, the origin
+  bowl-exact  the same scene as bowl, written as -p (the same file)
+  bowl-near   contacts on the arc from 1.1 pi to 1.9 pi of the unit circle centred at (0, 1),
+              normals towards that centre, points and normals rounded to 9 digits, centre of
+              mass (0, 0.8): the normal lines nearly meet in the centre, each missing it by
+              about 10^-9
   collinear   contacts on the x axis with normals +x and -x in turn: every normal on one line
   cradle      contacts on a half ring, normals tilted by 0.2 rad from the radius
   tangent     normal lines tangent to the lower half of the unit circle (contacts at the
@@ -25,6 +30,8 @@ def contact(p, n):
 
 
 def family(name, n):
+    if name == "bowl-near":
+        return bowl_near(n)
     cs = []
     for k in range(n):
         a = math.pi * (1.0 + (k + 0.5) / n)
@@ -45,6 +52,15 @@ def family(name, n):
         else:
             raise SystemExit(f"families.py: unknown family {name}")
     return {"body": {"mass": 1.0, "com": [0.0, 0.0], "inertia": 0.5}, "contacts": cs}
+
+
+def bowl_near(n):
+    cs = []
+    for k in range(n):
+        a = math.pi * (1.1 + 0.8 * (k + 0.5) / n)
+        c, s = math.cos(a), math.sin(a)
+        cs.append(contact((round(c, 9), round(1.0 + s, 9)), (round(-c, 9), round(-s, 9))))
+    return {"body": {"mass": 1.0, "com": [0.0, 0.8], "inertia": 0.5}, "contacts": cs}
 
 
 def scaled(scene, k):

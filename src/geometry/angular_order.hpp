@@ -8,6 +8,7 @@
 // geometry layer.
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -55,7 +56,7 @@ struct AngularOrder {
 template <class G>
 struct Item {
     G v;
-    double key;  // 4 * half + a floating-point pseudo-angle inside the half; only a hint for the sort
+    std::uint64_t key;  // angle_key: the half, then the angle inside it; only a hint for the sort
     int index;
     int half;
     // Pivot mode: v's approximation, made once for the determinants of the sort and the scan.
@@ -71,14 +72,24 @@ Sign orient(const AngularOrder<G>& ord, const Item<G>& a, const Item<G>& b) {
     return ord.orient(a.v, b.v);
 }
 
-// A pseudo-angle, increasing with the angle inside one open half-plane, from coordinates
-// (a, b) along and across the reference direction (b > 0 in half 1, b < 0 in half 3), in
-// [0, 2], plus 4 * half: one double orders the halves and the angles within each.
-inline double pseudo_angle(double a, double b, int half) {
-    const double d = std::fabs(a) + std::fabs(b);
-    const double base = 4.0 * half;
-    if (d == 0.0 || !std::isfinite(d)) return base;
-    return base + (half == 1 ? 1.0 - a / d : 1.0 + a / d);
+// A key increasing with the angle: the half in the top two bits, then, inside the open halves
+// 1 and 3, -a / b from coordinates (a, b) along and across the reference direction (b > 0 in
+// half 1, b < 0 in half 3): minus the cotangent, which keeps the relative precision of a and b
+// at every angle. (A pseudo-angle on a fixed interval, such as 1 - a / (|a| + |b|), rounds
+// every angle within 2^-53 of an end of the half to that end: the angles of generators nearly
+// in one plane through the pivot.) The double's bits are mapped to an unsigned integer of the
+// same order, less its two lowest bits, so that one integer orders the halves and the angles
+// within each. Only a hint for the sort; halves 0 and 2 need none.
+inline std::uint64_t angle_key(double a, double b, int half) {
+    double key = 0.0;
+    if (half == 1 || half == 3) {
+        if (!(half == 1 ? b > 0.0 : b < 0.0)) b = half == 1 ? 0.0 : -0.0;  // rounded to 0 or past it
+        key = -a / b;                                                       // +-inf for b = 0
+        if (std::isnan(key)) key = 0.0;
+    }
+    std::uint64_t bits = std::bit_cast<std::uint64_t>(key);
+    bits = bits >> 63 ? ~bits : bits | (std::uint64_t{1} << 63);  // negative keys in reverse
+    return static_cast<std::uint64_t>(half) << 62 | bits >> 2;
 }
 
 // Groups of items of exactly equal angle: [begin, end) ranges, stored as 32-bit starts.
@@ -106,9 +117,7 @@ private:
 template <class G, class TieOrder>
 Groups angular_sort(ScratchVector<Item<G>>& items, const AngularOrder<G>& ord, TieOrder tie_order) {
     using Item = geometry_detail::Item<G>;
-    std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) {
-        return a.key < b.key;  // the halves first (pseudo_angle)
-    });
+    std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.key < b.key; });
     // compare(a, b): Negative if a comes first, Zero for the same angle, Positive after.
     auto compare = [&](const Item& a, const Item& b) {
         if (a.half != b.half) return a.half < b.half ? Sign::Negative : Sign::Positive;

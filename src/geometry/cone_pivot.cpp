@@ -98,14 +98,33 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
     // is x tested for being parallel to p (dropped) or told from -r by the witness. (Of exact
     // vectors, the approximations are made once: p's and r's for all x, each x's for this and
     // the determinants of the sort and the scan.)
+    // Where x lies nearly in the plane of p and r (|across| below 2^-40 |D x|), the hints'
+    // angle is noise: generators nearly in one plane through p (wrenches of forces whose lines
+    // nearly meet in a point) would have keys in random order, and the sort would fall back to
+    // O(n log n) exact comparisons. There det(p, r, x) is taken exactly as (p x r) . x, with p x r
+    // made once: its sign is x's half, and its value, rounded and brought to the frame's scale
+    // (across = det(D) det(p, r, x) / (|D p| |D r - (D r . ph) ph|)), the key's ordinate.
     const RoundingOf<G>& p_rounding = ord.pivot_rounding;
     const RoundingOf<G> r_rounding = rounding(r);
+    std::optional<Exact3> p_cross_r;
+    double to_frame = scale.prod() / (hint(p, scale).norm() * (hr - hr.dot(ph) * ph).norm());
+    if (!std::isfinite(to_frame) || !(to_frame > 0)) to_frame = 1.0;  // a hint: any positive factor orders
     for (std::size_t i = reference; i < g.size(); ++i) {
         if (i == pivot) continue;
         int half = 0;
         const RoundingOf<G> x_rounding = i == reference ? r_rounding : rounding(g[i]);
+        const Vec3 u = hint(g[i], scale);
+        double across = u.dot(e2);
         if (i != reference) {  // r itself: along r, no det(p, r, r)
-            const Sign s = det_rounded(p, r, g[i], p_rounding, r_rounding, x_rounding);
+            Sign s;
+            if (across * across > 0x1p-80 * u.squaredNorm()) {
+                s = det_rounded(p, r, g[i], p_rounding, r_rounding, x_rounding);
+            } else {
+                if (!p_cross_r) p_cross_r = cross(exact_coordinates(p), exact_coordinates(r));
+                const Dyadic det = dot(*p_cross_r, exact_coordinates(g[i]));
+                s = det.sign();
+                across = det.to_double() * to_frame;
+            }
             if (s != Sign::Zero) {
                 half = s == Sign::Positive ? 1 : 3;
             } else if (parallel(p, g[i])) {
@@ -115,8 +134,7 @@ PivotAnalysis analyse_pivot(std::span<const G> g, std::size_t pivot, const G& wi
                 half = det_sign(p, g[i], *witness) == witness_side ? 0 : 2;
             }
         }
-        const Vec3 u = hint(g[i], scale);
-        items.push_back({g[i], pseudo_angle(u.dot(e1), u.dot(e2), half), static_cast<int>(i), half, x_rounding});
+        items.push_back({g[i], angle_key(u.dot(e1), across, half), static_cast<int>(i), half, x_rounding});
     }
     // Ties: nearer to p (along the great circle through p) first. In the plane of p and u,
     // u is nearer than v iff u lies inside cone(p, v). The items of a group lie on one half-plane

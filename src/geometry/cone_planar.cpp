@@ -31,7 +31,7 @@ Parts build_planar(std::span<const G> g, const G& a, const G& b) {
         const Vec3 y = hint(g[i], d);
         const double along = x[ci] * y[ci] + x[cj] * y[cj];
         const double across = x[ci] * y[cj] - x[cj] * y[ci];
-        items.push_back({g[i], pseudo_angle(along, across, half), static_cast<int>(i), half});
+        items.push_back({g[i], angle_key(along, across, half), static_cast<int>(i), half});
     }
     const Groups groups = angular_sort(items, ord, [](const G&) { return [](const G&, const G&) { return false; }; });
     const std::size_t m = groups.size();

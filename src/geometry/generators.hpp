@@ -72,6 +72,10 @@ Vec3 hint(const G& v, const Vec3& d) {
     return approx(v).cwiseProduct(d);
 }
 
+// The exact coordinates of a generator.
+inline Exact3 exact_coordinates(const Vec3& v) { return exact(v); }
+inline Exact3 exact_coordinates(const ExactVector& v) { return v.exact(); }
+
 // a x e_k, exactly: its coordinates are +-a_i or 0.
 inline ExactVector axis_cross(const Vec3& a, int k) { return in(a.cross(Vec3::Unit(k))); }
 inline ExactVector axis_cross(const ExactVector& a, int k) { return ExactVector::cross(a, in(Vec3::Unit(k)), 1); }
