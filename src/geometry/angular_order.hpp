@@ -8,10 +8,10 @@
 // geometry layer.
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <utility>
 
 #include "generators.hpp"
@@ -87,7 +87,8 @@ inline std::uint64_t angle_key(double a, double b, int half) {
         key = -a / b;                                                       // +-inf for b = 0
         if (std::isnan(key)) key = 0.0;
     }
-    std::uint64_t bits = std::bit_cast<std::uint64_t>(key);
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &key, sizeof bits);  // (std::bit_cast: not in the WebAssembly build's library)
     bits = bits >> 63 ? ~bits : bits | (std::uint64_t{1} << 63);  // negative keys in reverse
     return static_cast<std::uint64_t>(half) << 62 | bits >> 2;
 }
