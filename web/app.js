@@ -150,13 +150,14 @@ function cached(name, compute) {
 
 function redraw() {
   const a = app.analysis;
-  app.screenBox = screen().box();
+  const s = screen();  // measured before the panel's text changes, so that no layout is forced mid-frame
+  app.screenBox = s.box();
   const produced = a.query(wrench(), load());  // with gravity when it is on
   if (!app.selected) app.selected = produced.length ? produced[0] : a.modes[0];
   drawModes(a, produced);
   drawForceText(produced, a.verdict(wrench(), load()));
   drawPlans(a);
-  drawPicture(a, produced);
+  drawPicture(a, produced, s);
 }
 
 // The mode buttons: built when the modes change, otherwise only their marks are updated.
@@ -262,11 +263,10 @@ function drawRegions(regions, a, s, show, box) {
   }
 }
 
-function drawPicture(a, produced) {
+function drawPicture(a, produced, s) {
   const svg = $('view');
   const focused = document.activeElement && document.activeElement.dataset ? document.activeElement.dataset.handle : null;
   svg.textContent = '';
-  const s = screen();
   svg.setAttribute('viewBox', `0 0 ${s.w} ${s.h}`);
   const show = $('show').value;
   drawRegions(el('g', { id: 'regions' }, svg), a, s, show, s.box());

@@ -4,8 +4,14 @@
 // element's data-answer, so that what is shown can be checked against the CLI. Needs draw.js.
 'use strict';
 
+// Each changes the page only when the value changed (a drag redraws often; unchanged text costs no layout).
 function setAnswer(id, answer) {
-  $(id).dataset.answer = JSON.stringify(answer);
+  const text = JSON.stringify(answer);
+  if ($(id).dataset.answer !== text) $(id).dataset.answer = text;
+}
+
+function say(id, words) {
+  if ($(id).textContent !== words) $(id).textContent = words;
 }
 
 function unit(v) {
@@ -31,12 +37,12 @@ function drawPlans(a) {
   const goal = app.selected, l = load(), key = JSON.stringify(l);
   const tilt = cached(`tilt ${goal}`, () => a.planTilt(goal));
   setAnswer('tilt', tilt);
-  $('tilt').textContent = directionsText(tilt);
+  say('tilt', directionsText(tilt));
   const centre = app.centre || app.doc.body.com;
   const comply = cached(`comply centre ${goal} ${centre} ${key}`, () => a.planComply(goal, centre, app.view, l));
   setAnswer('comply', comply.centre);
-  $('comply').textContent = `centre (${centre.map((x) => Number(x.toPrecision(4))).join(', ')}): ${comply.centre.verdict}, ` +
-    `label ${comply.centre.label}; spring directions ${directionsText(comply.centre)}`;
+  say('comply', `centre (${centre.map((x) => Number(x.toPrecision(4))).join(', ')}): ${comply.centre.verdict}, ` +
+    `label ${comply.centre.label}; spring directions ${directionsText(comply.centre)}`);
   drawClosureText();
   drawBandsText(a);
   const pushKey = `push ${goal} ${$('finger-mu').value} ${key}`;
@@ -91,9 +97,9 @@ function drawClosureText() {
   const c = closureAnswer();
   const said = (t) => (t.holds ? `holds, quality ${Number(t.quality.toPrecision(4))}`
     : `fails: no contact resists the wrench (${t.unresisted_wrench.map((x) => Number(x.toPrecision(4))).join(', ')})`);
-  $('closure-form').textContent = said(c.form);
-  $('closure-force').textContent = said(c.force);
-  $('closure-metric').textContent = `quality about (${c.reference.map((x) => Number(x.toPrecision(4))).join(', ')}), length ${Number(c.length.toPrecision(4))}`;
+  say('closure-form', said(c.form));
+  say('closure-force', said(c.force));
+  say('closure-metric', `quality about (${c.reference.map((x) => Number(x.toPrecision(4))).join(', ')}), length ${Number(c.length.toPrecision(4))}`);
   const shown = Object.assign({}, c);
   delete shown.labels;
   setAnswer('closure', shown);
@@ -110,14 +116,15 @@ function bandsAnswer(a) {
 function drawBandsText(a) {
   const bands = bandsAnswer(a);
   app.bands = bands;
-  setAnswer('bands', bands);
   const box = $('bands');
+  if (box.dataset.answer === JSON.stringify(bands)) return;
+  setAnswer('bands', bands);
   box.textContent = '';
   if (!bands) return;
   const mag = Math.hypot(app.force.vector[0], app.force.vector[1]);
-  $('bands-head').textContent = `the force through (${app.force.point.map((x) => Number(x.toPrecision(4))).join(', ')}) along ` +
+  say('bands-head', `the force through (${app.force.point.map((x) => Number(x.toPrecision(4))).join(', ')}) along ` +
     `${degrees(Math.atan2(app.force.vector[1], app.force.vector[0]))}, magnitude \u03bb from 0 up (now ${Number(mag.toPrecision(4))})` +
-    (bands.fixed.some((x) => x !== 0) ? `, with the fixed wrench (${bands.fixed.map((x) => Number(x.toPrecision(4))).join(', ')})` : '');
+    (bands.fixed.some((x) => x !== 0) ? `, with the fixed wrench (${bands.fixed.map((x) => Number(x.toPrecision(4))).join(', ')})` : ''));
   for (const b of bands.bands) {
     const li = document.createElement('li');
     const to = b.to === 'unbounded' ? '\u221e' : Number(b.to.toPrecision(6));
@@ -127,11 +134,13 @@ function drawBandsText(a) {
   }
 }
 
-// The marks of the answers on the picture.
-function drawPlanMarks(g, a, s, len) {
-  if (!app.plans) return;
-  const { push, tilt, comply } = app.plans;
-  const size = app.view[2] - app.view[0];
+// The push table's marks: touch segments (dark where the goal is alone) and best pushes. Many on
+// a body of many vertices, and the same while the applied force is dragged: built once per table
+// and frame of view, then copied.
+function pushMarks(push, s, size) {
+  const frame = JSON.stringify([app.view, s.w, s.h]);
+  if (app.pushMarks && app.pushMarks.push === push && app.pushMarks.frame === frame) return app.pushMarks.node.cloneNode(true);
+  const g = el('g', { class: 'push-marks' });
   for (const c of push.cases) {
     if (c.verdict !== 'feasible' && c.verdict !== 'boundary') continue;
     for (const [p, q] of c.touch) {
@@ -148,6 +157,16 @@ function drawPlanMarks(g, a, s, len) {
       arrow(g, [p[0] - 0.15 * size * d[0], p[1] - 0.15 * size * d[1]], p, COLOURS.push, s, 1.5, 'push-best');
     }
   }
+  app.pushMarks = { push, frame, node: g.cloneNode(true) };
+  return g;
+}
+
+// The marks of the answers on the picture.
+function drawPlanMarks(g, a, s, len) {
+  if (!app.plans) return;
+  const { push, tilt, comply } = app.plans;
+  const size = app.view[2] - app.view[0];
+  g.appendChild(pushMarks(push, s, size));
   drawDirections(g, tilt, app.doc.body.com, 0.2 * size, COLOURS.tilt, s, 'tilt-arc');
   if (comply.centre.intervals.length) drawDirections(g, comply.centre, comply.centre.point, 0.12 * size, COLOURS.spring, s, 'spring-arc');
   const c = comply.centre.point;
