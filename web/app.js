@@ -1,16 +1,9 @@
 // The viewer (docs/web.md): a scene drawn to scale with draggable body vertices, contacts, normals
 // and an applied force; after every change the scene is analysed again by the library compiled
-// to WebAssembly, and the modes, the selected mode's labelled regions, the verdict and the plans
-// are redrawn. Everything shown is computed by the library; this file only draws and edits.
+// to WebAssembly, and the modes, the selected mode's labelled regions, the verdict and the answers
+// (panels.js) are redrawn. Everything shown is computed by the library; this file edits, and with
+// draw.js draws.
 'use strict';
-
-const COLOURS = {
-  plus: '#fdc585', plusEdge: '#d9720b', minus: '#99c8f2', minusEdge: '#216ab5', both: '#7a1c96',
-  body: '#59595f', obstacle: '#8c8c8c', friction: '#2e994f', guide: '#9e9ea8', ink: '#1f1f24',
-};
-const MODE_COLOURS = ['#a6cee3', '#b2df8a', '#fb9a99', '#fdbf6f', '#cab2d6', '#ffff99', '#8dd3c7', '#fccde5',
-                      '#d9d9d9', '#ccebc5', '#bc80bd', '#ffed6f'];
-const SVG = 'http://www.w3.org/2000/svg';
 
 const app = {
   ml: null,
@@ -69,23 +62,6 @@ function screen() {
     world: (sx, sy) => [x0 + (sx - ox) / k, y1 - (sy - oy) / k],
     box: () => [x0 - ox / k, y0 - (h - oy - k * (y1 - y0)) / k, x1 + (w - ox - k * (x1 - x0)) / k, y1 + oy / k],
   };
-}
-
-function el(name, attrs, parent) {
-  const e = document.createElementNS(SVG, name);
-  for (const [k, v] of Object.entries(attrs || {})) e.setAttribute(k, v);
-  if (parent) parent.appendChild(e);
-  return e;
-}
-
-function pathOf(points, s, closed) {
-  if (!points.length) return '';
-  return points.map((p, i) => `${i ? 'L' : 'M'}${s.x(p[0]).toFixed(2)},${s.y(p[1]).toFixed(2)}`).join(' ') + (closed ? ' Z' : '');
-}
-
-function centroid(points) {
-  const n = points.length;
-  return [points.reduce((a, p) => a + p[0], 0) / n, points.reduce((a, p) => a + p[1], 0) / n];
 }
 
 // --- the scene -----------------------------------------------------------------------------
@@ -174,12 +150,14 @@ function cached(name, compute) {
 
 function redraw() {
   const a = app.analysis;
-  const produced = a.query(wrench());
+  const s = screen();  // measured before the panel's text changes, so that no layout is forced mid-frame
+  app.screenBox = s.box();
+  const produced = a.query(wrench(), load());  // with gravity when it is on
   if (!app.selected) app.selected = produced.length ? produced[0] : a.modes[0];
   drawModes(a, produced);
-  drawForceText(produced, a.verdict(wrench()));
+  drawForceText(produced, a.verdict(wrench(), load()));
   drawPlans(a);
-  drawPicture(a, produced);
+  drawPicture(a, produced, s);
 }
 
 // The mode buttons: built when the modes change, otherwise only their marks are updated.
@@ -215,57 +193,15 @@ function drawForceText(produced, verdict) {
   $('verdict').textContent = verdict;
 }
 
-function drawRegion(g, region, fill, edge, s, cls, mark) {
-  const poly = region.clipped || [];
-  if (poly.length >= 3) {
-    const p = el('path', { d: pathOf(poly, s, true), fill, 'fill-opacity': 0.85, stroke: edge, 'stroke-width': 1.2, class: cls }, g);
-    p.dataset.world = JSON.stringify(poly);
-  } else if (poly.length === 2) {
-    const p = el('path', { d: pathOf(poly, s, false), stroke: edge, 'stroke-width': 3, fill: 'none', class: cls }, g);
-    p.dataset.world = JSON.stringify(poly);
-  } else if (poly.length === 1) {
-    const p = el('circle', { cx: s.x(poly[0][0]), cy: s.y(poly[0][1]), r: 5, fill: edge, class: cls }, g);
-    p.dataset.world = JSON.stringify(poly);
-  }
-  if (mark && poly.length) {
-    const c = centroid(poly);
-    const t = el('text', { x: s.x(c[0]), y: s.y(c[1]), fill: edge, 'font-size': 22, 'font-weight': 700,
-                           'text-anchor': 'middle', 'dominant-baseline': 'middle', class: `${cls}-mark` }, g);
-    t.textContent = mark;
-  }
-}
-
-function drawSet(g, set, s) {
-  drawRegion(g, set.plus, COLOURS.plus, COLOURS.plusEdge, s, 'plus', '+');
-  drawRegion(g, set.minus, COLOURS.minus, COLOURS.minusEdge, s, 'minus', '\u2212');
-  if (set.both) drawRegion(g, set.both, COLOURS.both, COLOURS.both, s, 'both', '');
-  // the forces: the cone's extreme rays on their (dashed) lines of action
-  for (const r of (set.cone && set.cone.rays) || []) {
-    const [fx, fy, tau] = r;
-    const n2 = fx * fx + fy * fy;
-    if (n2 === 0) continue;
-    const p = [tau / n2 * fy, -tau / n2 * fx], d = [fx / Math.sqrt(n2), fy / Math.sqrt(n2)];
-    const far = 4 * (app.view[2] - app.view[0]);
-    el('path', { d: pathOf([[p[0] - far * d[0], p[1] - far * d[1]], [p[0] + far * d[0], p[1] + far * d[1]]], s),
-                 stroke: COLOURS.ink, 'stroke-dasharray': '5 4', 'stroke-width': 0.8, opacity: 0.6, class: 'line-of-action' }, g);
-  }
-}
-
-function arrow(g, from, to, colour, s, width, cls) {
-  const [x0, y0, x1, y1] = [s.x(from[0]), s.y(from[1]), s.x(to[0]), s.y(to[1])];
-  const line = el('line', { x1: x0, y1: y0, x2: x1, y2: y1, stroke: colour, 'stroke-width': width, class: cls || '' }, g);
-  const a = Math.atan2(y1 - y0, x1 - x0), h = 9;
-  el('path', { d: `M${x1},${y1} L${x1 - h * Math.cos(a - 0.4)},${y1 - h * Math.sin(a - 0.4)} L${x1 - h * Math.cos(a + 0.4)},${y1 - h * Math.sin(a + 0.4)} Z`,
-               fill: colour, class: cls || '' }, g);
-  return line;
-}
-
+// A draggable point p drawn at its place, or beside it (joined by a leader) when an earlier handle
+// is there (draw.js, placeHandle); a drag keeps that offset.
 function handle(g, p, s, colour, name, onMove, shape) {
-  // Squares (vertices, normal tips) are larger than the dots drawn over them, so their corners
-  // stay reachable; the force's point is a ring around the centre of mass it starts on.
+  const [ox, oy] = placeHandle(app.placed, s.x(p[0]), s.y(p[1]));
+  const [hx, hy] = [s.x(p[0]) + ox, s.y(p[1]) + oy];
+  if (ox || oy) el('line', { x1: s.x(p[0]), y1: s.y(p[1]), x2: hx, y2: hy, stroke: colour, 'stroke-width': 1, 'pointer-events': 'none', class: 'leader' }, g);
   const h = el(shape === 'square' ? 'rect' : 'circle', shape === 'square'
-    ? { x: s.x(p[0]) - 9, y: s.y(p[1]) - 9, width: 18, height: 18 }
-    : { cx: s.x(p[0]), cy: s.y(p[1]), r: shape === 'ring' ? 11 : 6 }, g);
+    ? { x: hx - 9, y: hy - 9, width: 18, height: 18 }
+    : { cx: hx, cy: hy, r: shape === 'ring' ? 9 : 6 }, g);
   if (shape === 'ring') {
     h.setAttribute('fill', 'none');
     h.setAttribute('stroke', colour);
@@ -279,11 +215,12 @@ function handle(g, p, s, colour, name, onMove, shape) {
   h.setAttribute('class', 'handle');
   h.setAttribute('tabindex', '0');
   h.dataset.handle = name;
+  h.dataset.offset = JSON.stringify([ox, oy]);
   h.setAttribute('aria-label', name);
   h.addEventListener('pointerdown', (ev) => {
     ev.preventDefault();
     h.setPointerCapture(ev.pointerId);
-    app.dragging = { name, onMove };
+    app.dragging = { name, onMove, offset: [ox, oy] };
   });
   h.addEventListener('keydown', (ev) => {
     const step = (app.view[2] - app.view[0]) * (ev.shiftKey ? 0.002 : 0.02);  // in the scene's scale
@@ -296,35 +233,44 @@ function handle(g, p, s, colour, name, onMove, shape) {
   return h;
 }
 
-function drawPicture(a, produced) {
-  const svg = $('view');
-  const focused = document.activeElement && document.activeElement.dataset ? document.activeElement.dataset.handle : null;
-  svg.textContent = '';
-  const s = screen();
-  svg.setAttribute('viewBox', `0 0 ${s.w} ${s.h}`);
-  const box = s.box();
-  const regions = el('g', { id: 'regions' }, svg);
-  const show = $('show').value;
+// The regions the "show" menu asks for: a mode's E, F or T, rotation centres, E's compliance
+// labels, or the labels of grasp closure's contact wrenches.
+function drawRegions(regions, a, s, show, box) {
   if (show === 'all') {
     a.modes.forEach((m, k) => {
       const sets = cached(`mode ${m} ${box}`, () => a.mode(m, box));
       const colour = MODE_COLOURS[k % MODE_COLOURS.length];
-      drawRegion(regions, sets.centres.plus, colour, colour, s, `centres mode-${m}`, `${m} \u21ba`);
-      drawRegion(regions, sets.centres.minus, colour, colour, s, `centres mode-${m}`, `${m} \u21bb`);
+      drawRegion(regions, sets.centres.plus, colour, COLOURS.ink, s, `centres mode-${m}`, `${m} \u21ba`);
+      drawRegion(regions, sets.centres.minus, colour, COLOURS.ink, s, `centres mode-${m}`, `${m} \u21bb`);
     });
   } else if (show === 'comply') {
     const centre = app.centre || app.doc.body.com;
-    const plan = cached(`comply ${app.selected} ${centre} ${box}`, () => a.planComply(app.selected, centre, box));
-    drawSet(regions, plan.labels, s);
+    const plan = cached(`comply ${app.selected} ${centre} ${box} ${JSON.stringify(load())}`,
+                        () => a.planComply(app.selected, centre, box, load()));
+    drawSet(regions, plan.labels, s, app.view);
+  } else if (show === 'closure-form' || show === 'closure-force') {
+    const which = show === 'closure-form' ? 'form' : 'force';
+    drawSet(regions, closureAnswer().labels[which], s, app.view);
+    drawClosureMarks(regions, which, s);
   } else if (app.selected) {
     const sets = cached(`mode ${app.selected} ${box}`, () => a.mode(app.selected, box));
     if (show === 'centres') {
       drawRegion(regions, sets.centres.plus, COLOURS.plus, COLOURS.plusEdge, s, 'plus', '\u21ba');
       drawRegion(regions, sets.centres.minus, COLOURS.minus, COLOURS.minusEdge, s, 'minus', '\u21bb');
     } else {
-      drawSet(regions, sets[show], s);
+      drawSet(regions, sets[show], s, app.view);
     }
   }
+}
+
+function drawPicture(a, produced, s) {
+  const svg = $('view');
+  const focused = document.activeElement && document.activeElement.dataset ? document.activeElement.dataset.handle : null;
+  svg.textContent = '';
+  svg.setAttribute('viewBox', `0 0 ${s.w} ${s.h}`);
+  const show = $('show').value;
+  drawRegions(el('g', { id: 'regions' }, svg), a, s, show, s.box());
+  drawAxes(svg, s);
   const scene = el('g', { id: 'scene' }, svg);
   for (const o of app.doc.obstacles || []) {
     el('path', { d: pathOf(o.polygon, s, true), fill: COLOURS.obstacle, 'fill-opacity': 0.45, class: 'obstacle' }, scene);
@@ -343,22 +289,33 @@ function drawPicture(a, produced) {
                  fill: COLOURS.friction, 'fill-opacity': 0.25, class: 'friction-cone' }, scene);
     arrow(scene, c.point, [c.point[0] + len * u[0], c.point[1] + len * u[1]], COLOURS.friction, s, 1.5, 'normal');
   });
-  drawPlanMarks(scene, a, s);
-  // the applied force
+  drawPlanMarks(scene, a, s, len);
+  // the applied force, and gravity (when on) at the centre of mass
   const f = app.force, tip = [f.point[0] + f.vector[0] * len * 2, f.point[1] + f.vector[1] * len * 2];
   arrow(scene, f.point, tip, produced.length === 1 ? COLOURS.ink : '#b00', s, 2.5, 'applied-force');
-  // handles: body vertices, contact points, normal tips, the force's point and tip
+  const g = load().gravity;
+  if (g && (g[0] || g[1])) {
+    const u = unit(g);
+    arrow(scene, body.com, [body.com[0] + len * u[0], body.com[1] + len * u[1]], COLOURS.guide, s, 2, 'gravity');
+  }
+  drawLegend(svg, legendEntries(show));
+  // handles, the centre of mass first: it stays on its dot, and a later handle there moves aside
   const handles = el('g', { id: 'handles' }, svg);
+  app.placed = [];
   // Every move edits the scene as it is now (by index), not the objects of this drawing: an edit
   // that was undone replaced them.
   const now = () => app.doc;
+  handle(handles, body.com, s, COLOURS.body, 'centre of mass', (q) => { now().body.com = q; });
+  handle(handles, f.point, s, COLOURS.ink, 'force point', (q) => { f.point = q; }, 'ring');
+  handle(handles, tip, s, COLOURS.ink, 'force tip', (q) => {
+    f.vector = [(q[0] - f.point[0]) / (len * 2), (q[1] - f.point[1]) / (len * 2)];
+  });
   (body.polygon || []).forEach((p, i) => handle(handles, p, s, COLOURS.body, `vertex ${i}`, (q) => {
     const b = now().body;
     b.polygon[i] = q;
     for (const c of now().contacts || []) c.point = onBoundary(c.point, b.polygon);
     projectedTolerance();
   }, 'square'));
-
   (app.doc.contacts || []).forEach((c, j) => {
     handle(handles, c.point, s, COLOURS.friction, `contact ${j}`, (q) => {
       const poly = now().body.polygon;
@@ -375,91 +332,10 @@ function drawPicture(a, produced) {
   (app.doc.obstacles || []).forEach((o, k) => o.polygon.forEach((p, i) =>
     handle(handles, p, s, COLOURS.obstacle, `obstacle ${k} vertex ${i}`, (q) => { now().obstacles[k].polygon[i] = q; },
            'square')));
-  handle(handles, f.point, s, COLOURS.ink, 'force point', (q) => { f.point = q; }, 'ring');
-  handle(handles, tip, s, COLOURS.ink, 'force tip', (q) => {
-    f.vector = [(q[0] - f.point[0]) / (len * 2), (q[1] - f.point[1]) / (len * 2)];
-  });
-  handle(handles, body.com, s, COLOURS.body, 'centre of mass', (q) => { now().body.com = q; });  // above the ring
-  if (app.centre) el('path', { d: `M${s.x(app.centre[0]) - 6},${s.y(app.centre[1]) - 6} l12,12 m-12,0 l12,-12`,
-                               stroke: COLOURS.ink, 'stroke-width': 2, class: 'compliance-centre' }, svg);
   if (focused) {  // a keyboard user keeps the handle they were on across redraws
     const again = handles.querySelector(`[data-handle="${CSS.escape(focused)}"]`);
     if (again) again.focus();
   }
-}
-
-// The push table's feasible touches on the body, the tilt arcs at the centre of mass.
-function drawPlanMarks(g, a, s) {
-  if (!app.plans) return;
-  const { push, tilt } = app.plans;
-  for (const c of push.cases) {
-    if (c.verdict !== 'feasible' && c.verdict !== 'boundary') continue;
-    for (const [p, q] of c.touch) {
-      el('path', { d: pathOf([p, q], s), stroke: COLOURS.friction, 'stroke-width': c.feasible ? 6 : 3,
-                   'stroke-dasharray': c.feasible ? '' : '3 3', opacity: 0.7, fill: 'none', 'stroke-linecap': 'round',
-                   class: 'push-touch' }, g);
-    }
-  }
-  const com = app.doc.body.com, r = 0.2 * (app.view[2] - app.view[0]);
-  for (const [lo, hi] of tilt.intervals) {
-    const steps = 24, pts = [];
-    for (let i = 0; i <= steps; ++i) {
-      const t = lo + (hi - lo) * i / steps;
-      pts.push([com[0] + r * Math.cos(t), com[1] + r * Math.sin(t)]);
-    }
-    el('path', { d: pathOf(pts, s), stroke: '#6a3d9a', 'stroke-width': hi > lo ? 5 : 2, fill: 'none', opacity: 0.6,
-                 class: 'tilt-arc' }, g);
-  }
-}
-
-function degrees(r) { return `${(r * 180 / Math.PI).toFixed(1)}\u00b0`; }
-
-function drawPlans(a) {
-  const goal = app.selected;
-  const tilt = cached(`tilt ${goal}`, () => a.planTilt(goal));
-  $('tilt').textContent = tilt.intervals.length
-    ? tilt.intervals.map(([lo, hi]) => (lo === hi ? `${degrees(lo)} only` : `[${degrees(lo)}, ${degrees(hi)}]`)).join(', ')
-    : 'no tilt';
-  const centre = app.centre || app.doc.body.com;
-  const comply = cached(`comply centre ${goal} ${centre}`, () => a.planComply(goal, centre, app.view));
-  $('comply').textContent = `(${centre.map((x) => x.toFixed(3)).join(', ')}): ${comply.centre.verdict} (label ${comply.centre.label})`;
-  const pushKey = `push ${goal} ${$('finger-mu').value}`;
-  const push = app.cache[pushKey];
-  app.plans = { tilt, push: push || { cases: [] }, comply };
-  if (push) {
-    if (app.shownPush !== push) drawPushTable(push);
-    app.shownPush = push;
-  } else if (!app.dragging && !app.sliding) {
-    schedulePush(pushKey, goal);  // during a drag it waits for the drag's end
-  }
-}
-
-// The push table after the frame, unless the scene or goal changes again first.
-function schedulePush(key, goal) {
-  clearTimeout(app.pushTimer);
-  app.pushTimer = setTimeout(() => {
-    const a = app.analysis;
-    if (!a || !app.cache || app.cache[key]) return;
-    const body = app.doc.body;
-    app.cache[key] = body.polygon && body.polygon.length >= 3 ? a.planPush(goal, { mu: Number($('finger-mu').value) }) : { cases: [] };
-    recompute();
-  }, 0);
-}
-
-function drawPushTable(push) {
-  const body = $('push').querySelector('tbody');
-  body.textContent = '';
-  for (const c of push.cases) {
-    const tr = document.createElement('tr');
-    if (c.verdict === 'feasible' || c.verdict === 'boundary') tr.className = c.verdict;
-    for (const text of [c.feature, c.slip, c.verdict, c.directions ? `${degrees(c.directions[0])} .. ${degrees(c.directions[1])}` : '']) {
-      const td = document.createElement('td');
-      td.textContent = text;
-      tr.appendChild(td);
-    }
-    body.appendChild(tr);
-  }
-  $('push').dataset.goal = push.goal || '';
 }
 
 // --- friction sliders, files, exports --------------------------------------------------------
@@ -519,41 +395,6 @@ function loadScene(text, name) {
   return recompute();
 }
 
-function download(name, type, data) {
-  const url = URL.createObjectURL(new Blob([data], { type }));
-  const a = document.createElement('a');
-  a.href = url;
-  a.download = name;
-  document.body.appendChild(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 1000);
-}
-
-function svgText() {
-  const svg = $('view').cloneNode(true);
-  svg.querySelectorAll('#handles').forEach((h) => h.remove());
-  svg.setAttribute('width', $('view').clientWidth);
-  svg.setAttribute('height', $('view').clientHeight);
-  return new XMLSerializer().serializeToString(svg);
-}
-
-function exportPng() {
-  const img = new Image();
-  const w = $('view').clientWidth, h = $('view').clientHeight;
-  img.onload = () => {
-    const canvas = document.createElement('canvas');
-    canvas.width = w * 2;
-    canvas.height = h * 2;
-    const ctx = canvas.getContext('2d');
-    ctx.fillStyle = '#fff';
-    ctx.fillRect(0, 0, canvas.width, canvas.height);
-    ctx.drawImage(img, 0, 0, canvas.width, canvas.height);
-    canvas.toBlob((blob) => download('momentlab.png', 'image/png', blob));
-  };
-  img.src = `data:image/svg+xml;charset=utf-8,${encodeURIComponent(svgText())}`;
-}
-
 // --- start -----------------------------------------------------------------------------------
 
 function start(ml) {
@@ -581,6 +422,7 @@ function start(ml) {
   $('export-svg').addEventListener('click', () => download('momentlab.svg', 'image/svg+xml', svgText()));
   $('export-png').addEventListener('click', exportPng);
   $('show').addEventListener('change', recompute);
+  for (const id of ['gravity-on', 'gravity-x', 'gravity-y']) $(id).addEventListener('input', recompute);
   $('moment').addEventListener('input', () => {
     app.force.moment = Number($('moment').value);
     $('moment-value').textContent = $('moment').value;
@@ -591,7 +433,8 @@ function start(ml) {
   window.addEventListener('pointermove', (ev) => {
     if (!app.dragging) return;
     const r = svg.getBoundingClientRect();
-    app.dragging.onMove(screen().world(ev.clientX - r.left, ev.clientY - r.top));
+    const [ox, oy] = app.dragging.offset || [0, 0];  // a handle drawn beside its point
+    app.dragging.onMove(screen().world(ev.clientX - r.left - ox, ev.clientY - r.top - oy));
     recompute();
   });
   const stop = () => {

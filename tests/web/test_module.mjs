@@ -91,7 +91,7 @@ function compareScene(doc, wrenches) {
     wrenches.forEach((w, i) => {
       assert.deepEqual(a.query(w), answers[i].modes, `${text} ${JSON.stringify(w)}`);
       assert.equal(a.verdict(w), answers[i].verdict);
-      assert.deepEqual(a.modes.filter((_, k) => batch[i * a.modes.length + k] === 1), answers[i].modes);
+      assert.deepEqual(a.modes.filter((_, k) => batch[i * a.modes.length + k] === 1).sort(), answers[i].modes);
     });
   } finally {
     a.delete();
@@ -283,9 +283,9 @@ test('bad input throws an Error with the CLI message', () => {
     assert.throws(() => ml.analyze(text), (e) => e instanceof Error && `momentlab: ${e.message}` === cli.stderr.trim());
   }
   const a = ml.analyze(readFileSync(join(ROOT, 'examples/figure-3-block-along-wall.json'), 'utf8'));
-  assert.throws(() => a.query([1, NaN, 0]), /wrench: expected finite numbers/);
+  assert.throws(() => a.query([1, NaN, 0]), /^Error: wrench\[1\]: expected a finite number, got NaN$/);
   assert.throws(() => a.query([1, 2]), /wrench: expected 3 numbers/);
-  assert.throws(() => a.queryBatch([[1, 2, 3], [4, Infinity, 6]]), /wrenches\[1\]: expected finite numbers/);
+  assert.throws(() => a.queryBatch([[1, 2, 3], [4, Infinity, 6]]), /wrenches\[1\]\[1\]: expected a finite number, got Infinity/);
   assert.throws(() => a.mode('xx'), /no mode "xx" in this scene/);
   assert.throws(() => a.query([1e300, 0, 0]), /^Error: wrench: out of range/);
   assert.throws(() => a.queryBatch([[1, 2, 3, 4], [5, 6]]), /^Error: wrenches\[0\]: expected 3 numbers/);
@@ -295,4 +295,68 @@ test('bad input throws an Error with the CLI message', () => {
   assert.throws(() => a.mode('rr', [1, 1, 0, 0]), /^Error: view:/);
   a.delete();
   assert.throws(() => a.query([0, 0, 1]), /^Error: analysis: already deleted/);
+});
+
+// Issue 44 item 6: what a function does not take is an error naming it; what JSON cannot hold is an
+// error in one line naming its path; and the module asks the same questions as the CLI with the
+// same load (gravity, a wrench, forces at points) and the same input rule (the largest coordinate's).
+test('options, NaN, cycles and lone surrogates are refused in one line naming them', () => {
+  const file = join(ROOT, 'examples/figure-3-block-along-wall.json');
+  const text = readFileSync(file, 'utf8');
+  const a = ml.analyze(text);
+  const oneLine = (pattern) => (e) => e instanceof Error && !e.message.includes('\n') && pattern.test(e.message);
+  assert.throws(() => a.planPush('sr', { gravty: [0, -10] }), oneLine(/^gravty: not an option of planPush/));
+  assert.throws(() => a.planTilt('rr', { mu: 1 }), oneLine(/^mu: not an option of planTilt/));
+  assert.throws(() => a.planComply('rr', [0, 0], null, { ignoreInterference: true }), oneLine(/^ignoreInterference: not an option of planComply/));
+  assert.throws(() => ml.analyze(text, { quasistatic: true }), oneLine(/^quasistatic: not an option of analyze/));
+  assert.throws(() => ml.graspClosure(text, { centre: [0, 0] }), oneLine(/^centre: not an option of graspClosure/));
+  assert.throws(() => a.query([1, 0, 0], { wrench: [0, 1, 0] }), oneLine(/^wrench: not an option of query/));
+  assert.throws(() => a.planTilt('rr', { gravity: [0, -10] }), oneLine(/^gravity: a tilt turns gravity itself/));
+  assert.throws(() => a.planTilt('rr', { wrench: [NaN, 0, 0] }), oneLine(/^wrench\[0\]: expected a finite number, got NaN$/));
+  assert.throws(() => a.planPush('rr', { mu: NaN }), oneLine(/^mu: expected a finite number, got NaN$/));
+  assert.throws(() => a.pushLine([0, NaN], [0, -1]), oneLine(/^point\[1\]: expected a finite number, got NaN$/));
+  const nan = JSON.parse(text);
+  nan.contacts[0].mu = NaN;
+  assert.throws(() => ml.analyze(nan), oneLine(/^\$\.contacts\[0\]\.mu: expected a finite number, got NaN$/));
+  assert.throws(() => a.queryBatch(undefined), oneLine(/^wrenches: expected an array/));
+  assert.throws(() => a.queryBatch(5), oneLine(/^wrenches: expected an array/));
+  const cyclic = JSON.parse(text);
+  cyclic.body.self = cyclic;
+  assert.throws(() => ml.analyze(cyclic), oneLine(/^\$\.body\.self: a cyclic object/));
+  const surrogate = JSON.parse(text);
+  surrogate.contacts[0].name = 'a\uD800b';
+  assert.throws(() => ml.analyze(surrogate), oneLine(/^\$\.contacts\[0\]\.name: a string with a lone surrogate/));
+  assert.throws(() => ml.analyze(text.replace('"contacts"', '"contacts\uDC00"')), oneLine(/^\$: the scene's text holds a lone surrogate/));
+  a.delete();
+});
+
+test('loads and the input rule: the CLI answers with --gravity, --wrench, --force, --push, closure options', () => {
+  const file = join(ROOT, 'examples/figure-3-block-along-wall.json');
+  const cli = (...args) => JSON.parse(execFileSync(CLI, args, { encoding: 'utf8' }));
+  const a = ml.analyze(readFileSync(file, 'utf8'));
+  // The wrench (1, -2, 5e-324) and (1, 0, 1e-61): their largest coordinate is in range (issue 44 item 4).
+  for (const w of [[1, -2, 5e-324], [1, 0, 1e-61]]) {
+    assert.deepEqual(a.query(w), cli('query', file, '--wrench', ...w.map(String), '--json').modes, JSON.stringify(w));
+  }
+  // planPush('sr', {gravity}) pushes against gravity (the touch segment reaches (0, 0); without
+  // gravity it stops at (0, 0.104)).
+  const push = a.planPush('sr', { gravity: [0, -10] });
+  assertClose(push, cli('plan', 'push', file, '--goal', 'sr', '--gravity', '0', '-10', '--json'));
+  assert.ok(push.cases.some((c) => c.feasible && c.touch.some(([p, q]) => q[1] === 0)));
+  assertClose(a.planTilt('rr', { wrench: [0.5, 0, 0.25] }), cli('plan', 'tilt', file, '--goal', 'rr', '--wrench', '0.5', '0', '0.25', '--json'));
+  const comply = a.planComply('rr', [0.875, 0.25], null, { forces: [[[0.5, 0.5], [0, -1]]] });
+  const cliComply = cli('plan', 'comply', file, '--goal', 'rr', '--centre', '0.875', '0.25', '--force', '0.5', '0.5', '0', '-1', '--json');
+  assertClose(comply.centre, cliComply.centre);
+  assert.deepEqual(a.query(null, { gravity: [0, -10] }), cli('query', file, '--gravity', '0', '-10', '--json').modes);
+  assert.deepEqual(a.query([0.25, 0, 0], { gravity: [0, -10], forces: [[[1, 1], [-1, 0]]] }),
+                   cli('query', file, '--wrench', '0.25', '0', '0', '--gravity', '0', '-10', '--force', '1', '1', '-1', '0', '--json').modes);
+  const line = cli('query', file, '--push', '0.5', '0.25', '-1', '0', '--gravity', '0', '-10', '--json');
+  assertClose(a.pushLine([0.5, 0.25], [-1, 0], { gravity: [0, -10] }), line);
+  assert.ok(line.bands.length >= 2, JSON.stringify(line));
+  const closureFile = join(ROOT, 'examples/closure-five-contacts.json');
+  const mine = ml.graspClosure(readFileSync(closureFile, 'utf8'), { reference: [0.25, 0], length: 2, view: [-2, -2, 2, 2] });
+  assert.ok(mine.labels.form.plus && mine.labels.force.minus);
+  delete mine.labels;
+  assertClose(mine, cli('closure', closureFile, '--reference', '0.25', '0', '--length', '2', '--json'));
+  a.delete();
 });

@@ -5,6 +5,11 @@
 //   const a = ml.analyze(sceneJsonText);   // a.modes: ['ff', 'ss', ...]
 //   a.query([fx, fy, tau]);                // ['rr']
 //   a.delete();                            // frees the WebAssembly memory of the analysis
+//
+// Here only the shapes of JS values are checked (an array of so many numbers, NaN and infinities
+// said as such, options by name: one a function does not take is an error naming it); every
+// number's range is checked by the library's application layer (app/checks.hpp), as the CLI and
+// Python check it.
 
 function momentlabAnswer(text) {
   const value = JSON.parse(text);
@@ -14,33 +19,120 @@ function momentlabAnswer(text) {
   return value;
 }
 
-// The CLI's range for numbers: 0, or magnitudes 1e-60 .. 1e60.
-function momentlabInRange(x) {
-  const m = Math.abs(x);
-  return m === 0 || (m >= 1e-60 && m <= 1e60);
+// "got NaN", "got Infinity", "got a string", ...: what a value is, in a message.
+function momentlabGot(x) {
+  if (typeof x === 'number') return `got ${x}`;
+  if (x === null || x === undefined) return `got ${x}`;
+  if (Array.isArray(x)) return 'got an array';
+  return `got ${typeof x === 'object' ? 'an object' : `a ${typeof x}`}`;
 }
 
-function momentlabWrench(w, what = 'wrench') {
-  if (!w || w.length !== 3) throw new Error(`${what}: expected 3 numbers [fx, fy, tau]`);
-  const e = [Number(w[0]), Number(w[1]), Number(w[2])];
-  if (!e.every(Number.isFinite)) throw new Error(`${what}: expected finite numbers`);
-  if (!e.every(momentlabInRange)) throw new Error(`${what}: out of range: each number must be 0 or of magnitude 1e-60 .. 1e60`);
-  return e;
+// n finite numbers (an array or a typed array) at `where`, as a plain array.
+function momentlabNumbers(value, n, where, shape) {
+  const isList = Array.isArray(value) || ArrayBuffer.isView(value);
+  if (!isList || value.length !== n) {
+    throw new Error(`${where}: expected ${n} numbers ${shape}, ${isList ? `got ${value.length}` : momentlabGot(value)}`);
+  }
+  const out = Array.from(value);
+  out.forEach((x, i) => {
+    if (typeof x !== 'number' || !Number.isFinite(x)) throw new Error(`${where}[${i}]: expected a finite number, ${momentlabGot(x)}`);
+  });
+  return out;
+}
+
+function momentlabNumber(x, where) {
+  if (typeof x !== 'number' || !Number.isFinite(x)) throw new Error(`${where}: expected a finite number, ${momentlabGot(x)}`);
+  return x;
+}
+
+const momentlabWrench = (w, where = 'wrench') => momentlabNumbers(w, 3, where, '[fx, fy, tau]');
+const momentlabPoint = (p, where) => momentlabNumbers(p, 2, where, '[x, y]');
+
+// The options object of `what`: absent, or an object whose keys are all in `known`.
+function momentlabOptions(options, what, known) {
+  if (options === undefined || options === null) return {};
+  if (typeof options !== 'object' || Array.isArray(options)) throw new Error(`options: expected an object of ${what}'s options, ${momentlabGot(options)}`);
+  for (const key of Object.keys(options)) {
+    if (!known.includes(key)) {
+      throw new Error(`${key}: not an option of ${what} (${known.length ? `its options: ${known.join(', ')}` : 'it takes none'})`);
+    }
+  }
+  return options;
+}
+
+const momentlabLoadKeys = ['gravity', 'wrench', 'forces'];
+
+// The load of a question or plan (docs/web.md): gravity [gx, gy] through the centre of mass, a
+// wrench [fx, fy, tau] and forces [[[x, y], [fx, fy]], ...], as JSON text for bindings.cpp.
+function momentlabLoad(o) {
+  const load = {};
+  if (o.gravity !== undefined) load.gravity = momentlabPoint(o.gravity, 'gravity');
+  if (o.wrench !== undefined) load.wrench = momentlabWrench(o.wrench);
+  if (o.forces !== undefined) {
+    if (!Array.isArray(o.forces)) throw new Error(`forces: expected an array of [point, force], ${momentlabGot(o.forces)}`);
+    load.forces = o.forces.map((f, i) => {
+      if (!Array.isArray(f) || f.length !== 2) throw new Error(`forces[${i}]: expected [point, force]`);
+      return [momentlabPoint(f[0], `forces[${i}][0]`), momentlabPoint(f[1], `forces[${i}][1]`)];
+    });
+  }
+  return JSON.stringify(load);
+}
+
+// A scene or force set as JSON text: a string as it is (Unicode), an object as JSON data. A value
+// JSON cannot hold (NaN, an infinity, undefined, a function, a cycle, a lone surrogate) is an
+// error naming its path, in one line.
+function momentlabHasLoneSurrogate(text) {
+  for (let i = 0; i < text.length; ++i) {
+    const c = text.charCodeAt(i);
+    if (c >= 0xd800 && c <= 0xdbff) {
+      const next = i + 1 < text.length ? text.charCodeAt(i + 1) : 0;
+      if (next < 0xdc00 || next > 0xdfff) return true;
+      ++i;
+    } else if (c >= 0xdc00 && c <= 0xdfff) {
+      return true;
+    }
+  }
+  return false;
+}
+
+function momentlabJsonData(value, path, open) {
+  if (typeof value === 'string') {
+    if (momentlabHasLoneSurrogate(value)) throw new Error(`${path}: a string with a lone surrogate (not Unicode text)`);
+    return;
+  }
+  if (typeof value === 'number') {
+    if (!Number.isFinite(value)) throw new Error(`${path}: expected a finite number, got ${value}`);
+    return;
+  }
+  if (value === null || typeof value === 'boolean') return;
+  if (typeof value !== 'object') throw new Error(`${path}: expected JSON data, ${momentlabGot(value)}`);
+  if (open.has(value)) throw new Error(`${path}: a cyclic object (JSON data has no cycles)`);
+  open.add(value);
+  if (Array.isArray(value)) {
+    value.forEach((x, i) => momentlabJsonData(x, `${path}[${i}]`, open));
+  } else {
+    for (const k of Object.keys(value)) {
+      const x = value[k];
+      if (momentlabHasLoneSurrogate(k)) throw new Error(`${path}: a key with a lone surrogate (not Unicode text)`);
+      momentlabJsonData(x, /^[A-Za-z_][A-Za-z0-9_]*$/.test(k) ? `${path}.${k}` : `${path}[${JSON.stringify(k)}]`, open);
+    }
+  }
+  open.delete(value);
 }
 
 function momentlabText(scene, what) {
-  if (typeof scene === 'string') return scene;
+  if (typeof scene === 'string') {
+    if (momentlabHasLoneSurrogate(scene)) throw new Error(`$: the ${what}'s text holds a lone surrogate (not Unicode text)`);
+    return scene;
+  }
   if (scene === null || typeof scene !== 'object') throw new Error(`$: expected the JSON text of a ${what} or an object`);
+  momentlabJsonData(scene, '$', new Set());
   return JSON.stringify(scene);
 }
 
 function momentlabView(view) {
-  const v = view || [-2, -2, 2, 2];
-  if (v.length !== 4) throw new Error('view: expected [xmin, ymin, xmax, ymax]');
-  return v.map(Number);
+  return view === undefined || view === null ? [-2, -2, 2, 2] : momentlabNumbers(view, 4, 'view', '[xmin, ymin, xmax, ymax]');
 }
-
-const momentlabVerdicts = ['inconsistent', 'unique', 'ambiguous'];
 
 class MomentlabAnalysis {
   constructor(session) {
@@ -54,28 +146,40 @@ class MomentlabAnalysis {
     if (!this._live) throw new Error('analysis: already deleted');
     return this._live;
   }
-  /** The modes whose closed E_i holds the applied wrench [fx, fy, tau] (tau about the origin). */
-  query(w) {
-    const e = momentlabWrench(w);
-    return Array.from(this._session.query(e[0], e[1], e[2]));
+  _ask(w, options) {
+    const o = momentlabOptions(options, 'query', ['gravity', 'forces']);
+    const load = Object.assign({}, o);
+    if (w !== undefined && w !== null) load.wrench = w;
+    return momentlabAnswer(this._session.query(momentlabLoad(load)));
+  }
+  /** The modes whose closed E_i hold the applied wrench [fx, fy, tau] (tau about the origin),
+   *  sorted; options {gravity: [gx, gy], forces: [[point, force], ...]} add to it (the wrench
+   *  may then be null). */
+  query(w, options) {
+    return this._ask(w, options).modes;
   }
   /** 'unique', 'ambiguous' or 'inconsistent'. */
-  verdict(w) {
-    return momentlabVerdicts[Math.min(this.query(w).length, 2)];
+  verdict(w, options) {
+    return this._ask(w, options).verdict;
   }
   /** For N wrenches (an array of [fx, fy, tau] or a flat array of 3 N numbers): a Uint8Array of
    *  N * modes.length, 1 where mode k holds wrench i (index i * modes.length + k). */
   queryBatch(wrenches) {
+    if (!Array.isArray(wrenches) && !ArrayBuffer.isView(wrenches)) {
+      throw new Error(`wrenches: expected an array of [fx, fy, tau] or a flat array of 3 N numbers, ${momentlabGot(wrenches)}`);
+    }
     let flat;
-    if (Array.isArray(wrenches) && wrenches.length && Array.isArray(wrenches[0])) {
+    if (wrenches.length && Array.isArray(wrenches[0])) {
       flat = [];
       wrenches.forEach((w, i) => flat.push(...momentlabWrench(w, `wrenches[${i}]`)));
     } else {
-      flat = Array.from(wrenches || []);
-      if (flat.length % 3 !== 0) throw new Error('wrenches: expected 3 numbers per wrench');
-      for (let i = 0; i < flat.length; i += 3) momentlabWrench(flat.slice(i, i + 3), `wrenches[${i / 3}]`);
+      if (wrenches.length % 3 !== 0) throw new Error('wrenches: expected 3 numbers per wrench');
+      flat = [];
+      for (let i = 0; i < wrenches.length; i += 3) flat.push(...momentlabWrench(Array.from(wrenches).slice(i, i + 3), `wrenches[${i / 3}]`));
     }
-    return this._session.queryBatch(flat);
+    const out = this._session.queryBatch(flat);
+    if (typeof out === 'string') momentlabAnswer(out);
+    return out;
   }
   /** One mode's sets: twists, F, T and E (each {cone, plus, minus, both} with the regions cut to
    *  the view [xmin, ymin, xmax, ymax] as "clipped" polygons) and its rotation centres. */
@@ -83,25 +187,45 @@ class MomentlabAnalysis {
     const v = momentlabView(view);
     return momentlabAnswer(this._session.mode(String(letters), v[0], v[1], v[2], v[3]));
   }
-  /** The tilts that produce the goal: {goal, intervals: [[from, to], ...], best, margin}. */
-  planTilt(goal) {
-    return momentlabAnswer(this._session.planTilt(String(goal)));
+  /** The tilts that produce the goal, as `plan tilt --json`: {goal, intervals, best, margin,
+   *  unique, shared, ...}; options {wrench, forces} act besides gravity (gravity itself is refused:
+   *  a tilt turns it). */
+  planTilt(goal, options) {
+    const o = momentlabOptions(options, 'planTilt', momentlabLoadKeys);
+    return momentlabAnswer(this._session.planTilt(String(goal), momentlabLoad(o)));
   }
-  /** The pushing table: {goal, mu, cases: [{feature, slip, verdict, feasible, touch, ...}]}. */
+  /** The pushing table, as `plan push --json`: {goal, mu, interference, cases: [...]}; options
+   *  {mu (0.5), ignoreInterference, edge, vertex, slip ('l', 'f' or 'r'), gravity, wrench, forces}. */
   planPush(goal, options) {
-    const o = options || {};
-    const mu = o.mu === undefined ? 0.5 : Number(o.mu);
-    return momentlabAnswer(this._session.planPush(String(goal), mu, Boolean(o.ignoreInterference)));
+    const o = momentlabOptions(options, 'planPush', ['mu', 'ignoreInterference', 'edge', 'vertex', 'slip', ...momentlabLoadKeys]);
+    const mu = o.mu === undefined ? 0.5 : momentlabNumber(o.mu, 'mu');
+    const index = (key) => {
+      if (o[key] === undefined) return -1;
+      if (!Number.isInteger(o[key]) || o[key] < 0 || o[key] > 2 ** 31 - 1) throw new Error(`${key}: expected an index 0, 1, ..., ${momentlabGot(o[key])}`);
+      return o[key];
+    };
+    if (o.slip !== undefined && !['l', 'f', 'r'].includes(o.slip)) throw new Error(`slip: expected 'l', 'f' or 'r'`);
+    if (o.ignoreInterference !== undefined && typeof o.ignoreInterference !== 'boolean') throw new Error(`ignoreInterference: expected true or false, ${momentlabGot(o.ignoreInterference)}`);
+    return momentlabAnswer(this._session.planPush(String(goal), mu, Boolean(o.ignoreInterference), index('edge'), index('vertex'),
+                                                  o.slip || '', momentlabLoad(o)));
   }
-  /** Compliance: {goal, labels: {plus, minus} of E_goal, centre: {point, label, verdict, intervals}}. */
-  planComply(goal, centre, view) {
+  /** Compliance, as `plan comply --json`: {goal, labels: {plus, minus} of E_goal (+ cone(-g) with
+   *  a load), centre: {point, label, verdict, intervals, unique, shared, ...} when a centre [x, y]
+   *  is given (null: the labels only); options {gravity, wrench, forces}. */
+  planComply(goal, centre, view, options) {
     const v = momentlabView(view);
-    if (!centre || centre.length !== 2) throw new Error('centre: expected [x, y]');
-    if (!centre.every((x) => Number.isFinite(Number(x)) && momentlabInRange(Number(x)))) {
-      throw new Error('centre: out of range: each number must be 0 or of magnitude 1e-60 .. 1e60');
-    }
-    return momentlabAnswer(this._session.planComply(String(goal), Number(centre[0]), Number(centre[1]),
-                                                    v[0], v[1], v[2], v[3]));
+    const o = momentlabOptions(options, 'planComply', momentlabLoadKeys);
+    const c = centre === null ? null : momentlabPoint(centre, 'centre');
+    return momentlabAnswer(this._session.planComply(String(goal), c !== null, c ? c[0] : 0, c ? c[1] : 0,
+                                                    v[0], v[1], v[2], v[3], momentlabLoad(o)));
+  }
+  /** The force lambda * direction through point, lambda from 0 up, added to the load of options
+   *  {gravity, wrench, forces}: as `query --push X Y DX DY --json`, {point, direction, fixed,
+   *  bands: [{from, to, from_closed, to_closed, modes, verdict}]}. */
+  pushLine(point, direction, options) {
+    const p = momentlabPoint(point, 'point'), d = momentlabPoint(direction, 'direction');
+    const o = momentlabOptions(options, 'pushLine', momentlabLoadKeys);
+    return momentlabAnswer(this._session.pushLine(p[0], p[1], d[0], d[1], momentlabLoad(o)));
   }
   /** The scene in the file format (contacts written out). */
   sceneJson() {
@@ -117,8 +241,9 @@ class MomentlabAnalysis {
 /** Every mode of a scene (JSON text in the CLI's format, or an object) with its sets;
  *  options.quasiStatic neglects inertia (E = -T, no body needed). */
 Module['analyze'] = function (scene, options) {
+  const o = momentlabOptions(options, 'analyze', ['quasiStatic']);
   const text = momentlabText(scene, 'scene');
-  const session = new Module['Session'](text, Boolean(options && options.quasiStatic));
+  const session = new Module['Session'](text, Boolean(o.quasiStatic));
   const error = session.error();
   if (error) {
     session.delete();
@@ -136,8 +261,15 @@ Module['forceSetLabels'] = function (forceSet, view) {
 };
 
 /** Grasp closure of a scene's contacts, as `momentlab closure --json`: {form_closure,
- *  force_closure, form, force, reference, length, metric}. */
-Module['graspClosure'] = function (scene) {
+ *  force_closure, form, force, reference, length, metric}; options {reference: [x, y], length,
+ *  view: [xmin, ymin, xmax, ymax]} (with a view, also labels: {form, force}, the moment labels
+ *  of each test's contact wrenches cut to it). */
+Module['graspClosure'] = function (scene, options) {
+  const o = momentlabOptions(options, 'graspClosure', ['reference', 'length', 'view']);
   const text = momentlabText(scene, 'scene');
-  return momentlabAnswer(Module['closure'](text));
+  const r = o.reference === undefined ? null : momentlabPoint(o.reference, 'reference');
+  const length = o.length === undefined ? null : momentlabNumber(o.length, 'length');
+  const v = o.view === undefined ? null : momentlabView(o.view);
+  return momentlabAnswer(Module['closure'](text, r !== null, r ? r[0] : 0, r ? r[1] : 0, length !== null, length || 0,
+                                           v !== null, ...(v || [0, 0, 1, 1])));
 };

@@ -1,24 +1,23 @@
-// The library compiled to WebAssembly (docs/web.md): a Session holds one scene with its analysis
-// and compiled QueryIndex; answers leave as JSON texts (the same views as the CLI's --json, from
-// io/json_output.hpp) or JS arrays. Nothing here throws into JavaScript: a bad input is kept as
-// the CLI's one-line message, and web/src/api.js turns it into a JS Error.
+// The library compiled to WebAssembly (docs/web.md), on the application layer as the command line
+// and Python are: a Session holds one app::Problem (the scene, its analysis and query index), every
+// number a user gives is checked there (app/checks.hpp: one rule, the largest coordinate's) and
+// answers leave as the CLI's --json texts (io/json_output.hpp). Nothing here throws into
+// JavaScript: a bad input becomes {"error": the CLI's one-line message}, and web/src/api.js turns
+// it into a JS Error. api.js checks the shapes of JS values (arrays, lengths, NaN, unknown options)
+// and hands loads over as JSON text: {"gravity": [gx, gy], "wrench": [fx, fy, tau], "forces":
+// [[[x, y], [fx, fy]], ...]}, each key optional.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
-#include <cmath>
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "momentlab/app/problem.hpp"
 #include "momentlab/io/force_set_json.hpp"
 #include "momentlab/io/json_output.hpp"
 #include "momentlab/io/scene_json.hpp"
-#include "momentlab/mechanics/analysis.hpp"
-#include "momentlab/mechanics/closure.hpp"
-#include "momentlab/mechanics/query_index.hpp"
-#include "momentlab/planning/comply.hpp"
-#include "momentlab/planning/push.hpp"
-#include "momentlab/planning/tilt.hpp"
 
 namespace momentlab::web {
 namespace {
@@ -36,12 +35,23 @@ std::string guarded(F&& answer) {
     }
 }
 
-std::optional<Box> box_of(double xmin, double ymin, double xmax, double ymax) {
-    if (!std::isfinite(xmin) || !std::isfinite(ymin) || !std::isfinite(xmax) || !std::isfinite(ymax) || !(xmin < xmax) ||
-        !(ymin < ymax)) {
-        throw InputError("view", "expected a box with xmin < xmax and ymin < ymax, all finite");
+// The names of the module's inputs in messages: JavaScript's keywords.
+InputNames web_names() {
+    InputNames n;
+    n.force = "forces";
+    return n;
+}
+
+// A load from api.js's JSON text (shapes checked there; ranges by the Problem).
+Load load_of(const std::string& text) {
+    const json doc = json::parse(text);
+    Load load;
+    if (doc.contains("gravity")) load.gravity = Vec2(doc["gravity"][0], doc["gravity"][1]);
+    if (doc.contains("wrench")) load.wrench = Vec3(doc["wrench"][0], doc["wrench"][1], doc["wrench"][2]);
+    for (const json& f : doc.value("forces", json::array())) {
+        load.forces.emplace_back(Vec2(f[0][0], f[0][1]), Vec2(f[1][0], f[1][1]));
     }
-    return Box{Vec2(xmin, ymin), Vec2(xmax, ymax)};
+    return load;
 }
 
 // A region for drawing: its exact description (as the CLI writes it) and its part in the view.
@@ -55,22 +65,24 @@ json drawn(const Region& region, const Box& view) {
     return out;
 }
 
+json drawn(const Labels& labels, const Box& view) { return {{"plus", drawn(labels.plus(), view)}, {"minus", drawn(labels.minus(), view)}}; }
+
 // A force set with its labels, cut to the view: {"cone", "plus", "minus", "both"}.
 json force_set(const Cone& cone, const Box& view) {
-    const Labels labels(cone);
-    return {{"cone", to_json(cone)},
-            {"plus", drawn(labels.plus(), view)},
-            {"minus", drawn(labels.minus(), view)},
-            {"both", drawn(both_region(cone), view)}};
+    json out = drawn(Labels(cone), view);
+    out["cone"] = to_json(cone);
+    out["both"] = drawn(both_region(cone), view);
+    return out;
 }
+
+Box view_of(double xmin, double ymin, double xmax, double ymax) { return checked_view(xmin, ymin, xmax, ymax, "view"); }
 
 class Session {
 public:
     Session(const std::string& scene_text, bool quasi_static) {
         try {
-            scene_ = read_scene_text(scene_text, &warnings_);
-            analysis_ = analyze_input(scene_, "analyze", AnalysisOptions{quasi_static});
-            index_.emplace(analysis_);
+            problem_.emplace(read_scene_text(scene_text, &warnings_), quasi_static, web_names());
+            problem_->index();  // the analysis, made now: a scene it cannot analyse is refused here
         } catch (const std::exception& e) {
             error_ = e.what();
         }
@@ -84,111 +96,150 @@ public:
         return out;
     }
 
-    [[nodiscard]] val modes() const {
+    [[nodiscard]] val modes() {
         val out = val::array();
-        for (const ModeForces& m : analysis_) out.call<void>("push", m.mode.letters);
+        for (const ModeForces& m : problem_->analysis()) out.call<void>("push", m.mode.letters);
         return out;
     }
 
-    // The modes of one wrench (the caller checked it is finite).
-    [[nodiscard]] val query(double fx, double fy, double tau) const {
-        val out = val::array();
-        if (!index_) return out;
-        index_->query(Vec3(fx, fy, tau), found_);
-        for (std::size_t k : found_) out.call<void>("push", analysis_[k].mode.letters);
-        return out;
+    // The modes of one wrench and, besides it, gravity and forces at points: {"modes", "verdict"}.
+    // A wrench alone is checked and asked of the index (a drag asks many); a load with gravity or
+    // forces goes to Problem::query (exact sums).
+    [[nodiscard]] std::string query(const std::string& load_text) {
+        return guarded([&] {
+            const Load load = load_of(load_text);
+            json modes = json::array();
+            if (load.wrench && !load.gravity && load.forces.empty()) {
+                const auto& a = problem_->analysis();
+                std::vector<std::size_t> found = problem_->index().query(checked_vector(*load.wrench, "wrench")).modes;
+                std::sort(found.begin(), found.end(), [&](std::size_t x, std::size_t y) { return a[x].mode.letters < a[y].mode.letters; });
+                for (std::size_t k : found) modes.push_back(a[k].mode.letters);
+                return json{{"modes", modes}, {"verdict", to_string(verdict_of(found.size()))}};
+            }
+            const QueryAnswer answer = problem_->query(load);
+            for (const std::string& m : answer.letters) modes.push_back(m);
+            return json{{"modes", modes}, {"verdict", to_string(answer.verdict)}};
+        });
     }
 
-    // For N wrenches (3 N numbers, finite), N * modes bytes: 1 where the mode holds the wrench.
-    [[nodiscard]] val query_batch(const val& numbers) const {
+    // For N wrenches (3 N numbers, finite), N * modes bytes: 1 where the mode holds the wrench; or
+    // the error's JSON text.
+    [[nodiscard]] val query_batch(const val& numbers) {
         const std::vector<double> w = emscripten::convertJSArrayToNumberVector<double>(numbers);
-        const std::size_t n = w.size() / 3, m = analysis_.size();
+        const std::size_t n = w.size() / 3, m = problem_->analysis().size();
         std::vector<unsigned char> hits(n * m, 0);
-        for (std::size_t i = 0; i < n && index_; ++i) {
-            index_->query(Vec3(w[3 * i], w[3 * i + 1], w[3 * i + 2]), found_);
-            for (std::size_t k : found_) hits[i * m + k] = 1;
+        std::vector<std::size_t> found;
+        try {
+            for (std::size_t i = 0; i < n; ++i) {
+                const Vec3 e = checked_vector(Vec3(w[3 * i], w[3 * i + 1], w[3 * i + 2]), "wrenches[" + std::to_string(i) + "]");
+                problem_->index().query(e, found);
+                for (std::size_t k : found) hits[i * m + k] = 1;
+            }
+        } catch (const std::exception& e) {
+            return val(json{{"error", e.what()}}.dump());
         }
         return val::global("Uint8Array").new_(emscripten::typed_memory_view(hits.size(), hits.data())).call<val>("slice");
     }
 
     // One mode's sets, each with its labels cut to the view, and its rotation centres.
-    [[nodiscard]] std::string mode(const std::string& letters, double xmin, double ymin, double xmax, double ymax) const {
+    [[nodiscard]] std::string mode(const std::string& letters, double xmin, double ymin, double xmax, double ymax) {
         return guarded([&] {
-            const Box view = *box_of(xmin, ymin, xmax, ymax);
-            const ModeForces& m = find(letters);
-            const Labels centres = rotation_centres(m.mode);
+            const Box view = view_of(xmin, ymin, xmax, ymax);
+            const ModeForces& m = find_mode(problem_->analysis(), letters, "mode");
             return json{{"mode", letters},
                         {"twists", to_json(m.mode.twists)},
                         {"F", force_set(m.total, view)},
                         {"T", force_set(m.contact, view)},
                         {"E", force_set(m.applied, view)},
-                        {"centres", {{"plus", drawn(centres.plus(), view)}, {"minus", drawn(centres.minus(), view)}}}};
+                        {"centres", drawn(rotation_centres(m.mode), view)}};
         });
     }
 
-    [[nodiscard]] std::string plan_tilt(const std::string& goal) const {
+    // As `plan tilt --json`.
+    [[nodiscard]] std::string plan_tilt(const std::string& goal, const std::string& load_text) {
         return guarded([&] {
-            json out = to_json(momentlab::plan_tilt(scene_, find(goal), context()));
+            const Load load = load_of(load_text);
+            json out = to_json(problem_->plan_tilt(goal, load));
             out["goal"] = goal;
+            if (const std::optional<Exact3> fixed = problem_->wrench_of(load)) out["fixed"] = vector_json(to_double(*fixed));
             return out;
         });
     }
 
-    [[nodiscard]] std::string plan_push(const std::string& goal, double mu, bool ignore_interference) const {
+    // As `plan push --json`; edge and vertex -1 for none, slip "" for every slip.
+    [[nodiscard]] std::string plan_push(const std::string& goal, double mu, bool ignore_interference, int edge, int vertex,
+                                        const std::string& slip, const std::string& load_text) {
         return guarded([&] {
-            if (!(mu >= 0.0) || !std::isfinite(mu) || !magnitude_in_range(mu)) {
-                throw InputError("mu", "expected a finite mu >= 0 (0 or 1e-60 .. 1e60)");
-            }
-            if (!scene_.body || scene_.body->polygon.size() < 3) throw InputError("$.body.polygon", "plan push needs the body's polygon");
-            json out = {{"goal", goal}, {"mu", mu}, {"cases", json::array()}};
-            for (const PushCase& c : momentlab::plan_push(scene_, find(goal), PushOptions{mu, ignore_interference}, context())) {
-                out["cases"].push_back(to_json(c));
-            }
+            const Load load = load_of(load_text);
+            PushRequest request{mu, ignore_interference, std::nullopt, std::nullopt, std::nullopt};
+            if (edge >= 0) request.edge = static_cast<std::size_t>(edge);
+            if (vertex >= 0) request.vertex = static_cast<std::size_t>(vertex);
+            if (!slip.empty()) request.slip = contact_mode(slip[0]);
+            json out = {{"goal", goal},
+                        {"mu", mu},
+                        {"interference", ignore_interference ? "ignored" : "considered"},
+                        {"cases", json::array()}};
+            for (const PushCase& c : problem_->plan_push(goal, request, load)) out["cases"].push_back(to_json(c));
+            if (const std::optional<Exact3> fixed = problem_->wrench_of(load)) out["fixed"] = vector_json(to_double(*fixed));
             return out;
         });
     }
 
-    [[nodiscard]] std::string plan_comply(const std::string& goal, double x, double y, double xmin, double ymin,
-                                          double xmax, double ymax) const {
+    // As `plan comply --json` ({"goal", "labels", "centre" when given}), the labels cut to the view.
+    [[nodiscard]] std::string plan_comply(const std::string& goal, bool has_centre, double x, double y, double xmin, double ymin,
+                                          double xmax, double ymax, const std::string& load_text) {
         return guarded([&] {
-            const Box view = *box_of(xmin, ymin, xmax, ymax);
-            if (!std::isfinite(x) || !std::isfinite(y)) throw InputError("centre", "expected finite numbers");
-            const ModeForces& g = find(goal);
-            const Labels labels = compliance_labels(g);
-            return json{{"goal", goal},
-                        {"labels", {{"plus", drawn(labels.plus(), view)}, {"minus", drawn(labels.minus(), view)}}},
-                        {"centre", to_json(momentlab::plan_comply(g, Vec2(x, y), context()))}};
+            const Box view = view_of(xmin, ymin, xmax, ymax);
+            const ComplyAnswer answer =
+                problem_->plan_comply(goal, has_centre ? std::optional<Vec2>(Vec2(x, y)) : std::nullopt, load_of(load_text));
+            json out = {{"goal", goal}, {"labels", drawn(answer.labels, view)}};
+            if (answer.centre) out["centre"] = to_json(*answer.centre);
+            return out;
         });
     }
 
-    [[nodiscard]] std::string scene_json() const { return to_json(scene_).dump(); }
+    // As `query --push X Y DX DY --json`: the bands of magnitudes of the force along a line.
+    [[nodiscard]] std::string push_line(double x, double y, double dx, double dy, const std::string& load_text) {
+        return guarded([&] {
+            const Load load = load_of(load_text);
+            const std::vector<MagnitudeBand> bands = problem_->push_line(Vec2(x, y), Vec2(dx, dy), load);
+            const Exact3 fixed = problem_->wrench_of(load).value_or(Exact3{});
+            return json{{"point", vector_json(Vec2(x, y))},
+                        {"direction", vector_json(Vec2(dx, dy))},
+                        {"fixed", vector_json(to_double(fixed))},
+                        {"bands", to_json(bands, problem_->analysis())}};
+        });
+    }
+
+    [[nodiscard]] std::string scene_json() const { return to_json(problem_->scene()).dump(); }
 
 private:
-    const ModeForces& find(const std::string& letters) const { return find_mode(analysis_, letters, "mode"); }
-    // As the CLI plans: told every mode (unique and shared) and the margins' metric.
-    [[nodiscard]] PlanContext context() const {
-        PlanContext c;
-        c.modes = analysis_;
-        c.metric = default_metric(scene_);
-        return c;
-    }
-
-    Scene scene_;
-    std::vector<ModeForces> analysis_;
-    std::optional<QueryIndex> index_;
+    std::optional<Problem> problem_;
     InputWarnings warnings_;
     std::string error_;
-    mutable std::vector<std::size_t> found_;
 };
 
-// Grasp closure of a scene's contacts (the body optional), as `momentlab closure --json`.
-std::string closure_of(const std::string& scene_text) {
-    return guarded([&] { return to_json(closure(read_scene_text(scene_text))); });
+// Grasp closure of a scene's contacts (the body optional), as `momentlab closure --json`; with a
+// view, "labels": the moment labels of the form and force tests' contact wrenches cut to it.
+std::string closure_of(const std::string& scene_text, bool has_reference, double rx, double ry, bool has_length, double length,
+                       bool has_view,
+                       double xmin, double ymin, double xmax, double ymax) {
+    return guarded([&] {
+        const Problem problem(read_scene_text(scene_text), true, web_names());
+        const Closure c = problem.closure(has_reference ? std::optional<Vec2>(Vec2(rx, ry)) : std::nullopt,
+                                          !has_length ? std::nullopt : std::optional<double>(length));
+        json out = to_json(c);
+        if (has_view) {
+            const Box view = view_of(xmin, ymin, xmax, ymax);
+            out["labels"] = {{"form", force_set(c.form.wrenches, view)}, {"force", force_set(c.force.wrenches, view)}};
+        }
+        return out;
+    });
 }
 
 // The labels of a force set in the format of `momentlab label` (docs/formats.md), cut to a view.
 std::string labels(const std::string& text, double xmin, double ymin, double xmax, double ymax) {
-    return guarded([&] { return force_set(read_force_set_text(text), *box_of(xmin, ymin, xmax, ymax)); });
+    return guarded([&] { return force_set(read_force_set_text(text), view_of(xmin, ymin, xmax, ymax)); });
 }
 
 }  // namespace
@@ -207,6 +258,7 @@ EMSCRIPTEN_BINDINGS(momentlab) {
         .function("planTilt", &Session::plan_tilt)
         .function("planPush", &Session::plan_push)
         .function("planComply", &Session::plan_comply)
+        .function("pushLine", &Session::push_line)
         .function("sceneJson", &Session::scene_json);
     emscripten::function("labels", &labels);
     emscripten::function("closure", &closure_of);
