@@ -13,8 +13,11 @@
 
 namespace momentlab::assembly_detail {
 
-using Integer = boost::multiprecision::cpp_int;
-using Rational = boost::multiprecision::cpp_rational;
+// Without expression templates: the programs are written once for Interval and Rational, and
+// each operation gives a number.
+using Integer = boost::multiprecision::number<boost::multiprecision::cpp_int_backend<>, boost::multiprecision::et_off>;
+using Rational = boost::multiprecision::number<boost::multiprecision::rational_adaptor<boost::multiprecision::cpp_int_backend<>>,
+                                               boost::multiprecision::et_off>;
 
 /// The double x exactly (x finite).
 [[nodiscard]] Rational exact_value(double x);
