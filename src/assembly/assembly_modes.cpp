@@ -62,26 +62,38 @@ private:
         for (char letter : {'f', 's', 'r', 'l'}) search(prefix + letter, modes);
     }
 
-    // A program with one more row, x_i (times sign) minus a strict slack = 0: some point of the
-    // program has sign * x_i > 0.
+    // A program with one more row, x_i (times sign) minus a strict slack = 0, and only that
+    // slack strict: some point of the program has sign * x_i > 0.
     template <class T>
     static Program<T> with_moving_coordinate(Program<T> p, Index i, int sign) {
         const Index row = p.rows++;
         p.rhs.push_back(number<T>(0.0));
         p.columns[i].push_back({row, number<T>(sign)});
+        for (std::size_t j = 0; j < p.strict.size(); ++j) p.strict[j] = false;
         p.add({{row, number<T>(-1.0)}}, false, true);
-        return p;
-    }
-    template <class T>
-    static Program<T> only_new_strict(Program<T> p) {
-        for (std::size_t j = 0; j + 1 < p.strict.size(); ++j) p.strict[j] = false;
         return p;
     }
 
     // Accelerations in the mode's open cell with the loads balanced and some body moving. With a
     // letter s, r or l the open cell excludes x = 0; the all-f mode needs a coordinate of x that
     // can be non-zero: first in the kinematics (homogeneous), then with the loads.
+    // With an equilibrium of normal forces alone (-G = sum nu_j N_j, nu >= 0) nothing can move
+    // from rest, whatever the friction: a motion x from rest has x^T M x = G . x + (the contact
+    // forces' power on x), where the power is 0 at s and f and <= 0 at r and l (friction opposes
+    // sliding), and G . x = -sum nu_j N_j . d_j <= 0 since every N_j . d_j >= 0 in the closure;
+    // so x^T M x <= 0 and x = 0 (docs/assemblies.md).
+    bool frictionless_equilibrium() {
+        if (!frictionless_) {
+            const FeasibilityAnswer a = decide(equilibrium_program(d_, gx_, gy_, nullptr, true), [&] {
+                return equilibrium_program(exact(), egx(), egy(), nullptr, true);
+            });
+            frictionless_ = a.status != Feasibility::Infeasible;
+        }
+        return *frictionless_;
+    }
+
     bool has_motion(const std::string& letters) {
+        if (frictionless_equilibrium()) return false;
         if (letters.find_first_not_of('f') != std::string::npos) {
             const FeasibilityAnswer a = decide(loads_program(d_, gx_, gy_, letters, true),
                                                [&] { return loads_program(exact(), egx(), egy(), letters, true); });
@@ -93,10 +105,10 @@ private:
                     return with_moving_coordinate(kinematic_program(exact(), letters), i, sign);
                 });
                 if (k.status != Feasibility::StrictlyFeasible) continue;
-                const FeasibilityAnswer l = decide(
-                    only_new_strict(with_moving_coordinate(loads_program(d_, gx_, gy_, letters, true), i, sign)), [&] {
-                        return only_new_strict(with_moving_coordinate(loads_program(exact(), egx(), egy(), letters, true), i, sign));
-                    });
+                const std::optional<std::pair<Index, int>> moving{{i, sign}};
+                const FeasibilityAnswer l = decide(loads_program(d_, gx_, gy_, letters, true, moving), [&] {
+                    return loads_program(exact(), egx(), egy(), letters, true, moving);
+                });
                 if (l.status == Feasibility::StrictlyFeasible) return true;
             }
         }
@@ -108,6 +120,7 @@ private:
     AssemblyData<Interval> d_;
     std::optional<AssemblyData<Rational>> exact_;
     Interval gx_, gy_;
+    std::optional<bool> frictionless_;
 };
 
 }  // namespace

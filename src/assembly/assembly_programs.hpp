@@ -12,7 +12,9 @@
 // relative twist at contact j is d_j = x_a - x_b (x_0 = 0), its normal velocity N_j . d_j and
 // tangential velocity T_j . d_j. Forces: a column per edge, +w on body a's rows, -w on b's.
 
+#include <algorithm>
 #include <array>
+#include <optional>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -49,6 +51,24 @@ bool is_zero_number(const T& v) {
     }
 }
 
+/// Entries of one column in one row added into one (a force can reach a row through both of
+/// its contact's bodies); exact zeros dropped.
+template <class T>
+void merge_repeated_entries(Program<T>& p) {
+    for (SparseColumn<T>& column : p.columns) {
+        SparseColumn<T> merged;
+        for (SparseEntry<T>& e : column) {
+            if (!merged.empty() && merged.back().index == e.index) {
+                merged.back().value = merged.back().value + e.value;
+            } else {
+                merged.push_back(std::move(e));
+            }
+        }
+        std::erase_if(merged, [](const SparseEntry<T>& e) { return is_zero_number(e.value); });
+        column = std::move(merged);
+    }
+}
+
 /// The force (fx, fy) through (px, py) as a wrench.
 template <class T>
 Wrench<T> force_wrench(const T& px, const T& py, const T& fx, const T& fy) {
@@ -65,14 +85,19 @@ struct ContactData {
     Wrench<T> slide_r, slide_l;
     /// mu_k > mu: the kinetic forces lie outside the static cone.
     bool kinetic_outside = false;
+    /// Earlier contacts of the same pair whose normal (tangent) wrench is exactly this one's: the
+    /// same equation when both are closed (fixed), decided from the numbers as read.
+    std::vector<Index> same_normal, same_tangent;
 };
 
 template <class T>
 struct BodyData {
     /// The gravity wrenches of gravity (1, 0) and (0, 1): (m, 0, -m c.y) and (0, m, m c.x).
     Wrench<T> gravity_x, gravity_y;
-    /// M at the origin (when the body has an inertia).
-    std::array<Wrench<T>, 3> inertia;
+    /// M at the origin and its inverse, (1/m + c.y^2/I, -c.x c.y/I, c.y/I; -c.x c.y/I,
+    /// 1/m + c.x^2/I, -c.x/I; c.y/I, -c.x/I, 1/I) with I the inertia about the centre of mass
+    /// (when the body has one).
+    std::array<Wrench<T>, 3> inertia, inverse_inertia;
     bool has_inertia = false;
 };
 
@@ -98,6 +123,11 @@ AssemblyData<T> assembly_data(const Assembly& assembly) {
                                         : number<T>(*b.inertia);
             const T io = ic + m * (cx * cx + cy * cy);
             out.inertia = {Wrench<T>{m, zero, zero - m * cy}, Wrench<T>{zero, m, m * cx}, Wrench<T>{zero - m * cy, m * cx, io}};
+            const T one = number<T>(1.0);
+            const T im = one / m, ii = one / ic;
+            out.inverse_inertia = {Wrench<T>{im + cy * cy * ii, zero - cx * cy * ii, cy * ii},
+                                   Wrench<T>{zero - cx * cy * ii, im + cx * cx * ii, zero - cx * ii},
+                                   Wrench<T>{cy * ii, zero - cx * ii, ii}};
             out.has_inertia = true;
         }
         d.body.push_back(std::move(out));
@@ -122,6 +152,17 @@ AssemblyData<T> assembly_data(const Assembly& assembly) {
         out.slide_r = edge(number<T>(0.0) - muk);
         out.slide_l = edge(muk);
         out.kinetic_outside = c.mu_kinetic > c.mu;
+        // Same pair and same normal as an earlier contact: the wrenches are equal exactly when
+        // p x n (for N) or p . n (for T = (t, -p . n)) are; an interval that is a point decides.
+        for (Index k = 0; k < d.contacts.size(); ++k) {
+            const AssemblyContact& o = assembly.contacts[k];
+            if (o.a != ac.a || o.b != ac.b || o.contact.normal != c.normal) continue;
+            const Interval n0(c.normal.x()), n1(c.normal.y());
+            const Interval dx = Interval(c.point.x()) - Interval(o.contact.point.x());
+            const Interval dy = Interval(c.point.y()) - Interval(o.contact.point.y());
+            if (is_exact_zero(dx * n1 - dy * n0)) out.same_normal.push_back(k);
+            if (is_exact_zero(dx * n0 + dy * n1)) out.same_tangent.push_back(k);
+        }
         d.contacts.push_back(std::move(out));
     }
     return d;
@@ -171,9 +212,10 @@ struct ForceColumn {
 
 /// Equilibrium: sum over edges lambda_e (+w_e on a, -w_e on b) = -G, lambda >= 0 (all strict:
 /// the margin helps the certificate; feasibility is the question). Rows 3(k-1).. of body k.
+/// `frictionless`: the normal forces alone.
 template <class T>
 Program<T> equilibrium_program(const AssemblyData<T>& d, const T& gx, const T& gy,
-                               std::vector<ForceColumn>* columns = nullptr) {
+                               std::vector<ForceColumn>* columns = nullptr, bool frictionless = false) {
     ProgramAssembler<T> pa;
     for (Index k = 0; k < d.bodies; ++k) {
         for (Index r = 0; r < 3; ++r) {
@@ -182,6 +224,10 @@ Program<T> equilibrium_program(const AssemblyData<T>& d, const T& gx, const T& g
     }
     for (Index j = 0; j < d.contacts.size(); ++j) {
         const ContactData<T>& c = d.contacts[j];
+        if (frictionless) {
+            pa.put_force(0, pa.column(true), c, c.normal, 1);
+            continue;
+        }
         for (Index e = 0; e < c.cone.size(); ++e) {
             const Index col = pa.column(true);
             pa.put_force(0, col, c, c.cone[e], 1);
@@ -232,13 +278,21 @@ template <class T>
 Program<T> kinematic_program(const AssemblyData<T>& d, const std::string& letters) {
     ProgramAssembler<T> pa(3 * d.bodies);
     const T zero = number<T>(0.0), minus_one = number<T>(-1.0);
+    const auto closed = [&](Index k) { return k < letters.size() && letters[k] != 's'; };
+    const auto fixed = [&](Index k) { return k < letters.size() && letters[k] == 'f'; };
     for (Index j = 0; j < d.contacts.size(); ++j) {
         const ContactData<T>& c = d.contacts[j];
         const char letter = j < letters.size() ? letters[j] : '?';
-        const Index n = pa.row(zero);
-        pa.put_relative(n, c, c.normal);
-        if (letter == 's' || letter == '?') pa.put(n, pa.column(letter == 's'), minus_one);
+        // An equation that an earlier row already states is left out (a dependent row would keep
+        // an artificial in the basis and send the decision to the exact path).
+        const bool normal_stated = closed(j) && std::any_of(c.same_normal.begin(), c.same_normal.end(), closed);
+        if (!normal_stated) {
+            const Index n = pa.row(zero);
+            pa.put_relative(n, c, c.normal);
+            if (letter == 's' || letter == '?') pa.put(n, pa.column(letter == 's'), minus_one);
+        }
         if (letter == 'f' || letter == 'r' || letter == 'l') {
+            if (letter == 'f' && std::any_of(c.same_tangent.begin(), c.same_tangent.end(), fixed)) continue;
             const Index t = pa.row(zero);
             pa.put_relative(t, c, c.tangent);
             if (letter != 'f') pa.put(t, pa.column(true), number<T>(letter == 'r' ? -1.0 : 1.0));
@@ -247,46 +301,116 @@ Program<T> kinematic_program(const AssemblyData<T>& d, const std::string& letter
     return pa.take();
 }
 
-/// The loads: M_k x_k - (contact wrenches on k) = G_k for every body, with x in the closure of
-/// the letters' cell (the kinematic rows, non-strict) and each contact's force in its letter's
-/// set: s none, f the friction cone, r the ray n - mu_k t, l the ray n + mu_k t; an unassigned
-/// contact any of them (the cone of all four edges): a relaxation for the prefixes. With
-/// `open_cell` the kinematic slacks of s, r, l are strict (a motion from rest) and nothing else;
-/// otherwise every bounded column is marked strict, only so that the certificate has a margin
-/// when there is one (feasible either way is the answer).
+/// The accelerations eliminated: x_k = M_k^-1 (G_k + F_k), F_k the contact wrenches on body k
+/// (each force column +w on its contact's body a, -w on b). An affine function of the forces:
+/// a row of coefficients per force column and a constant, for a functional v on relative twists.
 template <class T>
-Program<T> loads_program(const AssemblyData<T>& d, const T& gx, const T& gy, const std::string& letters, bool open_cell) {
-    const bool strict = true;  // the slacks of s, r, l: strict in both uses
-    const bool margin = !open_cell;
-    ProgramAssembler<T> pa(3 * d.bodies);
-    const T zero = number<T>(0.0), minus_one = number<T>(-1.0);
-    for (Index k = 0; k < d.bodies; ++k) {
-        for (Index r = 0; r < 3; ++r) {
-            const Index row = pa.row(gx * d.body[k].gravity_x[r] + gy * d.body[k].gravity_y[r]);
-            for (Index q = 0; q < 3; ++q) pa.put(row, 3 * k + q, d.body[k].inertia[r][q]);
-        }
-    }
+struct AffineRow {
+    std::vector<std::pair<Index, T>> coefficients;  // (force column, value)
+    T constant;
+};
+
+/// The loads: M_k x_k = G_k + (the contact wrenches on body k) for every body, the accelerations
+/// eliminated (M_k is invertible), with x in the closure of the letters' cell (the kinematic rows
+/// in the forces) and each contact's force in its letter's set: s none, f the friction cone, r
+/// the ray n - mu_k t, l the ray n + mu_k t; an unassigned contact any of them (the cone of all
+/// four edges): a relaxation for the prefixes. With `open_cell` the kinematic slacks of s, r, l
+/// are strict (a motion from rest) and nothing else; otherwise every column is marked strict,
+/// only so that a certificate has a margin when there is one (feasible either way is the answer).
+/// With `moving` = (i, sign), one more row: sign * x_i minus a strict slack (and then only that
+/// slack is strict): a motion with sign * x_i > 0.
+template <class T>
+Program<T> loads_program(const AssemblyData<T>& d, const T& gx, const T& gy, const std::string& letters, bool open_cell,
+                         std::optional<std::pair<Index, int>> moving = std::nullopt) {
+    const T zero = number<T>(0.0);
+    const bool margin = !open_cell && !moving;
+    // The force columns: contact, wrench.
+    struct Force {
+        Index contact;
+        const Wrench<T>* w;
+    };
+    std::vector<Force> forces;
     for (Index j = 0; j < d.contacts.size(); ++j) {
         const ContactData<T>& c = d.contacts[j];
         const char letter = j < letters.size() ? letters[j] : '?';
-        const Index n = pa.row(zero);
-        pa.put_relative(n, c, c.normal);
-        if (letter == 's' || letter == '?') pa.put(n, pa.column((strict && letter == 's') || margin), minus_one);
-        if (letter == 'f' || letter == 'r' || letter == 'l') {
-            const Index t = pa.row(zero);
-            pa.put_relative(t, c, c.tangent);
-            if (letter != 'f') pa.put(t, pa.column(strict), number<T>(letter == 'r' ? -1.0 : 1.0));
-        }
-        // Forces: minus on a's dynamics rows (M x = G + contact wrenches).
-        std::vector<const Wrench<T>*> forces;
         if (letter == 'f' || letter == '?') {
-            for (const Wrench<T>& w : c.cone) forces.push_back(&w);
+            for (const Wrench<T>& w : c.cone) forces.push_back({j, &w});
         }
-        if (letter == 'r' || (letter == '?' && c.kinetic_outside)) forces.push_back(&c.slide_r);
-        if (letter == 'l' || (letter == '?' && c.kinetic_outside)) forces.push_back(&c.slide_l);
-        for (const Wrench<T>* w : forces) pa.put_force(0, pa.column(margin), c, *w, -1);
+        if (letter == 'r' || (letter == '?' && c.kinetic_outside)) forces.push_back({j, &c.slide_r});
+        if (letter == 'l' || (letter == '?' && c.kinetic_outside)) forces.push_back({j, &c.slide_l});
     }
-    return pa.take();
+    // The force columns touching each body, with their signs.
+    std::vector<std::vector<std::pair<Index, int>>> on_body(d.bodies + 1);
+    for (Index f = 0; f < forces.size(); ++f) {
+        const ContactData<T>& c = d.contacts[forces[f].contact];
+        on_body[c.a].push_back({f, 1});
+        if (c.b != 0) on_body[c.b].push_back({f, -1});
+    }
+    const auto dot3 = [&](const Wrench<T>& a, const Wrench<T>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    const auto times_inverse = [&](Index body, const Wrench<T>& v) {  // M^-1 v (symmetric)
+        const auto& mi = d.body[body - 1].inverse_inertia;
+        return Wrench<T>{dot3(mi[0], v), dot3(mi[1], v), dot3(mi[2], v)};
+    };
+    const auto gravity = [&](Index body) {
+        const BodyData<T>& b = d.body[body - 1];
+        return Wrench<T>{gx * b.gravity_x[0] + gy * b.gravity_y[0], gx * b.gravity_x[1] + gy * b.gravity_y[1],
+                         gx * b.gravity_x[2] + gy * b.gravity_y[2]};
+    };
+    // v . x_body as an affine function of the forces, added with `sign` into `row`.
+    const auto add_functional = [&](AffineRow<T>& row, Index body, const Wrench<T>& v, int sign) {
+        if (body == 0) return;
+        const Wrench<T> u = times_inverse(body, v);
+        const T g = dot3(u, gravity(body));
+        row.constant = sign > 0 ? row.constant + g : row.constant - g;
+        for (const auto& [f, s] : on_body[body]) {
+            const T value = dot3(u, *forces[f].w);
+            row.coefficients.push_back({f, s * sign > 0 ? value : zero - value});
+        }
+    };
+    ProgramAssembler<T> pa;
+    // Force columns first, in the order above.
+    for (Index f = 0; f < forces.size(); ++f) (void)pa.column(margin);
+    // A row: coefficients . lambda + slack_sign * slack = -constant.
+    const auto put_row = [&](const AffineRow<T>& r, int slack_sign, bool strict_slack) {
+        const Index row = pa.row(zero - r.constant);
+        for (const auto& [f, v] : r.coefficients) pa.put(row, f, v);  // a column twice in a row: merged below
+        if (slack_sign != 0) pa.put(row, pa.column(strict_slack || margin), number<T>(static_cast<double>(slack_sign)));
+    };
+    const auto closed = [&](Index k) { return k < letters.size() && letters[k] != 's'; };
+    const auto fixed = [&](Index k) { return k < letters.size() && letters[k] == 'f'; };
+    for (Index j = 0; j < d.contacts.size(); ++j) {
+        const ContactData<T>& c = d.contacts[j];
+        const char letter = j < letters.size() ? letters[j] : '?';
+        // Equations an earlier row states are left out, as in kinematic_program.
+        if (!(closed(j) && std::any_of(c.same_normal.begin(), c.same_normal.end(), closed))) {
+            AffineRow<T> n{{}, zero};
+            add_functional(n, c.a, c.normal, 1);
+            add_functional(n, c.b, c.normal, -1);
+            // s and unassigned: N . d - s = 0 (s >= 0); f, r, l: N . d = 0.
+            put_row(n, (letter == 's' || letter == '?') ? -1 : 0, letter == 's');
+        }
+        if (letter == 'f' && std::any_of(c.same_tangent.begin(), c.same_tangent.end(), fixed)) continue;
+        if (letter == 'f' || letter == 'r' || letter == 'l') {
+            AffineRow<T> t{{}, zero};
+            add_functional(t, c.a, c.tangent, 1);
+            add_functional(t, c.b, c.tangent, -1);
+            put_row(t, letter == 'f' ? 0 : (letter == 'r' ? -1 : 1), true);
+        }
+    }
+    if (moving) {
+        const Index body = moving->first / 3 + 1;
+        Wrench<T> unit{zero, zero, zero};
+        unit[moving->first % 3] = number<T>(1.0);
+        AffineRow<T> x{{}, zero};
+        add_functional(x, body, unit, moving->second);
+        put_row(x, -1, true);
+    }
+    Program<T> p = pa.take();
+    merge_repeated_entries(p);
+    if (moving) {
+        for (std::size_t j = 0; j + 1 < p.strict.size(); ++j) p.strict[j] = false;
+    }
+    return p;
 }
 
 }  // namespace momentlab::assembly_detail

@@ -231,6 +231,93 @@ bool homogeneous(const Scaled<Interval>& s) {
     return std::all_of(s.rhs.begin(), s.rhs.end(), [](const Interval& b) { return is_exact_zero(b); });
 }
 
+// A Farkas vector with room: max tau over y . A_j + tau + sigma_j = 0 (sigma_j >= 0) for every
+// column, y . b = 1, tau in [0, 1], in doubles; a y with tau > 0 has y . A_j < 0 for every column
+// with room to spare, so its rounding is checked in intervals (each y_i a double, exactly). Only
+// for programs without free columns (y . A_j = 0 cannot be checked on a rounded y). This is the
+// certificate when the basis's own y is degenerate: columns with y . A_j exactly 0, whose
+// intervals hold 0.
+std::optional<std::vector<double>> farkas_with_room(const Scaled<Interval>& s) {
+    const auto n = static_cast<std::uint32_t>(s.columns.size());
+    for (std::uint32_t j = 0; j < n; ++j) {
+        if (s.free[j]) return std::nullopt;
+    }
+    const std::uint32_t skip = s.t ? *s.t : n;
+    DoubleProgram d;
+    d.rows = 0;
+    std::vector<std::uint32_t> row_of(n, 0);
+    for (std::uint32_t j = 0; j < n; ++j) {
+        if (j != skip) row_of[j] = d.rows++;
+    }
+    const std::uint32_t normalisation = d.rows++;
+    d.rhs.assign(d.rows, 0.0);
+    d.rhs[normalisation] = 1.0;
+    d.columns.resize(s.rows + 1);
+    for (std::uint32_t j = 0; j < n; ++j) {  // y_i: column i holds A_ij in row j
+        if (j == skip) continue;
+        for (const SparseEntry<Interval>& e : s.columns[j]) d.columns[e.index].push_back({row_of[j], e.value.mid()});
+    }
+    for (std::uint32_t i = 0; i < s.rows; ++i) {
+        if (!is_exact_zero(s.rhs[i])) d.columns[i].push_back({normalisation, s.rhs[i].mid()});
+        std::sort(d.columns[i].begin(), d.columns[i].end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+    }
+    for (std::uint32_t j = 0; j < n; ++j) {  // tau, then the slacks
+        if (j != skip) d.columns[s.rows].push_back({row_of[j], 1.0});
+    }
+    for (std::uint32_t j = 0; j < n; ++j) {
+        if (j != skip) d.columns.push_back({{row_of[j], 1.0}});
+    }
+    d.lower.assign(d.columns.size(), 0.0);
+    d.upper.assign(d.columns.size(), kInfinity);
+    for (std::uint32_t i = 0; i < s.rows; ++i) d.lower[i] = -kInfinity;
+    d.upper[s.rows] = 1.0;
+    d.cost.assign(d.columns.size(), 0.0);
+    d.cost[s.rows] = -1.0;
+    const SimplexResult r = simplex(d);
+    if (r.status != SimplexStatus::Optimal || !(r.x[s.rows] > 1e-9)) return std::nullopt;
+    std::vector<Interval> y;
+    for (std::uint32_t i = 0; i < s.rows; ++i) y.emplace_back(r.x[i]);
+    SparseColumn<Interval> b;
+    for (std::uint32_t i = 0; i < s.rows; ++i) b.push_back({i, s.rhs[i]});
+    if (!dot(y, b).positive()) return std::nullopt;
+    for (std::uint32_t j = 0; j < n; ++j) {
+        if (j != skip && !dot(y, s.columns[j]).negative()) return std::nullopt;
+    }
+    std::vector<double> out(r.x.begin(), r.x.begin() + s.rows);
+    return out;
+}
+
+// The rows whose dual is not negligible, when they are fewer than all (a guess: the decision on
+// them is exact).
+std::optional<std::vector<std::uint32_t>> dual_support(const std::vector<double>& y, std::uint32_t rows) {
+    double largest = 0.0;
+    for (double v : y) largest = std::max(largest, std::abs(v));
+    std::vector<std::uint32_t> kept;
+    for (std::uint32_t i = 0; i < rows; ++i) {
+        if (std::abs(y[i]) > 1e-9 * largest) kept.push_back(i);
+    }
+    if (kept.empty() || kept.size() == rows) return std::nullopt;
+    return kept;
+}
+
+// The program on the given rows only, without the columns left empty.
+template <class T>
+Program<T> restricted(const Program<T>& p, const std::vector<std::uint32_t>& rows) {
+    std::vector<std::int64_t> index(p.rows, -1);
+    for (std::size_t k = 0; k < rows.size(); ++k) index[rows[k]] = static_cast<std::int64_t>(k);
+    Program<T> out;
+    out.rows = static_cast<std::uint32_t>(rows.size());
+    for (std::uint32_t i : rows) out.rhs.push_back(p.rhs[i]);
+    for (std::size_t j = 0; j < p.columns.size(); ++j) {
+        SparseColumn<T> column;
+        for (const SparseEntry<T>& e : p.columns[j]) {
+            if (index[e.index] >= 0) column.push_back({static_cast<std::uint32_t>(index[e.index]), e.value});
+        }
+        if (!column.empty()) out.add(std::move(column), p.free[j], p.strict[j]);
+    }
+    return out;
+}
+
 }  // namespace
 
 LpCounts& lp_counts() {
@@ -269,6 +356,12 @@ FeasibilityAnswer decide(const Program<Interval>& enclosures, const ExactBuilder
                 return answer;
             }
         }
+        if (const auto y = farkas_with_room(s)) {
+            ++lp_counts().certified;
+            answer.status = Feasibility::Infeasible;
+            answer.farkas = unscale_duals(*y, sc);
+            return answer;
+        }
     } else if (r.status == SimplexStatus::Optimal) {
         const bool margin = !s.t || r.x[*s.t] > 1e-12;
         if (margin) {
@@ -302,6 +395,20 @@ FeasibilityAnswer decide(const Program<Interval>& enclosures, const ExactBuilder
                     ++lp_counts().certified;
                     answer.status = Feasibility::Feasible;
                     answer.point.assign(enclosures.columns.size(), 0.0);
+                    return answer;
+                }
+            }
+            // The duals are degenerate (reduced costs exactly 0 that the intervals cannot sign):
+            // the rows the duals use, alone, are a relaxation; without a strict point there is
+            // none here either (a strict point here is one there), and its certificate is often
+            // not degenerate.
+            if (const auto rows = dual_support(r.y, s.rows)) {
+                const FeasibilityAnswer relaxed =
+                    decide(restricted(enclosures, *rows), [&] { return restricted(exact(), *rows); });
+                if (relaxed.status == Feasibility::Feasible) {
+                    answer.status = Feasibility::Feasible;
+                    answer.point.assign(enclosures.columns.size(), 0.0);
+                    answer.exact_path = relaxed.exact_path;
                     return answer;
                 }
             }
