@@ -207,6 +207,27 @@ TEST(LinearProgram, FeasibilityAgreesWithCddOnRandomPrograms) {
                 infeasible, strictly, boundary, lp_counts().certified, lp_counts().exact);
 }
 
+// The doubles see the midpoints only: a . x = 1 with a in [-1, 1/2] (exactly 1/2) looks infeasible
+// with room (a's midpoint is -1/4), but a sign is read only from an interval that excludes 0, so
+// neither Farkas certificate holds and the exact path finds x = 2.
+TEST(LinearProgram, MidpointsThatLookInfeasibleAreCheckedInIntervals) {
+    Program<Interval> enclosures;
+    enclosures.rows = 1;
+    enclosures.rhs = {Interval(1.0)};
+    enclosures.add({{0, Interval(-1.0, 0.5)}});
+    const FeasibilityAnswer a = decide(enclosures, [] {
+        Program<Rational> p;
+        p.rows = 1;
+        p.rhs = {Rational(1)};
+        p.add({{0, Rational(1) / 2}});
+        return p;
+    });
+    EXPECT_EQ(a.status, Feasibility::StrictlyFeasible);
+    EXPECT_TRUE(a.exact_path);
+    ASSERT_EQ(a.point.size(), 1U);
+    EXPECT_EQ(a.point[0], 2.0);
+}
+
 TEST(LinearProgram, OptimaAgreeWithCddOnRandomPrograms) {
     Rng r(777);
     int optimal = 0, unbounded = 0, infeasible = 0;
