@@ -25,6 +25,7 @@ std::function<int()> add_analyze_command(CLI::App& app);
 std::function<int()> add_draw_command(CLI::App& app);
 std::function<int()> add_plan_command(CLI::App& app);
 std::function<int()> add_closure_command(CLI::App& app);
+std::function<int()> add_stand_command(CLI::App& app);
 
 // ---------------------------------------------------------------------------------------------
 // Input files.

@@ -18,7 +18,7 @@
 
 namespace {
 
-constexpr const char* kCommands[] = {"label", "modes", "query", "analyze", "draw", "plan", "closure"};
+constexpr const char* kCommands[] = {"label", "modes", "query", "analyze", "draw", "plan", "closure", "stand"};
 
 int fail(const std::string& message) {
     std::cerr << "momentlab: " << momentlab::cli::printable(message) << "\n";
@@ -95,12 +95,13 @@ int main(int argc, char** argv) {
     const auto run_draw = momentlab::cli::add_draw_command(app);
     const auto run_plan = momentlab::cli::add_plan_command(app);
     const auto run_closure = momentlab::cli::add_closure_command(app);
+    const auto run_stand = momentlab::cli::add_stand_command(app);
     if (argc >= 2 && argv[1][0] != '-') {
         bool known = false;
         for (const char* c : kCommands) known = known || std::strcmp(argv[1], c) == 0;
         if (!known) {
             return fail(std::string("unknown command \"") + argv[1] +
-                        "\" (expected label, modes, query, analyze, draw, plan or closure; see momentlab --help)");
+                        "\" (expected label, modes, query, analyze, draw, plan, closure or stand; see momentlab --help)");
         }
     }
     try {
@@ -121,6 +122,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("draw")) status = run_draw();
         if (app.got_subcommand("plan")) status = run_plan();
         if (app.got_subcommand("closure")) status = run_closure();
+        if (app.got_subcommand("stand")) status = run_stand();
         return finish(status);
     } catch (const std::invalid_argument& e) {
         return fail(e.what());

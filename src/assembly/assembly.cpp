@@ -1,0 +1,160 @@
+#include "momentlab/assembly/assembly.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "momentlab/geometry/polygon.hpp"
+#include "momentlab/io/input_error.hpp"
+
+namespace momentlab {
+namespace {
+
+std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+bool finite(const Vec2& v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }
+
+struct Box {
+    Vec2 lo, hi;
+};
+
+Box box_of(const Polygon& p, double margin) {
+    Box b{p.front(), p.front()};
+    for (const Vec2& v : p) {
+        b.lo = b.lo.cwiseMin(v);
+        b.hi = b.hi.cwiseMax(v);
+    }
+    b.lo.array() -= margin;
+    b.hi.array() += margin;
+    return b;
+}
+
+bool boxes_meet(const Box& a, const Box& b) {
+    return a.lo.x() <= b.hi.x() && b.lo.x() <= a.hi.x() && a.lo.y() <= b.hi.y() && b.lo.y() <= a.hi.y();
+}
+
+// A margin beyond the contact distance for the boxes (their coordinates are rounded: the exact
+// tests decide).
+double box_margin(double distance) { return distance * 2.0 + 1e-9; }
+
+}  // namespace
+
+Assembly assembly_of(const Scene& scene) {
+    if (!scene.body) throw std::invalid_argument("the scene has no body (an assembly needs its mass and centre of mass)");
+    Assembly a;
+    AssemblyBody b;
+    b.mass = scene.body->mass;
+    b.com = scene.body->com;
+    if (scene.body->radius_of_gyration) {
+        b.radius_of_gyration = scene.body->radius_of_gyration;
+    } else {
+        b.inertia = scene.body->inertia;
+    }
+    b.polygon = scene.body->polygon;
+    a.bodies.push_back(std::move(b));
+    for (const Contact& c : scene.contacts) a.contacts.push_back({1, 0, c});
+    a.obstacles = scene.obstacles;
+    a.contact_distance = scene.contact_distance;
+    return a;
+}
+
+std::vector<AssemblyContact> find_assembly_contacts(const std::vector<AssemblyBody>& bodies,
+                                                    const std::vector<Polygon>& obstacles, const ContactFinding& options) {
+    std::vector<AssemblyContact> found;
+    const double margin = box_margin(options.distance);
+    std::vector<Box> boxes;
+    for (const AssemblyBody& b : bodies) boxes.push_back(b.polygon.empty() ? Box{} : box_of(b.polygon, margin));
+    std::vector<Box> obstacle_boxes;
+    for (const Polygon& o : obstacles) obstacle_boxes.push_back(box_of(o, margin));
+    for (std::size_t a = 0; a < bodies.size(); ++a) {
+        if (bodies[a].polygon.empty()) continue;
+        std::vector<Polygon> near;
+        for (std::size_t k = 0; k < obstacles.size(); ++k) {
+            if (boxes_meet(boxes[a], obstacle_boxes[k])) near.push_back(obstacles[k]);
+        }
+        if (!near.empty()) {
+            for (Contact& c : find_contacts(bodies[a].polygon, near, options)) found.push_back({a + 1, 0, std::move(c)});
+        }
+        for (std::size_t b = 0; b < a; ++b) {
+            if (bodies[b].polygon.empty() || !boxes_meet(boxes[a], boxes[b])) continue;
+            for (Contact& c : find_contacts(bodies[a].polygon, {bodies[b].polygon}, options)) {
+                found.push_back({a + 1, b + 1, std::move(c)});
+            }
+        }
+    }
+    return found;
+}
+
+void check_assembly(const Assembly& assembly) {
+    const std::size_t n = assembly.bodies.size();
+    if (n == 0) throw InputError("$.bodies", "expected at least one body");
+    const auto positive = [](const std::string& path, double x) {
+        if (!(std::isfinite(x) && x > 0.0)) throw InputError(path, "expected a finite number > 0");
+    };
+    for (std::size_t k = 0; k < n; ++k) {
+        const AssemblyBody& b = assembly.bodies[k];
+        const std::string path = at("$.bodies", k);
+        positive(path + ".mass", b.mass);
+        if (!finite(b.com)) throw InputError(path + ".com", "expected finite coordinates");
+        if (b.inertia && b.radius_of_gyration) {
+            throw InputError(path + ".radius_of_gyration", "give either \"inertia\" or \"radius_of_gyration\", not both");
+        }
+        if (b.inertia) positive(path + ".inertia", *b.inertia);
+        if (b.radius_of_gyration) positive(path + ".radius_of_gyration", *b.radius_of_gyration);
+        if (!b.polygon.empty()) {
+            const std::string problem = polygon_problem(b.polygon);
+            if (!problem.empty()) throw InputError(path + ".polygon", problem);
+        }
+    }
+    const double distance = assembly.contact_distance.value_or(1e-9);
+    for (std::size_t i = 0; i < assembly.contacts.size(); ++i) {
+        const AssemblyContact& c = assembly.contacts[i];
+        const std::string path = at("$.contacts", i);
+        const std::string range = " (bodies are 1.." + std::to_string(n) + ", the world is 0)";
+        if (c.a == 0 || c.a > n) {
+            throw InputError(path + ".bodies", "the first body, " + std::to_string(c.a) +
+                                                   ", is not a movable body" + range);
+        }
+        if (c.b > n) throw InputError(path + ".bodies", "body " + std::to_string(c.b) + " is out of range" + range);
+        if (c.a == c.b) throw InputError(path + ".bodies", "a contact of body " + std::to_string(c.a) + " with itself");
+        try {
+            (void)Contact::make(c.contact.point, c.contact.normal, c.contact.mu, c.contact.mu_kinetic);
+        } catch (const std::invalid_argument& e) {
+            throw InputError(path, e.what());
+        }
+        for (std::size_t body : {c.a, c.b}) {
+            if (body == 0) continue;
+            const Polygon& outline = assembly.bodies[body - 1].polygon;
+            if (!outline.empty() && !within_distance_of_boundary(outline, c.contact.point, distance)) {
+                throw InputError(path + ".point", "is not on the outline of body " + std::to_string(body) +
+                                                      " (within contact_distance)");
+            }
+        }
+    }
+    // Overlaps: pairs whose boxes meet.
+    const double margin = box_margin(distance);
+    std::vector<Box> boxes(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!assembly.bodies[k].polygon.empty()) boxes[k] = box_of(assembly.bodies[k].polygon, margin);
+    }
+    for (std::size_t a = 0; a < n; ++a) {
+        const Polygon& pa = assembly.bodies[a].polygon;
+        if (pa.empty()) continue;
+        for (std::size_t k = 0; k < assembly.obstacles.size(); ++k) {
+            const Polygon& o = assembly.obstacles[k];
+            if (boxes_meet(boxes[a], box_of(o, margin)) && polygons_overlap(pa, o)) {
+                throw InputError(at("$.bodies", a) + ".polygon", "overlaps obstacle " + std::to_string(k) +
+                                                                     " (bodies may touch the obstacles, not overlap them)");
+            }
+        }
+        for (std::size_t b = 0; b < a; ++b) {
+            const Polygon& pb = assembly.bodies[b].polygon;
+            if (!pb.empty() && boxes_meet(boxes[a], boxes[b]) && polygons_overlap(pa, pb)) {
+                throw InputError(at("$.bodies", a) + ".polygon", "overlaps the polygon of body " + std::to_string(b + 1) +
+                                                                     " (bodies may touch, not overlap)");
+            }
+        }
+    }
+}
+
+}  // namespace momentlab

@@ -1,0 +1,140 @@
+// The contact modes of an assembly under gravity (docs/assemblies.md, "Modes"): a depth-first
+// search over the letters contact by contact, each prefix kept only while (1) some twist of the
+// bodies realises its letters (the cell is non-empty: one homogeneous program with the strict
+// inequalities given a margin) and (2) the loads can be balanced with the twist in the closure of
+// its cell, the contacts not yet lettered relaxed to the union of their letters (a program whose
+// infeasibility rules out every completion). A complete string that passes both is a mode.
+#include <optional>
+
+#include "assembly_programs.hpp"
+#include "momentlab/assembly/stand.hpp"
+#include "momentlab/io/input_error.hpp"
+
+namespace momentlab {
+
+using namespace assembly_detail;
+
+namespace {
+
+class ModeSearch {
+public:
+    ModeSearch(const Assembly& assembly, const Vec2& gravity)
+        : assembly_(assembly), gravity_(gravity), d_(assembly_data<Interval>(assembly)),
+          gx_(gravity.x()), gy_(gravity.y()) {}
+
+    AssemblyModes run() {
+        AssemblyModes out;
+        search(std::string(), out.modes);
+        out.verdict = verdict_of(out.modes.size());
+        for (const std::string& m : out.modes) {
+            if (has_motion(m)) out.motions.push_back(m);
+        }
+        return out;
+    }
+
+private:
+    const AssemblyData<Rational>& exact() {
+        if (!exact_) exact_ = assembly_data<Rational>(assembly_);
+        return *exact_;
+    }
+    Rational egx() { return exact_value(gravity_.x()); }
+    Rational egy() { return exact_value(gravity_.y()); }
+
+    bool cell_nonempty(const std::string& letters) {
+        if (letters.find_first_not_of('f') == std::string::npos) return true;  // x = 0
+        const FeasibilityAnswer a = decide(kinematic_program(d_, letters), [&] { return kinematic_program(exact(), letters); });
+        return a.status == Feasibility::StrictlyFeasible;
+    }
+
+    bool loads_hold(const std::string& letters) {
+        const FeasibilityAnswer a = decide(loads_program(d_, gx_, gy_, letters, false),
+                                           [&] { return loads_program(exact(), egx(), egy(), letters, false); });
+        return a.status != Feasibility::Infeasible;
+    }
+
+    void search(const std::string& prefix, std::vector<std::string>& modes) {
+        if (!prefix.empty() && !cell_nonempty(prefix)) return;
+        if (!loads_hold(prefix)) return;
+        if (prefix.size() == d_.contacts.size()) {
+            modes.push_back(prefix);
+            return;
+        }
+        for (char letter : {'f', 's', 'r', 'l'}) search(prefix + letter, modes);
+    }
+
+    // A program with one more row, x_i (times sign) minus a strict slack = 0, and only that
+    // slack strict: some point of the program has sign * x_i > 0.
+    template <class T>
+    static Program<T> with_moving_coordinate(Program<T> p, Index i, int sign) {
+        const Index row = p.rows++;
+        p.rhs.push_back(number<T>(0.0));
+        p.columns[i].push_back({row, number<T>(sign)});
+        for (std::size_t j = 0; j < p.strict.size(); ++j) p.strict[j] = false;
+        p.add({{row, number<T>(-1.0)}}, false, true);
+        return p;
+    }
+
+    // Accelerations in the mode's open cell with the loads balanced and some body moving. With a
+    // letter s, r or l the open cell excludes x = 0; the all-f mode needs a coordinate of x that
+    // can be non-zero: first in the kinematics (homogeneous), then with the loads.
+    // With an equilibrium of normal forces alone (-G = sum nu_j N_j, nu >= 0) nothing can move
+    // from rest, whatever the friction: a motion x from rest has x^T M x = G . x + (the contact
+    // forces' power on x), where the power is 0 at s and f and <= 0 at r and l (friction opposes
+    // sliding), and G . x = -sum nu_j N_j . d_j <= 0 since every N_j . d_j >= 0 in the closure;
+    // so x^T M x <= 0 and x = 0 (docs/assemblies.md).
+    bool frictionless_equilibrium() {
+        if (!frictionless_) {
+            const FeasibilityAnswer a = decide(equilibrium_program(d_, gx_, gy_, nullptr, true), [&] {
+                return equilibrium_program(exact(), egx(), egy(), nullptr, true);
+            });
+            frictionless_ = a.status != Feasibility::Infeasible;
+        }
+        return *frictionless_;
+    }
+
+    bool has_motion(const std::string& letters) {
+        if (frictionless_equilibrium()) return false;
+        if (letters.find_first_not_of('f') != std::string::npos) {
+            const FeasibilityAnswer a = decide(loads_program(d_, gx_, gy_, letters, true),
+                                               [&] { return loads_program(exact(), egx(), egy(), letters, true); });
+            return a.status == Feasibility::StrictlyFeasible;
+        }
+        for (Index i = 0; i < 3 * d_.bodies; ++i) {
+            for (int sign : {1, -1}) {
+                const FeasibilityAnswer k = decide(with_moving_coordinate(kinematic_program(d_, letters), i, sign), [&] {
+                    return with_moving_coordinate(kinematic_program(exact(), letters), i, sign);
+                });
+                if (k.status != Feasibility::StrictlyFeasible) continue;
+                const std::optional<std::pair<Index, int>> moving{{i, sign}};
+                const FeasibilityAnswer l = decide(loads_program(d_, gx_, gy_, letters, true, moving), [&] {
+                    return loads_program(exact(), egx(), egy(), letters, true, moving);
+                });
+                if (l.status == Feasibility::StrictlyFeasible) return true;
+            }
+        }
+        return false;
+    }
+
+    const Assembly& assembly_;
+    Vec2 gravity_;
+    AssemblyData<Interval> d_;
+    std::optional<AssemblyData<Rational>> exact_;
+    Interval gx_, gy_;
+    std::optional<bool> frictionless_;
+};
+
+}  // namespace
+
+AssemblyModes assembly_modes(const Assembly& assembly, const Vec2& gravity) {
+    check_assembly(assembly);
+    for (std::size_t k = 0; k < assembly.bodies.size(); ++k) {
+        const AssemblyBody& b = assembly.bodies[k];
+        if (!b.inertia && !b.radius_of_gyration) {
+            throw InputError("$.bodies[" + std::to_string(k) + "]",
+                             "missing field \"inertia\" (or \"radius_of_gyration\"): the modes need it");
+        }
+    }
+    return ModeSearch(assembly, gravity).run();
+}
+
+}  // namespace momentlab

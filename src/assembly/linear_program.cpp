@@ -1,0 +1,470 @@
+#include "linear_program.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "exact_simplex.hpp"
+
+namespace momentlab::assembly_detail {
+namespace {
+
+// The power of two that brings |x| into [0.5, 1).
+int scale_of(double largest) {
+    if (!(largest > 0.0) || !std::isfinite(largest)) return 0;
+    int e = 0;
+    (void)std::frexp(largest, &e);
+    return -e;
+}
+
+Interval scaled(const Interval& a, int k) {
+    if (k == 0 || is_exact_zero(a)) return a;
+    Interval r{std::ldexp(a.lo, k), std::ldexp(a.hi, k)};
+    // ldexp is exact unless the result leaves the normal range: then widen.
+    const auto normal = [](double x) { return x == 0.0 ? false : std::isnormal(x); };
+    if (!normal(r.lo) || !normal(r.hi)) r = {next_down(r.lo), next_up(r.hi)};
+    return r;
+}
+
+// Powers of two for the columns, the rows and the right-hand side (choices only: they change no
+// sign): columns first, each largest entry into [0.5, 1), then the rows, then b.
+struct Scaling {
+    std::vector<int> column, row;
+    int rhs = 0;
+};
+
+Scaling scaling_of(const Program<Interval>& p) {
+    Scaling s;
+    s.column.assign(p.columns.size(), 0);
+    s.row.assign(p.rows, 0);
+    for (std::size_t j = 0; j < p.columns.size(); ++j) {
+        double largest = 0.0;
+        for (const SparseEntry<Interval>& e : p.columns[j]) largest = std::max(largest, std::abs(e.value.mid()));
+        s.column[j] = scale_of(largest);
+    }
+    std::vector<double> row_largest(p.rows, 0.0);
+    for (std::size_t j = 0; j < p.columns.size(); ++j) {
+        for (const SparseEntry<Interval>& e : p.columns[j]) {
+            row_largest[e.index] = std::max(row_largest[e.index], std::ldexp(std::abs(e.value.mid()), s.column[j]));
+        }
+    }
+    double rhs_largest = 0.0;
+    for (std::uint32_t i = 0; i < p.rows; ++i) {
+        s.row[i] = scale_of(row_largest[i]);
+        rhs_largest = std::max(rhs_largest, std::ldexp(std::abs(p.rhs[i].mid()), s.row[i]));
+    }
+    s.rhs = scale_of(rhs_largest);
+    return s;
+}
+
+// The scaled program in the form both simplex methods take: the program's columns (mu_j for the
+// strict ones), then t when some column is strict: its column the sum of the strict columns.
+template <class T>
+struct Scaled {
+    std::uint32_t rows = 0;
+    std::vector<SparseColumn<T>> columns;
+    std::vector<bool> free;
+    std::vector<T> rhs;
+    std::optional<std::uint32_t> t;
+};
+
+template <class T>
+T scale_value(const T& v, int k) {
+    if constexpr (std::is_same_v<T, Interval>) {
+        return scaled(v, k);
+    } else {
+        return times_power_of_two(v, k);
+    }
+}
+
+inline bool is_zero_value(const Interval& v) { return is_exact_zero(v); }
+inline bool is_zero_value(const Rational& v) { return v == 0; }
+
+template <class T>
+Scaled<T> scale(const Program<T>& p, const Scaling& s, bool with_margin) {
+    Scaled<T> out;
+    out.rows = p.rows;
+    out.free = p.free;
+    out.columns.resize(p.columns.size());
+    std::vector<T> t_column(p.rows, T(0.0));
+    bool any_strict = false;
+    for (std::size_t j = 0; j < p.columns.size(); ++j) {
+        for (const SparseEntry<T>& e : p.columns[j]) {
+            T v = scale_value(e.value, s.row[e.index] + s.column[j]);
+            if (with_margin && p.strict[j]) t_column[e.index] += v;
+            out.columns[j].push_back({e.index, std::move(v)});
+        }
+        any_strict = any_strict || (with_margin && p.strict[j]);
+    }
+    for (std::uint32_t i = 0; i < p.rows; ++i) out.rhs.push_back(scale_value(p.rhs[i], s.row[i] + s.rhs));
+    if (any_strict) {
+        SparseColumn<T> column;
+        for (std::uint32_t i = 0; i < p.rows; ++i) {
+            if (!is_zero_value(t_column[i])) column.push_back({i, t_column[i]});
+        }
+        out.t = static_cast<std::uint32_t>(out.columns.size());
+        out.columns.push_back(std::move(column));
+        out.free.push_back(false);
+    }
+    return out;
+}
+
+// The t bound: a margin of at most 1 (scaled units) is asked.
+constexpr double kMarginCap = 1.0;
+
+DoubleProgram guidance(const Scaled<Interval>& s, const std::vector<double>& cost) {
+    DoubleProgram d;
+    d.rows = s.rows;
+    d.columns.resize(s.columns.size());
+    for (std::size_t j = 0; j < s.columns.size(); ++j) {
+        for (const SparseEntry<Interval>& e : s.columns[j]) d.columns[j].push_back({e.index, e.value.mid()});
+        d.lower.push_back(s.free[j] ? -kInfinity : 0.0);
+        d.upper.push_back(s.t && j == *s.t ? kMarginCap : kInfinity);
+    }
+    d.cost = cost;
+    for (const Interval& b : s.rhs) d.rhs.push_back(b.mid());
+    return d;
+}
+
+// The basis's columns as intervals (artificials: sign * e_i), factored in interval arithmetic
+// along the pivots a double factorization of their midpoints chooses.
+std::optional<SparseLu<Interval>> interval_factor(const Scaled<Interval>& s, const Basis& basis) {
+    const auto n = static_cast<std::uint32_t>(s.columns.size());
+    std::vector<SparseColumn<Interval>> columns(s.rows);
+    std::vector<SparseColumn<double>> middles(s.rows);
+    for (std::uint32_t p = 0; p < s.rows; ++p) {
+        const std::uint32_t j = basis.basic[p];
+        if (j < n) {
+            columns[p] = s.columns[j];
+        } else {
+            columns[p].push_back({j - n, Interval(static_cast<double>(basis.artificial_sign[j - n]))});
+        }
+        for (const SparseEntry<Interval>& e : columns[p]) middles[p].push_back({e.index, e.value.mid()});
+    }
+    SparseLu<double> guide;
+    if (!guide.factor(middles)) return std::nullopt;
+    SparseLu<Interval> lu;
+    if (!lu.factor(columns, guide.pivots())) return std::nullopt;
+    return lu;
+}
+
+Interval dot(const std::vector<Interval>& y, const SparseColumn<Interval>& column) {
+    Interval s(0.0);
+    for (const SparseEntry<Interval>& e : column) s += y[e.index] * e.value;
+    return s;
+}
+
+// Enclosures of every variable of the basis's point (the nonbasic ones at their bounds), or none
+// when an artificial is in the basis other than exactly 0 or the factorization fails.
+std::optional<std::vector<Interval>> enclose_point(const Scaled<Interval>& s, const SimplexResult& r) {
+    const auto n = static_cast<std::uint32_t>(s.columns.size());
+    const std::optional<SparseLu<Interval>> lu = interval_factor(s, r.basis);
+    if (!lu) return std::nullopt;
+    std::vector<Interval> values(n, Interval(0.0));
+    std::vector<Interval> rhs = s.rhs;
+    for (std::uint32_t j = 0; j < n; ++j) {
+        if (r.basis.place[j] == Place::AtUpper) {  // only t has an upper bound
+            values[j] = Interval(kMarginCap);
+            for (const SparseEntry<Interval>& e : s.columns[j]) rhs[e.index] -= e.value * values[j];
+        }
+    }
+    const std::vector<Interval> xb = lu->solve(std::move(rhs));
+    for (std::uint32_t p = 0; p < s.rows; ++p) {
+        const std::uint32_t j = r.basis.basic[p];
+        if (j >= n) {
+            if (!is_exact_zero(xb[p])) return std::nullopt;
+        } else {
+            values[j] = xb[p];
+        }
+    }
+    return values;
+}
+
+// y = B^-T c_B in intervals, with c the costs (per column of s; artificials' cost given apart).
+std::optional<std::vector<Interval>> enclose_duals(const Scaled<Interval>& s, const Basis& basis,
+                                                   const std::vector<double>& cost, double artificial_cost) {
+    const auto n = static_cast<std::uint32_t>(s.columns.size());
+    const std::optional<SparseLu<Interval>> lu = interval_factor(s, basis);
+    if (!lu) return std::nullopt;
+    std::vector<Interval> c(s.rows);
+    for (std::uint32_t p = 0; p < s.rows; ++p) {
+        const std::uint32_t j = basis.basic[p];
+        c[p] = Interval(j < n ? cost[j] : artificial_cost);
+    }
+    return lu->solve_transposed(std::move(c));
+}
+
+struct Unscaled {
+    std::vector<double> point, farkas;
+};
+
+std::vector<double> unscale_point(const std::vector<double>& x, const Scaled<Interval>& s, const Scaling& sc,
+                                  const Program<Interval>& p) {
+    std::vector<double> point(p.columns.size());
+    const double t = s.t ? x[*s.t] : 0.0;
+    for (std::size_t j = 0; j < p.columns.size(); ++j) {
+        const double v = (s.t && p.strict[j]) ? x[j] + t : x[j];
+        point[j] = std::ldexp(v, sc.column[j] - sc.rhs);
+    }
+    return point;
+}
+
+std::vector<double> unscale_duals(const std::vector<double>& y, const Scaling& sc) {
+    std::vector<double> out(y.size());
+    for (std::size_t i = 0; i < y.size(); ++i) out[i] = std::ldexp(y[i], sc.row[i]);
+    return out;
+}
+
+ExactProgram exact_program(const Scaled<Rational>& s, const std::vector<Rational>& cost) {
+    ExactProgram e;
+    e.rows = s.rows;
+    e.columns = s.columns;
+    e.free = s.free;
+    e.upper.assign(s.columns.size(), std::nullopt);
+    if (s.t) e.upper[*s.t] = Rational(1);
+    e.cost = cost;
+    e.rhs = s.rhs;
+    return e;
+}
+
+bool homogeneous(const Scaled<Interval>& s) {
+    return std::all_of(s.rhs.begin(), s.rhs.end(), [](const Interval& b) { return is_exact_zero(b); });
+}
+
+// A Farkas vector with room: max tau over y . A_j + tau + sigma_j = 0 (sigma_j >= 0) for every
+// column, y . b = 1, tau in [0, 1], in doubles; a y with tau > 0 has y . A_j < 0 for every column
+// with room to spare, so its rounding is checked in intervals (each y_i a double, exactly). Only
+// for programs without free columns (y . A_j = 0 cannot be checked on a rounded y). This is the
+// certificate when the basis's own y is degenerate: columns with y . A_j exactly 0, whose
+// intervals hold 0.
+std::optional<std::vector<double>> farkas_with_room(const Scaled<Interval>& s) {
+    const auto n = static_cast<std::uint32_t>(s.columns.size());
+    for (std::uint32_t j = 0; j < n; ++j) {
+        if (s.free[j]) return std::nullopt;
+    }
+    const std::uint32_t skip = s.t ? *s.t : n;
+    DoubleProgram d;
+    d.rows = 0;
+    std::vector<std::uint32_t> row_of(n, 0);
+    for (std::uint32_t j = 0; j < n; ++j) {
+        if (j != skip) row_of[j] = d.rows++;
+    }
+    const std::uint32_t normalisation = d.rows++;
+    d.rhs.assign(d.rows, 0.0);
+    d.rhs[normalisation] = 1.0;
+    d.columns.resize(s.rows + 1);
+    for (std::uint32_t j = 0; j < n; ++j) {  // y_i: column i holds A_ij in row j
+        if (j == skip) continue;
+        for (const SparseEntry<Interval>& e : s.columns[j]) d.columns[e.index].push_back({row_of[j], e.value.mid()});
+    }
+    for (std::uint32_t i = 0; i < s.rows; ++i) {
+        if (!is_exact_zero(s.rhs[i])) d.columns[i].push_back({normalisation, s.rhs[i].mid()});
+        std::sort(d.columns[i].begin(), d.columns[i].end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+    }
+    for (std::uint32_t j = 0; j < n; ++j) {  // tau, then the slacks
+        if (j != skip) d.columns[s.rows].push_back({row_of[j], 1.0});
+    }
+    for (std::uint32_t j = 0; j < n; ++j) {
+        if (j != skip) d.columns.push_back({{row_of[j], 1.0}});
+    }
+    d.lower.assign(d.columns.size(), 0.0);
+    d.upper.assign(d.columns.size(), kInfinity);
+    for (std::uint32_t i = 0; i < s.rows; ++i) d.lower[i] = -kInfinity;
+    d.upper[s.rows] = 1.0;
+    d.cost.assign(d.columns.size(), 0.0);
+    d.cost[s.rows] = -1.0;
+    const SimplexResult r = simplex(d);
+    if (r.status != SimplexStatus::Optimal || !(r.x[s.rows] > 1e-9)) return std::nullopt;
+    std::vector<Interval> y;
+    for (std::uint32_t i = 0; i < s.rows; ++i) y.emplace_back(r.x[i]);
+    SparseColumn<Interval> b;
+    for (std::uint32_t i = 0; i < s.rows; ++i) b.push_back({i, s.rhs[i]});
+    if (!dot(y, b).positive()) return std::nullopt;
+    for (std::uint32_t j = 0; j < n; ++j) {
+        if (j != skip && !dot(y, s.columns[j]).negative()) return std::nullopt;
+    }
+    std::vector<double> out(r.x.begin(), r.x.begin() + s.rows);
+    return out;
+}
+
+// The rows whose dual is not negligible, when they are fewer than all (a guess: the decision on
+// them is exact).
+std::optional<std::vector<std::uint32_t>> dual_support(const std::vector<double>& y, std::uint32_t rows) {
+    double largest = 0.0;
+    for (double v : y) largest = std::max(largest, std::abs(v));
+    std::vector<std::uint32_t> kept;
+    for (std::uint32_t i = 0; i < rows; ++i) {
+        if (std::abs(y[i]) > 1e-9 * largest) kept.push_back(i);
+    }
+    if (kept.empty() || kept.size() == rows) return std::nullopt;
+    return kept;
+}
+
+// The program on the given rows only, without the columns left empty.
+template <class T>
+Program<T> restricted(const Program<T>& p, const std::vector<std::uint32_t>& rows) {
+    std::vector<std::int64_t> index(p.rows, -1);
+    for (std::size_t k = 0; k < rows.size(); ++k) index[rows[k]] = static_cast<std::int64_t>(k);
+    Program<T> out;
+    out.rows = static_cast<std::uint32_t>(rows.size());
+    for (std::uint32_t i : rows) out.rhs.push_back(p.rhs[i]);
+    for (std::size_t j = 0; j < p.columns.size(); ++j) {
+        SparseColumn<T> column;
+        for (const SparseEntry<T>& e : p.columns[j]) {
+            if (index[e.index] >= 0) column.push_back({static_cast<std::uint32_t>(index[e.index]), e.value});
+        }
+        if (!column.empty()) out.add(std::move(column), p.free[j], p.strict[j]);
+    }
+    return out;
+}
+
+}  // namespace
+
+LpCounts& lp_counts() {
+    thread_local LpCounts counts;
+    return counts;
+}
+
+FeasibilityAnswer decide(const Program<Interval>& enclosures, const ExactBuilder& exact) {
+    const Scaling sc = scaling_of(enclosures);
+    const Scaled<Interval> s = scale(enclosures, sc, true);
+    const auto n = static_cast<std::uint32_t>(s.columns.size());
+    std::vector<double> cost(n, 0.0);
+    if (s.t) cost[*s.t] = -1.0;
+    const SimplexResult r = simplex(guidance(s, cost));
+    FeasibilityAnswer answer;
+    if (r.status == SimplexStatus::Infeasible) {
+        // Farkas: phase 1's y (costs 1 on the artificials): y . A_j <= 0 at x_j >= 0 (exactly 0
+        // for the basic columns, by construction), y . b > 0.
+        if (const auto y = enclose_duals(s, r.basis, std::vector<double>(n, 0.0), 1.0)) {
+            bool holds = dot(*y, [&] {
+                             SparseColumn<Interval> b;
+                             for (std::uint32_t i = 0; i < s.rows; ++i) b.push_back({i, s.rhs[i]});
+                             return b;
+                         }()).positive();
+            for (std::uint32_t j = 0; j < n && holds; ++j) {
+                if (r.basis.place[j] == Place::Basic || (s.t && j == *s.t)) continue;
+                const Interval ya = dot(*y, s.columns[j]);
+                holds = s.free[j] ? is_exact_zero(ya) : ya.nonpositive();
+            }
+            if (holds) {
+                ++lp_counts().certified;
+                std::vector<double> mid;
+                for (const Interval& v : *y) mid.push_back(v.mid());
+                answer.status = Feasibility::Infeasible;
+                answer.farkas = unscale_duals(mid, sc);
+                return answer;
+            }
+        }
+        if (const auto y = farkas_with_room(s)) {
+            ++lp_counts().certified;
+            answer.status = Feasibility::Infeasible;
+            answer.farkas = unscale_duals(*y, sc);
+            return answer;
+        }
+    } else if (r.status == SimplexStatus::Optimal) {
+        const bool margin = !s.t || r.x[*s.t] > 1e-12;
+        if (margin) {
+            // A point: every strict variable > 0, every other bounded one >= 0.
+            if (const auto v = enclose_point(s, r)) {
+                const Interval t = s.t ? (*v)[*s.t] : Interval(0.0);
+                bool holds = true;
+                for (std::uint32_t j = 0; j < enclosures.columns.size() && holds; ++j) {
+                    if (enclosures.free[j]) continue;
+                    holds = s.t && enclosures.strict[j] ? ((*v)[j] + t).positive() : (*v)[j].nonnegative();
+                }
+                if (holds) {
+                    ++lp_counts().certified;
+                    std::vector<double> mid;
+                    for (const Interval& x : *v) mid.push_back(x.mid());
+                    answer.status = Feasibility::StrictlyFeasible;
+                    answer.point = unscale_point(mid, s, sc, enclosures);
+                    return answer;
+                }
+            }
+        } else if (homogeneous(s)) {
+            // max t <= y . b = 0 when every reduced cost has its sign (x = 0 is the point).
+            if (const auto y = enclose_duals(s, r.basis, cost, 0.0)) {
+                bool holds = true;
+                for (std::uint32_t j = 0; j < n && holds; ++j) {
+                    if (r.basis.place[j] == Place::Basic) continue;
+                    const Interval d = Interval(cost[j]) - dot(*y, s.columns[j]);
+                    holds = s.free[j] ? is_exact_zero(d) : d.nonnegative();
+                }
+                if (holds) {
+                    ++lp_counts().certified;
+                    answer.status = Feasibility::Feasible;
+                    answer.point.assign(enclosures.columns.size(), 0.0);
+                    return answer;
+                }
+            }
+            // The duals are degenerate (reduced costs exactly 0 that the intervals cannot sign):
+            // the rows the duals use, alone, are a relaxation; without a strict point there is
+            // none here either (a strict point here is one there), and its certificate is often
+            // not degenerate.
+            if (const auto rows = dual_support(r.y, s.rows)) {
+                const FeasibilityAnswer relaxed =
+                    decide(restricted(enclosures, *rows), [&] { return restricted(exact(), *rows); });
+                if (relaxed.status == Feasibility::Feasible) {
+                    answer.status = Feasibility::Feasible;
+                    answer.point.assign(enclosures.columns.size(), 0.0);
+                    answer.exact_path = relaxed.exact_path;
+                    return answer;
+                }
+            }
+        }
+    }
+    // The exact path, from the double simplex's basis.
+    ++lp_counts().exact;
+    answer.exact_path = true;
+    const Scaled<Rational> e = scale(exact(), sc, true);
+    std::vector<Rational> exact_cost(n, Rational(0));
+    if (e.t) exact_cost[*e.t] = -1;
+    const bool usable = r.status != SimplexStatus::Stalled && r.basis.basic.size() == s.rows;
+    const ExactOutcome o = exact_simplex(exact_program(e, exact_cost), usable ? &r.basis : nullptr);
+    if (o.status == SimplexStatus::Infeasible) {
+        std::vector<double> y;
+        for (const Rational& v : o.y) y.push_back(approximate(v));
+        answer.status = Feasibility::Infeasible;
+        answer.farkas = unscale_duals(y, sc);
+        return answer;
+    }
+    std::vector<double> x;
+    for (const Rational& v : o.x) x.push_back(approximate(v));
+    answer.status = (!e.t || o.x[*e.t] > 0) ? Feasibility::StrictlyFeasible : Feasibility::Feasible;
+    answer.point = unscale_point(x, s, sc, enclosures);
+    return answer;
+}
+
+Optimum maximize(const Program<Interval>& enclosures, const ExactBuilder& exact,
+                 const std::vector<std::pair<std::uint32_t, int>>& objective) {
+    const Scaling sc = scaling_of(enclosures);
+    const Scaled<Interval> s = scale(enclosures, sc, false);
+    const auto n = static_cast<std::uint32_t>(s.columns.size());
+    std::vector<double> cost(n, 0.0);
+    std::vector<Rational> exact_cost(n, Rational(0));
+    for (const auto& [j, c] : objective) {
+        cost[j] = -std::ldexp(static_cast<double>(c), sc.column[j]);  // min -c . x in the scaled variables
+        exact_cost[j] = -times_power_of_two(Rational(c), sc.column[j]);
+    }
+    const SimplexResult r = simplex(guidance(s, cost));
+    ++lp_counts().exact;
+    const Scaled<Rational> e = scale(exact(), sc, false);
+    const bool usable = r.status != SimplexStatus::Stalled && r.basis.basic.size() == s.rows;
+    const ExactOutcome o = exact_simplex(exact_program(e, exact_cost), usable ? &r.basis : nullptr);
+    Optimum out;
+    if (o.status == SimplexStatus::Infeasible) return out;
+    if (o.status == SimplexStatus::Unbounded) {
+        out.status = Optimum::Status::Unbounded;
+        return out;
+    }
+    out.status = Optimum::Status::Optimal;
+    // The scaled cost is -c_j 2^{c_j} on x'_j = x_j 2^{s - c_j}: value' = -(c . x) 2^s.
+    out.value = times_power_of_two(Rational(-o.value), -sc.rhs);
+    std::vector<double> x;
+    for (const Rational& v : o.x) x.push_back(approximate(v));
+    out.point = unscale_point(x, s, sc, enclosures);
+    return out;
+}
+
+}  // namespace momentlab::assembly_detail
