@@ -16,7 +16,7 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release -DMOMENTLAB_PYTHON=ON -DPython_EXECUTA
 PREFIX ?= /usr/local
 
 APT_PACKAGES := g++ cmake make ccache libeigen3-dev libgmp-dev nlohmann-json3-dev libcli11-dev \
-                libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev libcairo2-dev pkg-config libbox2d-dev \
+                libboost-dev libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev libcairo2-dev pkg-config libbox2d-dev \
                 clang libclang-rt-14-dev \
                 python3-dev pybind11-dev python3-numpy python3-matplotlib python3-pytest python3-pip \
                 python3-venv python3-setuptools python3-wheel ninja-build \

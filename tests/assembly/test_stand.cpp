@@ -15,6 +15,7 @@
 #include "momentlab/assembly/assembly_json.hpp"
 #include "momentlab/io/files.hpp"
 #include "momentlab/io/scene_json.hpp"
+#include "momentlab/mechanics/advanced.hpp"
 #include "momentlab/mechanics/analysis.hpp"
 
 namespace momentlab {
