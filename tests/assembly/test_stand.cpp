@@ -385,10 +385,13 @@ TEST(StandOracle, RandomAssembliesAgreeWithExactOracle) {
     std::printf("assemblies: %d (%d on a boundary, %d stand), modes compared on %d (outcomes: %d stands, %d may fall, "
                 "%d falls, %d inconsistent), tilt cones on %d\n",
                 cases, boundary, stand_count, modes_compared, outcomes[0], outcomes[1], outcomes[2], outcomes[3], tilts);
+    // How often each kind of case came up: asserted at full size (the sanitizers' runs are smaller).
     EXPECT_GE(3 * boundary, cases);
-    EXPECT_GT(outcomes[1], 0);  // may fall: an equilibrium and a motion (high friction)
-    EXPECT_GT(stand_count, cases / 4);
-    EXPECT_LT(stand_count, cases * 3 / 4);
+    if (testing::kFullSize) {
+        EXPECT_GT(outcomes[1], 0);  // may fall: an equilibrium and a motion (high friction)
+        EXPECT_GT(stand_count, cases / 4);
+        EXPECT_LT(stand_count, cases * 3 / 4);
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
