@@ -13,28 +13,13 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { test } from 'node:test';
 
+import { assertClose } from './assert_close.mjs';
+
 const ROOT = new URL('../../', import.meta.url).pathname;
 const CLI = process.env.MOMENTLAB_CLI || join(ROOT, 'build/release/momentlab');
 const WEB = process.env.MOMENTLAB_WEB || join(ROOT, 'out/web');
 const ml = await (await import(join(WEB, 'momentlab.mjs'))).default();
 const scratch = mkdtempSync(join(tmpdir(), 'momentlab-web-'));
-
-// Printed angles come from atan2 of the exact answer's rounded directions: the browser's libm and
-// glibc may differ in the last bit there (every decision is exact and equal; docs/web.md).
-function assertClose(actual, expected, path = '$') {
-  if (typeof expected === 'number') {
-    assert.equal(typeof actual, 'number', path);
-    assert.ok(Math.abs(actual - expected) <= 1e-14 * Math.max(1, Math.abs(expected)), `${path}: ${actual} vs ${expected}`);
-  } else if (Array.isArray(expected)) {
-    assert.ok(Array.isArray(actual) && actual.length === expected.length, path);
-    expected.forEach((x, i) => assertClose(actual[i], x, `${path}[${i}]`));
-  } else if (expected && typeof expected === 'object') {
-    assert.deepEqual(Object.keys(actual).sort(), Object.keys(expected).sort(), path);
-    for (const k of Object.keys(expected)) assertClose(actual[k], expected[k], `${path}.${k}`);
-  } else {
-    assert.equal(actual, expected, path);
-  }
-}
 
 function cliModes(file) {
   return JSON.parse(execFileSync(CLI, ['modes', file, '--json'], { encoding: 'utf8' })).modes;

@@ -13,6 +13,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { after, before, test } from 'node:test';
 import { chromium } from 'playwright-core';
+import { assertClose } from './assert_close.mjs';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
 const CLI = process.env.MOMENTLAB_CLI || join(ROOT, 'build/release/momentlab');
@@ -288,22 +289,6 @@ test('drags on a 16-contact scene: the time of each recompute and redraw',
 
 // --- the answers' panels (issue 48): each against the CLI's --json for the same scene, and where
 // tests/web/oracle_fixtures.json covers it against the independent exact oracle.
-
-// Numbers equal within 1e-14 (relative): printed angles and the closure quality are rounded
-// arithmetic, where the browser's libm and glibc may differ in the last bit (docs/web.md).
-function assertClose(actual, expected, path = '$') {
-  if (typeof expected === 'number') {
-    assert.ok(typeof actual === 'number' && Math.abs(actual - expected) <= 1e-14 * Math.max(1, Math.abs(expected)), `${path}: ${actual} vs ${expected}`);
-  } else if (Array.isArray(expected)) {
-    assert.ok(Array.isArray(actual) && actual.length === expected.length, `${path}: ${JSON.stringify(actual)} vs ${JSON.stringify(expected)}`);
-    expected.forEach((x, i) => assertClose(actual[i], x, `${path}[${i}]`));
-  } else if (expected && typeof expected === 'object') {
-    assert.deepEqual(Object.keys(actual).sort(), Object.keys(expected).sort(), path);
-    for (const k of Object.keys(expected)) assertClose(actual[k], expected[k], `${path}.${k}`);
-  } else {
-    assert.equal(actual, expected, path);
-  }
-}
 
 const answerOf = (id) => page.$eval(`#${id}`, (e) => JSON.parse(e.dataset.answer));
 const degreesText = (r) => `${(r * 180 / Math.PI).toFixed(2)}\u00b0`;
