@@ -11,7 +11,18 @@ PYTHON := /usr/bin/python3
 CCACHE := -DCMAKE_CXX_COMPILER_LAUNCHER=ccache
 export CCACHE_BASEDIR := $(CURDIR)
 export CCACHE_NOHASHDIR := 1
-CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release -DMOMENTLAB_PYTHON=ON -DPython_EXECUTABLE=$(PYTHON) $(CCACHE)
+# Unity builds: each target's sources compiled in batches (CMake's UNITY_BUILD), so the headers
+# they share (Eigen, CLI11, nlohmann-json) are parsed and their inline functions compiled once a
+# batch rather than once a file (tools/build_times.sh compares the two). Every tree `make`
+# configures is a unity build; a tree configured by hand is not unless asked
+# (-DCMAKE_UNITY_BUILD=ON), and both must compile.
+UNITY := -DCMAKE_UNITY_BUILD=ON
+CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release -DMOMENTLAB_PYTHON=ON -DPython_EXECUTABLE=$(PYTHON) $(CCACHE) $(UNITY)
+# Build trees made here use Ninja (ninja-build): it compiles a target's objects while the layers
+# it links are still being built, where make waits for each layer's link, so both cores stay busy.
+# Existing trees keep the generator they were made with. (Expanded per command: `deps` may have
+# just installed ninja.)
+export CMAKE_GENERATOR = $(if $(shell command -v ninja 2>/dev/null),Ninja,Unix Makefiles)
 # Where `make python` installs momentlab (the library, the CLI and the Python module).
 PREFIX ?= /usr/local
 
@@ -65,7 +76,7 @@ python: build
 # The viewer (docs/web.md): out/web/index.html (one file: open it from disk) and out/web/momentlab.mjs
 # (an ES module for node and pages), the library compiled to WebAssembly by Debian's Emscripten.
 $(WEB_BUILD)/CMakeCache.txt: | deps
-	emcmake cmake -S . -B $(WEB_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS=-fexceptions >/dev/null
+	emcmake cmake -S . -B $(WEB_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS=-fexceptions $(UNITY) >/dev/null
 
 web: deps $(WEB_BUILD)/CMakeCache.txt
 	cmake --build $(WEB_BUILD) -j$(JOBS)
@@ -83,14 +94,12 @@ test-web: web build
 
 # `make demo`: each part is built just before it is shown, the command line first (the library
 # and the CLI only: no tests or benchmarks), then the Python module, then the WebAssembly page.
-# Compiler output goes to DEMO_LOG; its last lines are shown when a build fails. Build trees the
-# demo creates use Ninja (it keeps both cores busy across the layers, where make builds them one
-# after the other); existing ones keep their generator. `make test` builds everything.
+# Compiler output goes to DEMO_LOG; its last lines are shown when a build fails. `make test`
+# builds everything.
 DEMO_LOG := out/demo-build.log
-DEMO_GENERATOR := $(if $(shell command -v ninja 2>/dev/null),Ninja,Unix Makefiles)
 
 demo: deps
-	@set -eo pipefail; mkdir -p out; : > $(DEMO_LOG); export CMAKE_GENERATOR="$(DEMO_GENERATOR)"; \
+	@set -eo pipefail; mkdir -p out; : > $(DEMO_LOG); \
 	quiet() { "$$@" >>$(DEMO_LOG) 2>&1 || { tail -n 30 $(DEMO_LOG); echo "make demo: failed: $$* (the whole log: $(DEMO_LOG))"; exit 1; }; }; \
 	took() { echo "   (built $$((SECONDS / 60)) min $$((SECONDS % 60)) s after the start; compiler output in $(DEMO_LOG))"; }; \
 	echo "== Building the library and the command line into $(BUILD) (about 2-3 minutes on 2 cores)"; \
@@ -124,14 +133,14 @@ test-release: python
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 
 san-build: deps
-	cmake --preset asan-ubsan $(CCACHE) >/dev/null
+	cmake --preset asan-ubsan $(CCACHE) $(UNITY) >/dev/null
 	cmake --build $(SAN_BUILD) -j$(JOBS)
 
 test-sanitizers: san-build
 	cd $(SAN_BUILD) && ctest --output-on-failure -j$(JOBS)
 
 $(FUZZ_BUILD)/CMakeCache.txt: | deps
-	cmake --preset fuzz $(CCACHE) >/dev/null
+	cmake --preset fuzz $(CCACHE) $(UNITY) >/dev/null
 
 fuzz-build: deps $(FUZZ_BUILD)/CMakeCache.txt
 	cmake --build $(FUZZ_BUILD) -j$(JOBS)

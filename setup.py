@@ -29,6 +29,8 @@ class CMakeBuild(build_ext):
         jobs = os.environ.get("MOMENTLAB_JOBS", "2")
         subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release",
                         "-DBUILD_SHARED_LIBS=OFF", "-DMOMENTLAB_TESTS=OFF", "-DMOMENTLAB_PYTHON=ON",
+                        # a unity build, as the Makefile's trees: ccache then serves their objects
+                        "-DCMAKE_UNITY_BUILD=ON",
                         f"-DPython_EXECUTABLE={sys.executable}"]
                        # ccache, when there is one, serves the objects a build of this checkout made.
                        + (["-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"] if shutil.which("ccache") else []), check=True)

@@ -1,18 +1,11 @@
 #include "cdd_oracle.hpp"
 
-#include <setoper.h>
-#include <cdd.h>
+#include "cdd_setup.hpp"
 
-#include <mutex>
 #include <stdexcept>
 
 namespace momentlab::oracle {
 namespace {
-
-void init() {
-    static std::once_flag once;
-    std::call_once(once, [] { dd_set_global_constants(); });
-}
 
 // Rows [first, x, y, z]; `first` is 1 for the origin point, 0 otherwise.
 dd_MatrixPtr make(const std::vector<QVec>& rows, dd_RepresentationType rep, bool with_origin) {
@@ -120,14 +113,14 @@ int rank(std::vector<QVec> rows) {
 }  // namespace
 
 OracleCone from_generators(const std::vector<QVec>& generators) {
-    init();
+    cdd_setup();
     return run(make(generators, dd_Generator, true), true);
 }
 
 OracleCone from_generators(const std::vector<Vec3>& generators) { return from_generators(exact_all(generators)); }
 
 OracleCone from_halfspaces(const std::vector<QVec>& normals) {
-    init();
+    cdd_setup();
     if (normals.empty()) {
         // cdd needs at least one row: the trivial inequality 1 >= 0.
         return run(make({}, dd_Inequality, true), false);
@@ -138,7 +131,7 @@ OracleCone from_halfspaces(const std::vector<QVec>& normals) {
 OracleCone from_halfspaces(const std::vector<Vec3>& normals) { return from_halfspaces(exact_all(normals)); }
 
 std::vector<std::pair<mpq_class, QVec>> hull_facets(const std::vector<Vec3>& points) {
-    init();
+    cdd_setup();
     dd_MatrixPtr m = dd_CreateMatrix(static_cast<long>(points.size()), 4);
     m->representation = dd_Generator;
     m->numbtype = dd_Rational;

@@ -1,19 +1,12 @@
 #include "lp_oracle.hpp"
 
-#include <setoper.h>
-#include <cdd.h>
+#include "cdd_setup.hpp"
 
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 
 namespace momentlab::oracle {
 namespace {
-
-void init() {
-    static std::once_flag once;
-    std::call_once(once, [] { dd_set_global_constants(); });
-}
 
 // Row r of the LP in the variables (xi_1, xi_2, xi_3, t): b + a . x >= 0 (or = 0 if `equal`).
 void set_row(dd_MatrixPtr m, long r, const QVec& a, int slack, int b, bool equal) {
@@ -26,7 +19,7 @@ void set_row(dd_MatrixPtr m, long r, const QVec& a, int slack, int b, bool equal
 // The LP of `realisable`: maximise a slack t <= 1 on the strict conditions; the twist it finds
 // when t > 0, or none. 'z' is N_j . xi = 0 alone (any sliding), used to prune.
 std::optional<QVec> interior_twist(const std::vector<QVec>& n, const std::vector<QVec>& t, const std::string& labels) {
-    init();
+    cdd_setup();
     long rows = 1;  // t <= 1
     bool strict = false;
     for (char c : labels) {
@@ -90,7 +83,7 @@ bool realisable(const std::vector<QVec>& n, const std::vector<QVec>& t, const st
 bool applied_in_mode(const QMat& m, const std::vector<QVec>& n, const std::vector<QVec>& t,
                      const std::vector<std::vector<QVec>>& contact_generators,
                      const std::string& labels, const QVec& e) {
-    init();
+    cdd_setup();
     std::vector<QVec> gens;
     for (const auto& list : contact_generators) gens.insert(gens.end(), list.begin(), list.end());
     const long k = static_cast<long>(gens.size());

@@ -14,12 +14,12 @@ std::string at(const std::string& path, std::size_t i) { return path + "[" + std
 
 bool finite(const Vec2& v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }
 
-struct Box {
+struct AxisBox {
     Vec2 lo, hi;
 };
 
-Box box_of(const Polygon& p, double margin) {
-    Box b{p.front(), p.front()};
+AxisBox box_of(const Polygon& p, double margin) {
+    AxisBox b{p.front(), p.front()};
     for (const Vec2& v : p) {
         b.lo = b.lo.cwiseMin(v);
         b.hi = b.hi.cwiseMax(v);
@@ -29,7 +29,7 @@ Box box_of(const Polygon& p, double margin) {
     return b;
 }
 
-bool boxes_meet(const Box& a, const Box& b) {
+bool boxes_meet(const AxisBox& a, const AxisBox& b) {
     return a.lo.x() <= b.hi.x() && b.lo.x() <= a.hi.x() && a.lo.y() <= b.hi.y() && b.lo.y() <= a.hi.y();
 }
 
@@ -62,9 +62,9 @@ std::vector<AssemblyContact> find_assembly_contacts(const std::vector<AssemblyBo
                                                     const std::vector<Polygon>& obstacles, const ContactFinding& options) {
     std::vector<AssemblyContact> found;
     const double margin = box_margin(options.distance);
-    std::vector<Box> boxes;
-    for (const AssemblyBody& b : bodies) boxes.push_back(b.polygon.empty() ? Box{} : box_of(b.polygon, margin));
-    std::vector<Box> obstacle_boxes;
+    std::vector<AxisBox> boxes;
+    for (const AssemblyBody& b : bodies) boxes.push_back(b.polygon.empty() ? AxisBox{} : box_of(b.polygon, margin));
+    std::vector<AxisBox> obstacle_boxes;
     for (const Polygon& o : obstacles) obstacle_boxes.push_back(box_of(o, margin));
     for (std::size_t a = 0; a < bodies.size(); ++a) {
         if (bodies[a].polygon.empty()) continue;
@@ -133,7 +133,7 @@ void check_assembly(const Assembly& assembly) {
     }
     // Overlaps: pairs whose boxes meet.
     const double margin = box_margin(distance);
-    std::vector<Box> boxes(n);
+    std::vector<AxisBox> boxes(n);
     for (std::size_t k = 0; k < n; ++k) {
         if (!assembly.bodies[k].polygon.empty()) boxes[k] = box_of(assembly.bodies[k].polygon, margin);
     }

@@ -32,7 +32,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 #if defined(__ELF__) && !defined(__EMSCRIPTEN__)
 __attribute__((tls_model("initial-exec")))
 #endif
-thread_local ExactStats g_stats;
+thread_local ExactStats g_exact_stats;
 
 // e with m = f 2^e, f in [0.5, 1), for finite m > 0: what std::frexp gives, read from the bits
 // of a normal number (std::frexp is a library call, and the approximations call it for every
@@ -138,13 +138,13 @@ ExactVector::Approximation exact_approximation(const Exact3& v) {
 
 // The sign of an exact value computed in Dyadic arithmetic: the last stage, counted.
 Sign dyadic_sign(const Dyadic& x) {
-    ++g_stats.exact;
+    ++g_exact_stats.exact;
     return x.sign();
 }
 
 }  // namespace
 
-ExactStats& exact_stats() { return g_stats; }
+ExactStats& exact_stats() { return g_exact_stats; }
 
 // ---------------------------------------------------------------------------------------------
 // Dyadic vectors.
@@ -605,9 +605,9 @@ static Sign exact_sign(const Det& p, const A& a, const B& b, const C& c) {
 // The adaptor, counting what it decided without Dyadic arithmetic.
 template <class Predicate, class... Operands>
 static Sign counted_sign(const Predicate& p, const Operands&... x) {
-    const long exact_before = g_stats.exact;
+    const long exact_before = g_exact_stats.exact;
     const Sign s = filtered_sign(p, x...);
-    if (g_stats.exact == exact_before) ++g_stats.filtered;
+    if (g_exact_stats.exact == exact_before) ++g_exact_stats.filtered;
     return s;
 }
 
@@ -658,12 +658,12 @@ bool parallel(const ExactVector& a, const ExactVector& b) {
     Sign s = Sign::Zero;
     for (int k = 0; k < 3; ++k) {
         if (filter_sign(Minor{(k + 1) % 3, (k + 2) % 3}, s, pa, pb)) {
-            ++g_stats.filtered;
+            ++g_exact_stats.filtered;
             return false;
         }
     }
     if (a.same_construction(b)) return true;
-    ++g_stats.exact;
+    ++g_exact_stats.exact;
     return is_zero(cross(a.exact(), b.exact()));
 }
 

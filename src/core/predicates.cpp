@@ -16,7 +16,7 @@
 namespace momentlab {
 namespace {
 
-thread_local PredicateStats g_stats;
+thread_local PredicateStats g_predicate_stats;
 
 __extension__ typedef __int128 Int128;
 
@@ -64,10 +64,10 @@ bool integer_stage(const Predicate& p, Sign& out, const V&... x) {
 template <class Predicate, class... V>
 Sign expansion_or_dyadic_stage(const Predicate& p, const V&... x) {
     if ((in_expansion_range(x) && ...)) {
-        ++g_stats.expansion;
+        ++g_predicate_stats.expansion;
         return p(expansion(x)...).sign();
     }
-    ++g_stats.dyadic;
+    ++g_predicate_stats.dyadic;
     return p(dyadic(x)...).sign();
 }
 
@@ -98,7 +98,7 @@ Approx3 accurate_cross(const Vec3& b, const Vec3& c) {
 
 }  // namespace
 
-PredicateStats& predicate_stats() { return g_stats; }
+PredicateStats& predicate_stats() { return g_predicate_stats; }
 
 Sign exact_sign(const Dot& p, const Vec3& a, const Vec3& b) { return exact_stages(p, a, b); }
 

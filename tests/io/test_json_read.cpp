@@ -24,6 +24,7 @@
 #include "io/json_read.hpp"
 #include "json_documents.hpp"
 #include "momentlab/io/scene_json.hpp"
+#include "../common/sizes.hpp"
 
 namespace momentlab {
 namespace {
@@ -146,7 +147,7 @@ TEST(JsonRead, PlainReaderGivesTheLibrarysDocumentOrDeclines) {
     TextMaker maker(20261125);
     std::mt19937 rng(7);
     int accepted = 0, damaged_accepted = 0, errors_alike = 0;
-    constexpr int kTexts = 20000;
+    constexpr int kTexts = testing::sized(20000);
     for (int t = 0; t < kTexts; ++t) {
         std::string text = maker.document();
         for (int damaged = 0; damaged < 2; ++damaged) {
@@ -178,7 +179,7 @@ TEST(JsonRead, PlainReaderGivesTheLibrarysDocumentOrDeclines) {
     // do not convert, which it leaves to the library).
     EXPECT_GT(accepted, kTexts / 4);
     EXPECT_GT(damaged_accepted, 0);
-    EXPECT_GT(errors_alike, 100);
+    EXPECT_GT(errors_alike, testing::floor_of(100));
 }
 
 TEST(JsonRead, PlainReaderDeclinesWhatTheLibraryMustReport) {
@@ -409,7 +410,7 @@ std::string outcome(const std::function<Scene(InputWarnings*)>& read) {
 TEST(JsonRead, SceneReaderGivesTheSameByEveryRoad) {
     std::mt19937 rng(11);
     int scenes = 0, errors = 0, by_dom = 0;
-    for (int t = 0; t < 6000; ++t) {
+    for (int t = 0; t < testing::sized(6000); ++t) {
         std::string text = scene_text(rng);
         for (int damaged = 0; damaged < 2; ++damaged) {
             const std::string fast = outcome([&](InputWarnings* w) { return read_scene_text(text, w); });
@@ -428,9 +429,9 @@ TEST(JsonRead, SceneReaderGivesTheSameByEveryRoad) {
             text[at] = "{}[]\",:0-. e"[rng() % 13];
         }
     }
-    EXPECT_GT(scenes, 600);
-    EXPECT_GT(errors, 3000);
-    EXPECT_GT(by_dom, 5000);
+    EXPECT_GT(scenes, testing::floor_of(600));
+    EXPECT_GT(errors, testing::floor_of(3000));
+    EXPECT_GT(by_dom, testing::floor_of(5000));
 }
 
 // exact_decimal against Python's fractions.Fraction(text), written as sign, digits without
