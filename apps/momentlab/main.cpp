@@ -8,6 +8,7 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 #if defined(__linux__) && defined(__GLIBC__)
 #include <sys/resource.h>
@@ -135,6 +136,13 @@ int main(int argc, char** argv) {
         return fail(e.what());
     } catch (const std::bad_alloc&) {
         return fail("out of memory (the input is too large for this machine)");
+    } catch (const std::system_error& e) {
+        // A thread that cannot start (no memory for its stack under ulimit -v) is out of memory too.
+        if (e.code() == std::errc::resource_unavailable_try_again || e.code() == std::errc::not_enough_memory) {
+            return fail("out of memory (the input is too large for this machine)");
+        }
+        std::cerr << "momentlab: internal error: " << momentlab::cli::printable(e.what()) << "\n";
+        return 1;
     } catch (const std::exception& e) {
         std::cerr << "momentlab: internal error: " << momentlab::cli::printable(e.what()) << "\n";
         return 1;
