@@ -9,16 +9,21 @@ T = (t, p x t); twist xi: s N.xi > 0; f N.xi = 0 = T.xi; r N.xi = 0 < T.xi; l N.
 Forces of a mode: f the cone of n +- mu t, r the ray n - mu_k t, l the ray n + mu_k t (at p).
 E_i = {M a - c : a in closure(A_i), c in T_i}; query(e) = the feasible modes whose E_i holds e.
 Closure: force closure when the wrenches of n +- mu t positively span R^3, form closure when the
-normals' wrenches do.
+normals' wrenches do. Tilt (docs/planning.md): gravity of direction theta through the centre of
+mass, the wrench (d, c x d); E_i quasi-static is -T_i. The plan's intervals and unique arcs are
+checked at their middles, 1e-6 inside and outside each end (the ends are rounded angles), and
+at random angles: the goal's set holds the direction exactly where an interval says so, and
+alone exactly where a unique arc says so.
 
 Scenes: random dyadic ones (1-3 contacts, coordinates in eighths), degenerate ones (parallel,
 concurrent, coincident contacts, mu = 0), each also moved exactly by (1e8, -1e8), turned by 90
 degrees, reflected in x = 0, scaled by 2^40 and 2^-40, with huge and tiny mu. Wrenches: random,
 and points M a - c of a mode's set built from its own generators (on its boundary). Each scene
 is asked of the CLI (modes, query --wrenches --json, closure --json) and of the Python module
-(analyze(...).modes, .query, momentlab.query, closure).
+(analyze(...).modes, .query, momentlab.query, closure); two goals of each scene as drawn,
+moved, turned and reflected are planned by `plan tilt` (dynamic or quasi-static at random).
 
-Usage: /usr/bin/python3 tools/attack44.py [--seed 44] [--scenes 120] [--bin build/release/momentlab]
+Usage: /usr/bin/python3 tools/attack44.py [--seed 44] [--scenes 100] [--bin build/release/momentlab]
        [--python build/release/python]
 Prints the count of cases per question and every disagreement; exit status 1 if any.
 """
@@ -29,6 +34,7 @@ import argparse
 import collections
 import itertools
 import json
+import math
 import os
 import random
 import subprocess
@@ -196,6 +202,58 @@ def in_E(cs, M, mode, e):
     return feasible(eqs, geqs, 3, k)
 
 
+def in_E_quasi_static(cs, mode, e):
+    """e in -T_mode (no inertia: the contacts alone balance e)."""
+    g = generators(cs, mode)
+    eqs = [([gg[i] for gg in g], -F(e[i])) for i in range(3)]
+    return feasible(eqs, [], 0, len(g))
+
+
+def holds(cs, M, mode, e, quasi_static):
+    return in_E_quasi_static(cs, mode, e) if quasi_static else in_E(cs, M, mode, e)
+
+
+def tilt_wrench(scene, theta):
+    """The wrench of a force of direction theta through the centre of mass (exact values of the
+    rounded cosine and sine: every set is a cone, so the magnitude does not matter)."""
+    d = (F(math.cos(theta)), F(math.sin(theta)))
+    c = tuple(F(x) for x in scene["body"]["com"])
+    return wrench(c, d)
+
+
+def inside(arcs, theta):
+    two_pi = 2 * math.pi
+    for a, b in arcs:
+        t = a + ((theta - a) % two_pi)
+        if t <= b:
+            return True
+    return False
+
+
+def tilt_checks(rng, cs, M, scene, modes, goal, quasi_static, plan, delta=1e-6):
+    """(question, angle, what the plan says, what the oracle says) for angles inside and just
+    outside every interval and unique arc, and random ones, away from the plan's ends by 2 delta."""
+    intervals, unique = plan["intervals"], plan.get("unique", [])
+    ends = [x for a, b in intervals + unique for x in (a, b)]
+    angles = []
+    for a, b in intervals + unique:
+        angles += [a - delta, b + delta]
+        if b - a > 4 * delta:
+            angles += [a + delta, (a + b) / 2, b - delta]
+    angles += [rng.uniform(-math.pi, math.pi) for _ in range(4)]
+    out = []
+    for theta in angles:
+        if any(abs(math.remainder(theta - x, 2 * math.pi)) < delta / 2 for x in ends):
+            continue
+        e = tilt_wrench(scene, theta)
+        others = [m for m in modes if m != goal and holds(cs, M, m, e, quasi_static)]
+        in_goal = holds(cs, M, goal, e, quasi_static)
+        out.append(("tilt interval", theta, inside(intervals, theta), in_goal))
+        if plan.get("unique") is not None:
+            out.append(("tilt unique", theta, inside(unique, theta), in_goal and not others))
+    return out
+
+
 def query_of(cs, M, modes, e):
     return sorted(m for m in modes if in_E(cs, M, m, e))
 
@@ -341,7 +399,7 @@ def cli(binary, *args):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seed", type=int, default=44)
-    ap.add_argument("--scenes", type=int, default=120)
+    ap.add_argument("--scenes", type=int, default=100)
     ap.add_argument("--bin", default="build/release/momentlab")
     ap.add_argument("--python", default="build/release/python")
     args = ap.parse_args()
@@ -386,6 +444,18 @@ def main():
             count["closure verdicts (Python)"] += 2
             if (pc["force_closure"], pc["form_closure"]) != (force, form):
                 wrong.append(f"closure (Python): {tag}: {pc['force_closure']} {pc['form_closure']}, oracle {force} {form}")
+            if name in ("as drawn", "moved 1e8", "turned 90", "reflected"):
+                for goal in rng.sample(modes, min(2, len(modes))):
+                    qs = rng.random() < 0.5
+                    status, out, err = cli(args.bin, "plan", "tilt", path, "--goal", goal, "--json", *(["--quasi-static"] if qs else []))
+                    if status != 0:
+                        wrong.append(f"tilt: {tag} goal {goal}: exit {status} {err.strip()}")
+                        continue
+                    plan = json.loads(out)
+                    for question, theta, said, truth in tilt_checks(rng, cs, M, scene, modes, goal, qs, plan):
+                        count[question + (" (quasi-static)" if qs else " (dynamic)")] += 1
+                        if said != truth:
+                            wrong.append(f"{question}: {tag} goal {goal} quasi-static {qs} theta {theta!r}: CLI {said}, oracle {truth}; plan {out.strip()}")
             ws = wrenches_for(rng, cs, M, modes, 4)
             wpath = os.path.join(tmp, "w.txt")
             with open(wpath, "w") as fh:
