@@ -8,8 +8,10 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 #if defined(__linux__) && defined(__GLIBC__)
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #endif
@@ -48,7 +50,9 @@ int finish(int status) {
 // about 340 MB, and a page touched the first time costs a page fault. glibc reads these settings
 // (GLIBC_TUNABLES) only when a program starts, so the command starts itself again once with
 // them added to any the caller set; a caller who set glibc.malloc.hugetlb is left alone, and
-// so is a run under another loader (valgrind). If that fails, it runs on as it is.
+// so is a run under another loader (valgrind) or a limited address space (ulimit -v: there a
+// top pad of 256 MB made the libraries' own start-up allocations fail, a crash before main
+// under a limit of 200 MB). If that fails, it runs on as it is.
 void tune_malloc_for_big_inputs(int argc, char** argv) {
 #if defined(__linux__) && defined(__GLIBC__)
     constexpr off_t kBig = off_t{1} << 20;
@@ -58,6 +62,8 @@ void tune_malloc_for_big_inputs(int argc, char** argv) {
         big = ::stat(argv[i], &st) == 0 && S_ISREG(st.st_mode) && st.st_size >= kBig;
     }
     if (!big) return;
+    struct rlimit space {};
+    if (::getrlimit(RLIMIT_AS, &space) != 0 || space.rlim_cur != RLIM_INFINITY) return;
     const char* caller = std::getenv("GLIBC_TUNABLES");
     std::string tunables = caller ? caller : "";
     if (tunables.find("glibc.malloc.hugetlb") != std::string::npos) return;
@@ -130,6 +136,13 @@ int main(int argc, char** argv) {
         return fail(e.what());
     } catch (const std::bad_alloc&) {
         return fail("out of memory (the input is too large for this machine)");
+    } catch (const std::system_error& e) {
+        // A thread that cannot start (no memory for its stack under ulimit -v) is out of memory too.
+        if (e.code() == std::errc::resource_unavailable_try_again || e.code() == std::errc::not_enough_memory) {
+            return fail("out of memory (the input is too large for this machine)");
+        }
+        std::cerr << "momentlab: internal error: " << momentlab::cli::printable(e.what()) << "\n";
+        return 1;
     } catch (const std::exception& e) {
         std::cerr << "momentlab: internal error: " << momentlab::cli::printable(e.what()) << "\n";
         return 1;

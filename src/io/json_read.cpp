@@ -8,6 +8,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <type_traits>
 
 namespace momentlab::json_read {
@@ -186,8 +187,20 @@ void Builder::key(std::string_view k, Text lifetime) {
             if (m.key == k) f.member = m.schema;
         }
     }
-    if (lifetime == Text::Transient) k = copies_.emplace_back(k);  // the document's copy may move
+    if (lifetime == Text::Transient) {  // the document's copy may move; an unread key's copy lives until the next key
+        if (f.unread_key_copied) {
+            copies_.back() = k;
+        } else {
+            copies_.emplace_back(k);
+        }
+        k = copies_.back();
+        f.unread_key_copied = f.member == nullptr;
+    }
     f.key = k;
+    // Repeats are looked for where a key's value is read: in an object the reader skips, or
+    // among a kept object's unknown fields, they change nothing, and their keys would cost
+    // memory that follows the text rather than the scene.
+    if (f.member == nullptr) return;
     bool repeated = false;
     if (f.many == nullptr) {
         repeated = std::find(keys_.begin() + static_cast<std::ptrdiff_t>(f.keys_from), keys_.end(), k) != keys_.end();
@@ -628,22 +641,47 @@ Vec2 nonzero(const Vec2& v, const Path& path) {
     return v;
 }
 
+namespace {
+constexpr std::size_t kListedUnknown = 20;
+constexpr const char* kMoreUnknown = "$: ";
+}  // namespace
+
 void known_fields(const Value& obj, const Path& path, std::initializer_list<std::string_view> known,
                   InputWarnings* warnings) {
     if (warnings == nullptr || !obj.is_object()) return;
     const auto is_known = [&](std::string_view key) { return std::find(known.begin(), known.end(), key) != known.end(); };
-    std::vector<std::string_view> unknown;
+    // The first kListedUnknown unknown fields of a document are listed, one a line, in the order
+    // of their names; the rest are counted in one last line (a file of millions of unknown
+    // fields gives a few lines, and only the names listed are held).
+    const std::size_t room = kListedUnknown - std::min(warnings->size(), kListedUnknown);
+    std::vector<std::string_view> first;  // the smallest `room` unknown names, among others
+    std::size_t unknown = 0;
     obj.for_each_member([&](std::string_view key, const Value&) {
-        if (!is_known(key)) unknown.push_back(key);
+        if (is_known(key)) return;
+        ++unknown;
+        first.push_back(key);
+        if (first.size() > 2 * room + 64) {
+            std::nth_element(first.begin(), first.begin() + static_cast<std::ptrdiff_t>(room), first.end());
+            first.resize(room);
+        }
     });
-    if (unknown.empty()) return;
-    std::sort(unknown.begin(), unknown.end());
+    if (unknown == 0) return;
+    std::sort(first.begin(), first.end());
+    first.resize(std::min(first.size(), room));
     std::string expected;
     for (const std::string_view k : known) expected.append(expected.empty() ? "" : ", ").append(k);
     const std::string at = path.str();
-    for (const std::string_view key : unknown) {
+    for (const std::string_view key : first) {
         warnings->push_back(at + "." + std::string(key) + ": unknown field, ignored (expected " + expected + ")");
     }
+    std::size_t more = unknown - first.size();
+    if (more == 0) return;
+    if (warnings->size() > kListedUnknown) {
+        more += std::stoull(warnings->back().substr(std::strlen(kMoreUnknown)));
+        warnings->pop_back();
+    }
+    warnings->push_back(kMoreUnknown + std::to_string(more) + " more unknown fields, ignored (the first " +
+                        std::to_string(kListedUnknown) + " are listed)");
 }
 
 }  // namespace momentlab::json_read

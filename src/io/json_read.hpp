@@ -242,6 +242,7 @@ private:
         const Schema* member = nullptr;  // what is kept of that key's value (nullptr: nothing)
         std::size_t keys_from = 0, copies_from = 0;
         std::unique_ptr<std::unordered_set<std::string_view>> many;  // its keys, once there are many
+        bool unread_key_copied = false;  // copies_.back() is the last key's copy, a key whose value is not read
     };
     static constexpr std::size_t kNoNode = std::numeric_limits<std::size_t>::max();
     static constexpr std::size_t kFewKeys = 16;

@@ -276,9 +276,12 @@ void tell_uniqueness(PushCase& c, const std::vector<const PushPiece*>& shown, co
     c.unique_directions = e.directions;
 }
 
+thread_local std::size_t cases_solved = 0;
+
 PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, ContactMode slip, double mu,
                     const std::optional<FreeParts>& free, const Cone& goal, const std::vector<Polygon>& obstacles,
                     const ModeForces& goal_mode, const PlanContext& context) {
+    ++cases_solved;
     PushCase c;
     c.feature = f;
     c.slip = slip;
@@ -325,6 +328,8 @@ PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, c
 }
 
 }  // namespace
+
+std::size_t push_cases_solved() { return cases_solved; }
 
 std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options) {
     return plan_push(scene, goal, options, PlanContext{});

@@ -156,4 +156,8 @@ struct PushOptions {
 void plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options, const PlanContext& context,
                const std::function<void(PushCase&&)>& each);
 
+/// How many pushing cases plan_push has solved in the calling thread since it started: the
+/// tests' check that a case asked for alone costs one case, not the table's 6 n.
+[[nodiscard]] std::size_t push_cases_solved();
+
 }  // namespace momentlab
