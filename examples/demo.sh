@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The main job on the bundled examples: textbook problems first (docs/problems.md), then the
 # paper (Mason 1991): moment labels of its Figure 1 and 2 force sets, the contact problem (every
-# mode of the bundled scenes with its sets, and which mode an applied wrench produces), planning
-# by tilting, pushing and compliance; last, the figures drawn from these files into OUT
-# (default: out/).
+# mode of the bundled scenes with its sets, and which mode an applied wrench produces), grasp
+# closure, assemblies of several bodies (`stand`), planning by tilting, pushing and compliance;
+# last, the figures drawn from these files into OUT (default: out/).
 set -euo pipefail
 bin=${1:?usage: demo.sh path/to/momentlab [OUT]}
 out=${2:-out}
@@ -52,6 +52,12 @@ show "... pressed down and pushed at exactly mu: held at rest or sliding right" 
 show "Four frictionless contacts at a square's side midpoints: a torque about the centre is unresisted" closure "$here/closure-four-midpoints.json"
 show "Five contacts: form closure" closure "$here/closure-five-contacts.json"
 show "Two frictional fingers nearly opposite: force closure, not form closure" closure "$here/closure-antipodal-fingers.json"
+
+# Assemblies (docs/assemblies.md works each by hand): several bodies under gravity; bodies 1..N, 0 the world.
+show "Two blocks of Modern Robotics (ch. 12): body 1 leans on body 2; with mu = 0.1 at its foot it needs 10/31, so it falls" \
+    stand "$here/assembly-modern-robotics.json"
+show "A ladder on a frictionless wall, mu = 3/8 = 1 / (2 tan a) at the floor: it stands, on the boundary; gravity (gamma, -1) keeps it up for gamma in [0, 3/2]" \
+    stand "$here/assembly-ladder.json" --tilt
 
 # Planning (the paper's section 3): reaching the goal rr (slide along the wall, no turning).
 show "Tilting the block along the wall: which gravity directions slide it right (rr)" plan tilt "$here/figure-3-block-along-wall.json" --goal rr

@@ -33,6 +33,10 @@ int run(const AnalyzeOptions& o) {
         // of megabytes, the text nlohmann's dump(2) writes for {"modes": [...]}.
         JsonWriter w(std::cout);
         w.begin_object();
+        if (const nlohmann::json found = found_contacts_json(p.scene); !found.empty()) {
+            w.key("found_contacts");
+            write_json_value(w, found);
+        }
         w.key("modes");
         w.begin_array();
         for (ModeForces& m : p.analysis) {
@@ -70,16 +74,19 @@ int run(const AnalyzeOptions& o) {
     }
     // The whole answer first: a value that cannot be printed stops it before any of it is.
     std::ostringstream out;
-    out << p.analysis.size() << " contact modes" << (o.quasi_static ? " (quasi-static: E = -T, inertia neglected)" : "") << "\n";
+    out << found_contacts_text(p.scene) << p.analysis.size() << " contact modes"
+        << (o.quasi_static ? " (quasi-static: E = -T, inertia neglected)" : "") << "; each region is conv(vertices) + "
+        << "cone(rays) + span(lines), " << kRegionDigits << " digits (--json: the sets as well)\n";
     for (const ModeForces& m : p.analysis) {
         const Labels centres = rotation_centres(m.mode);
         const Labels applied(m.applied);
         out << "  " << std::left << std::setw(static_cast<int>(p.scene.contacts.size()) + 2) << m.mode.letters
-                  << describe_mode(p.scene, m.mode.letters) << "\n"
-                  << "      rotation centres  + " << region_text(centres.plus()) << ";  - "
-                  << region_text(centres.minus()) << "\n"
-                  << "      applied wrenches E: " << m.applied.kind() << "; labels + "
-                  << region_text(applied.plus()) << ";  - " << region_text(applied.minus()) << "\n";
+            << describe_mode(p.scene, m.mode.letters) << "\n"
+            << "      rotation centres   + " << region_text(centres.plus()) << "\n"
+            << "                         - " << region_text(centres.minus()) << "\n"
+            << "      applied wrenches E (" << m.applied.kind() << "), labels\n"
+            << "                         + " << region_text(applied.plus()) << "\n"
+            << "                         - " << region_text(applied.minus()) << "\n";
     }
     std::cout << out.str();
     return 0;

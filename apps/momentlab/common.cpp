@@ -16,6 +16,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 
 namespace momentlab::cli {
 namespace {
@@ -297,8 +298,76 @@ std::string describe_mode(const Scene& scene, const std::string& letters) {
 
 std::string region_text(const Region& r) {
     std::string s = r.kind();
-    for (const Vec2& v : r.vertices) s += " " + fmt(v);
+    const char* separator = ": ";
+    for (const auto& [name, list] : {std::pair{"vertices", &r.vertices}, std::pair{"rays", &r.rays}, std::pair{"lines", &r.lines}}) {
+        if (list->empty()) continue;
+        s += separator;
+        s += name;
+        for (const Vec2& v : *list) s += " " + fmt(v, kRegionDigits);
+        separator = "; ";
+    }
     return s;
+}
+
+namespace {
+
+std::string polygon_path(bool body, std::size_t obstacle) {
+    return body ? "$.body.polygon" : "$.obstacles[" + std::to_string(obstacle) + "].polygon";
+}
+
+std::string polygon_name(bool body, std::size_t obstacle) {
+    return body ? "the body" : "obstacle " + std::to_string(obstacle);
+}
+
+}  // namespace
+
+std::string found_contacts_text(const Scene& scene) {
+    if (scene.origins.empty()) return {};
+    std::string out = "contacts found from the polygons (vertex and edge indices from 0, as in the file):\n";
+    for (std::size_t j = 0; j < scene.origins.size(); ++j) {
+        const ContactOrigin& o = scene.origins[j];
+        out += "  contact " + std::to_string(j + 1) + " at " + fmt(scene.contacts[j].point) + ", normal " +
+               fmt(scene.contacts[j].normal) + ": vertex " + std::to_string(o.vertex) + " of " +
+               polygon_name(o.body_vertex, o.obstacle) + " on edge " + std::to_string(o.edge) + " of " +
+               polygon_name(!o.body_vertex, o.obstacle) + "\n";
+    }
+    return out;
+}
+
+nlohmann::json found_contacts_json(const Scene& scene) {
+    nlohmann::json out = nlohmann::json::array();
+    for (std::size_t j = 0; j < scene.origins.size(); ++j) {
+        const ContactOrigin& o = scene.origins[j];
+        out.push_back({{"point", vector_json(scene.contacts[j].point)},
+                       {"normal", vector_json(scene.contacts[j].normal)},
+                       {"vertex", {{"polygon", polygon_path(o.body_vertex, o.obstacle)}, {"index", o.vertex}}},
+                       {"edge", {{"polygon", polygon_path(!o.body_vertex, o.obstacle)}, {"index", o.edge}}}});
+    }
+    return out;
+}
+
+void write_json_value(JsonWriter& w, const nlohmann::json& j) {
+    switch (j.type()) {
+        case nlohmann::json::value_t::object:
+            w.begin_object();
+            for (const auto& [key, item] : j.items()) {
+                w.key(key);
+                write_json_value(w, item);
+            }
+            w.end_object();
+            return;
+        case nlohmann::json::value_t::array:
+            w.begin_array();
+            for (const auto& item : j) write_json_value(w, item);
+            w.end_array();
+            return;
+        case nlohmann::json::value_t::string: w.value(j.get<std::string>()); return;
+        case nlohmann::json::value_t::boolean: w.value(j.get<bool>()); return;
+        case nlohmann::json::value_t::number_integer:
+        case nlohmann::json::value_t::number_unsigned: w.value(j.get<long long>()); return;
+        case nlohmann::json::value_t::number_float: w.value(j.get<double>()); return;
+        default: throw std::logic_error("write_json_value: null is not written");
+    }
 }
 
 std::string stem(const std::string& path) { return printable(std::filesystem::path(path).stem().string()); }

@@ -14,6 +14,8 @@
 
 #include "momentlab/momentlab.hpp"
 #include "momentlab/io/files.hpp"
+#include "momentlab/io/json_writer.hpp"
+#include "momentlab/io/json_output.hpp"
 
 namespace momentlab::cli {
 
@@ -134,8 +136,22 @@ std::string degrees(double radians);
 std::string printable(const std::string& text);
 /// "contact 2 slides along +t, floor separates, ..." for the letters of a mode.
 std::string describe_mode(const Scene& scene, const std::string& letters);
-/// "polygon (0, 1) (2, 3) ...": a labelled region's kind and vertices.
+/// Significant digits of region_text's numbers.
+inline constexpr int kRegionDigits = 10;
+/// A region completely, on one line: its kind, then those of its vertices, rays and lines it has,
+/// "unbounded: vertices (0, 1) (2, 3); rays (1, 0) (0, 1)", numbers with kRegionDigits digits:
+/// the region is conv(vertices) + cone(rays) + span(lines).
 std::string region_text(const Region& r);
+/// The contacts found from the polygons (none when the scene gave its contacts), one line each:
+/// "  contact 1 at (0, 0), normal (0, 1): vertex 0 of the body on edge 2 of obstacle 0", after a
+/// heading line.
+std::string found_contacts_text(const Scene& scene);
+/// The same as the JSON array of "found_contacts": {"point", "normal", "vertex": {"polygon",
+/// "index"}, "edge": {"polygon", "index"}}, polygons named by their path in the scene file
+/// ("$.body.polygon", "$.obstacles[0].polygon"); empty when the scene gave its contacts.
+nlohmann::json found_contacts_json(const Scene& scene);
+/// A JSON value (no nulls) through the writer, as dump(2) would write it.
+void write_json_value(JsonWriter& w, const nlohmann::json& j);
 /// The file name without directory and extension (for titles).
 std::string stem(const std::string& path);
 

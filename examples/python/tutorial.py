@@ -86,8 +86,8 @@ assert a.query([0.0, -1.0, -0.5]) == ["ff"]  # at rest on the floor
 # One question about a scene not analysed, as a simulator asks at each step: ml.query answers
 # it exactly without building every mode's sets (docs/robustness.md).
 once = ml.query(block, [1.0, -1.0, -0.75])
-print("   the same push asked once, without the analysis:", once["modes"], once["verdict"])
-assert once["modes"] == ["rr"]
+print("   the same push asked once, without the analysis:", once.modes, once.verdict)
+assert once.modes == ["rr"] and once.verdict == "unique"
 fig, axes = plt.subplots(1, 3, figsize=(13, 4.5))
 mp.mode_sets(axes, a, "rr")
 save(fig, "figure-3")
@@ -107,10 +107,10 @@ save(fig, "figure-4")
 # --- Figure 5: tilting -----------------------------------------------------------------------
 print("Figure 5: which tilts (gravity directions) slide the block right (rr)")
 tilt = ml.plan_tilt(a, "rr")
-print("   intervals (radians):", tilt["intervals"])
+print("   intervals (radians):", tilt.intervals)
 # By hand (docs/planning.md): gravity g = (cos a, sin a) through the centre of mass slides the
 # block right when it points into the floor and beats friction: a in [-atan 2, 0].
-(lo, hi), = tilt["intervals"]
+(lo, hi), = tilt.intervals
 assert math.isclose(lo, -math.atan(2), abs_tol=1e-12) and math.isclose(hi, 0.0, abs_tol=1e-12)
 fig, ax = plt.subplots(figsize=(6, 5))
 mp.tilt(ax, a, "rr")
@@ -119,11 +119,11 @@ save(fig, "figure-5")
 # --- Figure 6: pushing -----------------------------------------------------------------------
 print("Figure 6: a finger pushing the trailing edge (edge 3), slipping l, to slide the block right")
 cases = ml.plan_push(a, "rr")
-case = next(c for c in cases if c["feature"] == "edge 3" and c["slip"] == "l")
-print("   verdict:", case["verdict"], " touch:", case["touch"])
+case = next(c for c in cases if c.feature == "edge 3" and c.slip == "l")
+print("   verdict:", case.verdict, " touch:", case.touch)
 # By hand (docs/planning.md): force (1, -1/2) at (0, y) with y in [3/16, 1/2].
-assert case["verdict"] == "feasible"
-(p, q), = case["touch"]
+assert case.verdict == "feasible"
+(p, q), = case.touch
 assert sorted([p[1], q[1]]) == [3 / 16, 1 / 2]
 fig, ax = plt.subplots(figsize=(6, 5))
 mp.push(ax, a, "rr")

@@ -20,7 +20,6 @@ command line prints ("$.contacts[0].mu: ..."). The reference is docs/python.md.
 
 from __future__ import annotations
 
-import math
 import os
 from dataclasses import dataclass, field
 from typing import Any, Iterable, Optional, Sequence
@@ -38,9 +37,15 @@ from ._momentlab import (
     line_of_force,
 )
 from . import _momentlab
+from .results import (
+    Band, BestMargins, CentrePlan, Closure, ClosureTest, Compliance, DirectionPlan, Labelling, Magnitudes,
+    Margins, Push, PushCase, QueryAnswer, RegionData,
+)
 
 __all__ = [
     "Analysis", "Body", "Cone", "Contact", "Labels", "ModeSets", "Region", "Scene",
+    "Band", "BestMargins", "CentrePlan", "Closure", "ClosureTest", "Compliance", "DirectionPlan", "Labelling",
+    "Magnitudes", "Margins", "Push", "PushCase", "QueryAnswer", "RegionData",
     "analyze", "closure", "contacts", "find_contacts", "force", "force_set_from_json", "forces_through_point",
     "friction_cone", "labels", "line_of_force", "plan_comply", "plan_push", "plan_tilt", "push_line",
     "pure_moments", "query", "wrench",
@@ -305,15 +310,16 @@ class Analysis:
             return self._analysis.query_one(a)
         return self._analysis.query_batch(a)
 
-    def margins(self, w) -> dict:
+    def margins(self, w) -> Margins:
         """How far the wrench (shape (3,)) may move before the answer changes (docs/design.md,
-        Margins): {'inside': {mode: distance to the boundary of its E}, 'to_other': distance to
-        the nearest other mode's E (inf when none), 'reference', 'length'}: distances of
-        (fx, fy, tau / length), tau about the reference."""
+        Margins): Margins(.inside: {mode: distance to the boundary of its E}, .to_other: distance
+        to the nearest other mode's E (math.inf when none), .reference, .length): distances (N)
+        of (fx, fy, tau / length), tau about the reference (m)."""
         a = _wrenches(w)
         if a.ndim != 1:
             raise ValueError("wrench: margins take one wrench of shape (3,)")
-        return self._analysis.margins(a)
+        m = self._analysis.margins(a)
+        return Margins(dict(m["inside"]), float(m["to_other"]), tuple(m["reference"]), float(m["length"]))
 
     def verdict(self, w):
         """'unique', 'ambiguous' or 'inconsistent' for one wrench; for a batch, an array of them."""
@@ -351,16 +357,16 @@ def analyze(scene: Scene, quasi_static: bool = False) -> Analysis:
     return Analysis(scene, quasi_static)
 
 
-def query(scene: Scene, w=None, quasi_static: bool = False, gravity=None, forces=None) -> dict:
+def query(scene: Scene, w=None, quasi_static: bool = False, gravity=None, forces=None) -> QueryAnswer:
     """Which modes the applied wrench produces on a scene not analysed, exactly: w (fx, fy, tau
     about the origin, N and N m), plus gravity (gx, gy, m/s^2, through the centre of mass) and
-    forces [(point, force), ...] (m, N) when given. {'modes': the mode strings, sorted, 'verdict':
-    'unique' | 'ambiguous' | 'inconsistent'}: the same modes as analyze(scene,
+    forces [(point, force), ...] (m, N) when given. A QueryAnswer (.modes: the mode strings,
+    sorted; .verdict: 'unique' | 'ambiguous' | 'inconsistent'), as `query --json`: the same modes as analyze(scene,
     quasi_static).query(w), found the fast way (certified doubles for 2 to 12 contacts, the exact
     walk otherwise; docs/robustness.md, "One question about a new scene")."""
     if not isinstance(scene, Scene):
         raise ValueError("query: expected a momentlab.Scene")
-    return _momentlab.query(scene._scene, w, _flag(quasi_static, "quasi_static"), gravity, _forces(forces))
+    return QueryAnswer.from_json(_momentlab.query(scene._scene, w, _flag(quasi_static, "quasi_static"), gravity, _forces(forces)))
 
 
 def wrench(point, force) -> list:
@@ -375,23 +381,14 @@ def _forces(forces):
     return [tuple(f) for f in _sequence(forces, "forces")]
 
 
-def _unbounded_as_inf(value):
-    # The JSON views say "unbounded" where Python says math.inf (for numbers: a region's kind
-    # "unbounded" stays a word).
-    if isinstance(value, dict):
-        return {k: v if k == "kind" else _unbounded_as_inf(v) for k, v in value.items()}
-    if isinstance(value, list):
-        return [_unbounded_as_inf(v) for v in value]
-    return math.inf if value == "unbounded" else value
-
-
-def closure(scene: Scene, reference=None, length=None) -> dict:
-    """Grasp closure of the scene's contacts, decided exactly (the body is optional):
-    {'form_closure', 'force_closure', 'form': {'holds', 'quality' | 'unresisted_wrench'},
-    'force': {...}, 'reference', 'length', 'metric'} (docs/design.md, Closure)."""
+def closure(scene: Scene, reference=None, length=None) -> Closure:
+    """Grasp closure of the scene's contacts, decided exactly (the body is optional): a Closure
+    (.form_closure, .force_closure, .form and .force as ClosureTest(holds, quality |
+    unresisted_wrench), .reference, .length, .metric), as `momentlab closure --json`
+    (docs/design.md, Closure). reference (m) and length (m) set the quality's metric."""
     if not isinstance(scene, Scene):
         raise ValueError("closure: expected a momentlab.Scene")
-    return _unbounded_as_inf(_momentlab.closure(scene._scene, reference, None if length is None else _number(length, "length")))
+    return Closure.from_json(_momentlab.closure(scene._scene, reference, None if length is None else _number(length, "length")))
 
 
 def friction_cone(point, normal, mu) -> Cone:
@@ -435,34 +432,39 @@ def _analysis_of(what) -> Analysis:
     raise ValueError("expected a momentlab.Scene or Analysis")
 
 
-def plan_tilt(scene, goal: str, wrench=None, forces=None) -> dict:
-    """The tilts (gravity directions, radians from +x) that produce mode `goal`:
-    {'goal', 'intervals': [[from, to], ...], 'best', 'margin', 'unique', 'shared', 'best_unique',
-    'best_margins'} (best and the rest when feasible). With `wrench` (FX, FY, TAU) acting besides
-    the tilted force, the directions for which some magnitude works and 'best_magnitudes'."""
-    return _unbounded_as_inf(_analysis_of(scene)._analysis.plan_tilt(_goal(goal), wrench, _forces(forces)))
+def plan_tilt(scene, goal: str, wrench=None, forces=None) -> DirectionPlan:
+    """The tilts (gravity directions, radians from +x) that produce mode `goal`: a DirectionPlan
+    (.goal, .intervals [(from, to), ...], .best, .margin, .unique, .shared, .best_unique,
+    .best_margins; best and the rest None when infeasible), as `plan tilt --json`. With `wrench`
+    (FX, FY, TAU; N, N m) or `forces` acting besides the tilted force, the directions for which
+    some magnitude works and .best_magnitudes (N)."""
+    return DirectionPlan.from_json(_analysis_of(scene)._analysis.plan_tilt(_goal(goal), wrench, _forces(forces)))
 
 
 def plan_push(scene, goal: str, mu: float = 0.5, ignore_interference: bool = False, gravity=None, wrench=None,
               forces=None) -> list:
-    """The pushing table for mode `goal`: one dict per feature (edge, vertex) and finger slip
-    (l, f, r) with 'verdict', 'feasible', 'touch', 'directions', 'best', and whether the goal is
-    'unique' or 'shared' there (docs/planning.md). With `gravity` (GX, GY) and/or a fixed `wrench`
-    acting besides the push: the pushes for which some magnitude works, with 'best_magnitudes'."""
-    return _unbounded_as_inf(_analysis_of(scene)._analysis.plan_push(_goal(goal), _number(mu, "mu"), bool(ignore_interference),
-                                                                      gravity, wrench, _forces(forces)))
+    """The pushing table for mode `goal`: one PushCase per feature (edge, vertex) and finger slip
+    (l, f, r) with .verdict, .feasible, .touch, .directions (radians), .best, and whether the goal
+    is .unique or .shared there, as the "cases" of `plan push --json` (docs/planning.md); mu is
+    the finger's friction. With `gravity` (GX, GY; m/s^2) and/or a fixed `wrench` acting besides
+    the push: the pushes for which some magnitude works, with .best_magnitudes (N)."""
+    cases = _analysis_of(scene)._analysis.plan_push(_goal(goal), _number(mu, "mu"), bool(ignore_interference),
+                                                    gravity, wrench, _forces(forces))
+    return [PushCase.from_json(c) for c in cases]
 
 
-def plan_comply(scene, goal: str, centre=None, gravity=None, wrench=None, forces=None) -> dict:
-    """Compliance: {'goal', 'labels': {'plus', 'minus'} regions of E_goal as plain data (the
-    centres outside both work), 'centre': {'point', 'label', 'verdict', 'intervals', 'best',
-    'margin', 'unique', 'shared', ...}} for a given centre (as `plan comply --json`)."""
-    return _unbounded_as_inf(_analysis_of(scene)._analysis.plan_comply(_goal(goal), centre, gravity, wrench, _forces(forces)))
+def plan_comply(scene, goal: str, centre=None, gravity=None, wrench=None, forces=None) -> Compliance:
+    """Compliance, as `plan comply --json`: a Compliance (.goal, .labels: the .plus and .minus
+    RegionData of E_goal's moment labels (the centres outside both work), .centre: a CentrePlan
+    (.point, .label, .verdict, .intervals, .best, .margin, .unique, .shared, ...) for a given
+    centre (m), else None)."""
+    return Compliance.from_json(_analysis_of(scene)._analysis.plan_comply(_goal(goal), centre, gravity, wrench, _forces(forces)))
 
 
 def push_line(scene, point, direction, gravity=None, wrench=None, forces=None) -> list:
-    """The force lambda * direction through `point`, lambda from 0 up, added to the fixed wrench
-    (`gravity` through the centre of mass, plus `wrench`): a list of bands {'from', 'to',
-    'from_closed', 'to_closed', 'modes', 'verdict'} ('to' is math.inf for the last), as
-    `momentlab query --push X Y DX DY --json` gives them."""
-    return _unbounded_as_inf(_analysis_of(scene)._analysis.push_line(point, direction, gravity, wrench, _forces(forces)))
+    """The force lambda * direction through `point` (m), lambda (N) from 0 up, added to the fixed
+    wrench (`gravity` (m/s^2) through the centre of mass, plus `wrench`): a list of Bands
+    (.from_, .to, .from_closed, .to_closed, .modes, .verdict; .to is math.inf for the last), as
+    the "bands" of `momentlab query --push X Y DX DY --json`."""
+    bands = _analysis_of(scene)._analysis.push_line(point, direction, gravity, wrench, _forces(forces))
+    return [Band.from_json(b) for b in bands]

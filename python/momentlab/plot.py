@@ -231,10 +231,10 @@ def tilt(ax, analysis: Analysis, goal: str, view=None):
     com = np.asarray(analysis.scene.body["com"])
     scene(ax, analysis.scene, box, faint=True)
     labels(ax, analysis[goal].applied, box, title=f"tilts that produce {goal}")
-    for lo, hi in plan["intervals"]:
+    for lo, hi in plan.intervals:
         _arc(ax, com, lo, hi, 0.15 * size, FRICTION)
-    if "best" in plan:
-        d = np.array([math.cos(plan["best"]), math.sin(plan["best"])])
+    if plan.best is not None:
+        d = np.array([math.cos(plan.best), math.sin(plan.best)])
         ax.annotate("", xy=com + 0.25 * size * d, xytext=com,
                     arrowprops=dict(arrowstyle="-|>", color=FRICTION, lw=2), zorder=8)
     return ax
@@ -249,14 +249,14 @@ def push(ax, analysis: Analysis, goal: str, mu: float = 0.5, ignore_interference
     size = max(box[2] - box[0], box[3] - box[1])
     scene(ax, analysis.scene, box)
     for c in cases:
-        if c["verdict"] not in ("feasible", "boundary"):
+        if c.verdict not in ("feasible", "boundary"):
             continue
-        style = "-" if c["feasible"] else ":"
-        for a, b in c["touch"]:
+        style = "-" if c.feasible else ":"
+        for a, b in c.touch:
             ax.plot([a[0], b[0]], [a[1], b[1]], style, color=FRICTION, lw=5, alpha=0.6, zorder=7)
-        if c.get("best"):
-            p = np.asarray(c["best"]["point"])
-            d = np.array([math.cos(c["best"]["direction"]), math.sin(c["best"]["direction"])])
+        if c.best is not None:
+            p = np.asarray(c.best.point)
+            d = np.array([math.cos(c.best.direction), math.sin(c.best.direction)])
             ax.annotate("", xy=p, xytext=p - 0.2 * size * d,
                         arrowprops=dict(arrowstyle="-|>", color=INK, lw=1.5), zorder=8)
     ax.set_title(f"pushes that produce {goal} (finger mu {mu:g})")
@@ -276,7 +276,7 @@ def comply(ax, analysis: Analysis, goal: str, centre=None, view=None):
     if centre is not None:
         c = np.asarray(centre, dtype=float)
         ax.plot([c[0]], [c[1]], "x", color=INK, ms=8, mew=2, zorder=9)
-        for lo, hi in plan["centre"]["intervals"]:
+        for lo, hi in plan.centre.intervals:
             _arc(ax, c, lo, hi, 0.1 * size, FRICTION)
     return plan
 

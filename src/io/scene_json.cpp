@@ -155,7 +155,7 @@ Scene read_scene(const Value& doc, InputWarnings* w) {
         }
         try {
             // The outlines were found simple as they were read (polygon()).
-            scene.contacts = detail::find_contacts_of_simple(scene.body->polygon, scene.obstacles, options);
+            scene.contacts = detail::find_contacts_of_simple(scene.body->polygon, scene.obstacles, options, &scene.origins);
         } catch (const std::invalid_argument& e) {
             throw InputError("$", e.what());
         }

@@ -36,9 +36,17 @@ struct CellHash {
     }
 };
 
-// Vertices of `touching` lying on edges of `touched`; `into_touching` gives the normal's sense.
-void vertex_on_edge(const Polygon& touching, const Polygon& touched, bool body_is_touching,
-                    const ContactFinding& o, std::vector<Contact>& out) {
+// Index i of a polygon of n vertices made counter-clockwise, as given: a vertex, or the edge from
+// vertex i to i + 1 (reversed: the edge from given vertex n - 1 - i to n - 2 - i).
+std::size_t given_vertex(std::size_t i, std::size_t n, bool reversed) { return reversed ? n - 1 - i : i; }
+std::size_t given_edge(std::size_t i, std::size_t n, bool reversed) { return reversed ? (2 * n - 2 - i) % n : i; }
+
+// Vertices of `touching` lying on edges of `touched` (both counter-clockwise; `*_reversed` says
+// whether they were given clockwise); `body_is_touching` gives the normal's sense. Each contact's
+// origin goes to `origins`, against obstacle `obstacle`.
+void vertex_on_edge(const Polygon& touching, const Polygon& touched, bool body_is_touching, bool touching_reversed,
+                    bool touched_reversed, std::size_t obstacle, const ContactFinding& o, std::vector<Contact>& out,
+                    std::vector<ContactOrigin>& origins) {
     const std::size_t n = touching.size(), m = touched.size();
     const EdgeGrid grid(touched, o.distance);
     for (std::size_t i = 0; i < n; ++i) {
@@ -58,6 +66,7 @@ void vertex_on_edge(const Polygon& touching, const Polygon& touched, bool body_i
             // Into the moving body: the obstacle's outward normal, or the body edge's inward one.
             const Vec2 normal = body_is_touching ? out_n : Vec2(-out_n);
             out.push_back(Contact::make(v, normal, o.mu, o.mu_kinetic));
+            origins.push_back({body_is_touching, obstacle, given_vertex(i, n, touching_reversed), given_edge(k, m, touched_reversed)});
         }
     }
 }
@@ -82,14 +91,17 @@ std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygo
 }
 
 std::vector<Contact> detail::find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
-                                                     const ContactFinding& options) {
+                                                     const ContactFinding& options, std::vector<ContactOrigin>* origins) {
     check_distance(options);
     const Polygon b = counter_clockwise(body);
+    const bool body_reversed = !is_counter_clockwise(body);
     std::vector<Contact> found;
-    for (const Polygon& raw : obstacles) {
-        const Polygon o = counter_clockwise(raw);
-        vertex_on_edge(b, o, true, options, found);
-        vertex_on_edge(o, b, false, options, found);
+    std::vector<ContactOrigin> found_origins;
+    for (std::size_t k = 0; k < obstacles.size(); ++k) {
+        const Polygon o = counter_clockwise(obstacles[k]);
+        const bool reversed = !is_counter_clockwise(obstacles[k]);
+        vertex_on_edge(b, o, true, body_reversed, reversed, k, options, found, found_origins);
+        vertex_on_edge(o, b, false, reversed, body_reversed, k, options, found, found_origins);
     }
     // One contact for points and normals both within the distance (the first kept), as the plain
     // comparison of every pair would merge them: the kept ones hashed by cells of side 2 d, so a
@@ -110,7 +122,9 @@ std::vector<Contact> detail::find_contacts_of_simple(const Polygon& body, const 
         const Contact& d = out[k];
         return (c.point - d.point).norm() <= options.distance && (c.normal - d.normal).norm() <= options.distance;
     };
-    for (const Contact& c : found) {
+    if (origins != nullptr) origins->clear();
+    for (std::size_t f = 0; f < found.size(); ++f) {
+        const Contact& c = found[f];
         const auto cell = cell_of(c.point);
         bool repeated = false;
         if (cell) {
@@ -138,6 +152,7 @@ std::vector<Contact> detail::find_contacts_of_simple(const Polygon& body, const 
             exact_points[key].push_back(out.size());
         }
         out.push_back(c);
+        if (origins != nullptr) origins->push_back(found_origins[f]);
     }
     return out;
 }

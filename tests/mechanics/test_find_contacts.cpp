@@ -56,6 +56,51 @@ TEST(FindContacts, CornerOnCornerIsConstrainedByBothObstacleEdges) {
     EXPECT_TRUE(has_contact(cs, Vec2(0, 0), Vec2(1, 0)));
 }
 
+// Where each contact was found, by hand: the block's vertex (0, 0) on the table's corner touches
+// the table's edge 1 ((0, -1) to (0, 0), outward normal (1, 0)) and edge 2 ((0, 0) to (-2, 0),
+// outward (0, 1)); the block's vertex is its vertex 0 as given, or 3 when given clockwise, and the
+// table's edges 1 and 2 are its edges 1 and 0 when it is given clockwise.
+TEST(FindContacts, OriginsNameTheVertexAndEdgeAsGiven) {
+    const Polygon table = {{-2, -1}, {0, -1}, {0, 0}, {-2, 0}};
+    for (const bool block_clockwise : {false, true}) {
+        for (const bool table_clockwise : {false, true}) {
+            Polygon block = kBlock, obstacle = table;
+            if (block_clockwise) std::reverse(block.begin(), block.end());
+            if (table_clockwise) std::reverse(obstacle.begin(), obstacle.end());
+            std::vector<ContactOrigin> origins;
+            const auto cs = detail::find_contacts_of_simple(block, {obstacle}, {}, &origins);
+            ASSERT_EQ(cs.size(), 2u);
+            ASSERT_EQ(origins.size(), 2u);
+            for (std::size_t j = 0; j < 2; ++j) {
+                EXPECT_TRUE(origins[j].body_vertex);
+                EXPECT_EQ(origins[j].obstacle, 0u);
+                EXPECT_EQ(origins[j].vertex, block_clockwise ? 3u : 0u);
+                const std::size_t edge = cs[j].normal.x() > 0 ? 1 : 2;  // (1, 0) or (0, 1)
+                EXPECT_EQ(origins[j].edge, table_clockwise ? 2 - edge : edge) << block_clockwise << table_clockwise;
+            }
+        }
+    }
+    // A table vertex on the block's edge: the post's corner (0.5, 0) on the block's edge 0.
+    const Polygon post = {{0.5, -1}, {2, -1}, {2, 0}, {0.5, 0}};
+    std::vector<ContactOrigin> origins;
+    const auto cs = detail::find_contacts_of_simple(kBlock, {post}, {}, &origins);
+    ASSERT_EQ(cs.size(), 2u);  // the block's corner (1, 0) on the post's top edge 2, and the post's corner
+    EXPECT_TRUE(has_contact(cs, Vec2(0.5, 0), Vec2(0, 1)));
+    for (std::size_t j = 0; j < 2; ++j) {
+        const bool at_post_corner = cs[j].point.x() == 0.5;
+        EXPECT_EQ(origins[j].body_vertex, !at_post_corner);
+        EXPECT_EQ(origins[j].vertex, at_post_corner ? 3u : 1u);
+        EXPECT_EQ(origins[j].edge, at_post_corner ? 0u : 2u);
+    }
+    // Read from a file: one origin per contact found, none for contacts written out.
+    const Scene found = read_scene_text(R"({"body": {"mass": 1, "com": [0.5, 0.25], "inertia": 1,
+        "polygon": [[0, 0], [1, 0], [1, 0.5], [0, 0.5]]}, "obstacles": [{"polygon": [[-2, -1], [3, -1], [3, 0], [-2, 0]]}]})");
+    EXPECT_EQ(found.origins.size(), found.contacts.size());
+    EXPECT_EQ(found.contacts.size(), 2u);
+    const Scene written = read_scene_text(R"({"contacts": [{"point": [0, 0], "normal": [0, 1]}]})");
+    EXPECT_TRUE(written.origins.empty());
+}
+
 TEST(FindContacts, ExampleOutlinesGiveTheWrittenContacts) {
     // Each bundled scene writes its contacts by hand and gives the polygons: finding them from
     // the polygons must give the same points and normals.

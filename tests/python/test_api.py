@@ -2,6 +2,7 @@
 examples (the CLI is the library's other front door; its own tests check it against oracles),
 and the scene's raw numbers where a value can be read off them."""
 
+import dataclasses
 import json
 import math
 
@@ -9,7 +10,7 @@ import numpy as np
 import pytest
 
 import momentlab as ml
-from conftest import CLI, EXAMPLES, FORCE_SETS, SCENES, cli
+from conftest import CLI, EXAMPLES, FORCE_SETS, SCENES, as_json, cli, without_nulls
 
 
 
@@ -175,20 +176,17 @@ def test_plans_are_the_clis():
     path = EXAMPLES / "figure-3-block-along-wall.json"
     a = ml.analyze(ml.Scene.from_file(path))
     for goal in a.modes:
-        assert ml.plan_tilt(a, goal) == cli("plan", "tilt", path, "--goal", goal, "--json")
+        assert as_json(ml.plan_tilt(a, goal)) == without_nulls(cli("plan", "tilt", path, "--goal", goal, "--json"))
         push = cli("plan", "push", path, "--goal", goal, "--json")
-        assert ml.plan_push(a, goal) == push["cases"]
-        assert ml.plan_push(ml.Scene.from_file(path), goal, mu=0.25, ignore_interference=True) == \
-            cli("plan", "push", path, "--goal", goal, "--mu", 0.25, "--ignore-interference", "--json")["cases"]
+        assert [as_json(c) for c in ml.plan_push(a, goal)] == without_nulls(push["cases"])
+        assert [as_json(c) for c in ml.plan_push(ml.Scene.from_file(path), goal, mu=0.25, ignore_interference=True)] == \
+            without_nulls(cli("plan", "push", path, "--goal", goal, "--mu", 0.25, "--ignore-interference", "--json")["cases"])
         for centre in [(0.5, 2.0), (-1.0, 0.25), (3.0, -1.0)]:
             want = cli("plan", "comply", path, "--goal", goal, "--centre", *centre, "--json")
-            got = ml.plan_comply(a, goal, centre)
-            assert got["centre"] == want["centre"]
-            for sheet in ("plus", "minus"):
-                assert got["labels"][sheet] == want["labels"][sheet]
+            assert as_json(ml.plan_comply(a, goal, centre)) == without_nulls(want)
     # Figure 5 by hand: gravity through the centre of mass slides the block right for
     # directions in [-atan 2, 0] (docs/planning.md).
-    (lo, hi), = ml.plan_tilt(a, "rr")["intervals"]
+    (lo, hi), = ml.plan_tilt(a, "rr").intervals
     assert math.isclose(lo, -math.atan(2.0), rel_tol=1e-15) and hi == 0.0
 
 
@@ -202,13 +200,13 @@ def test_version_and_docstrings():
 def test_closure_is_the_clis(name):
     path = EXAMPLES / f"{name}.json"
     got = ml.closure(ml.Scene.from_file(path))
-    assert got == cli("closure", path, "--json")
-    assert got == ml.closure(ml.Scene.from_file(path), reference=got["reference"], length=got["length"])
+    assert as_json(got) == without_nulls(cli("closure", path, "--json"))
+    assert got == ml.closure(ml.Scene.from_file(path), reference=got.reference, length=got.length)
     # By hand (tests/mechanics/test_closure.cpp): midpoints no closure; five contacts form
     # closure; the antipodal frictional fingers force closure only.
     want = {"closure-four-midpoints": (False, False), "closure-five-contacts": (True, True),
             "closure-antipodal-fingers": (False, True)}[name]
-    assert (got["form_closure"], got["force_closure"]) == want
+    assert (got.form_closure, got.force_closure) == want
 
 
 def test_quasi_static_is_the_clis(tmp_path):
@@ -229,10 +227,50 @@ def test_margins_are_the_clis():
     for w in ([1.0, -1.0, -0.75], [0.0, -1.0, -0.5], [3.0, -1.0, 0.25]):
         want = cli("query", path, "--wrench", *w, "--margin", "--json")
         got = a.margins(w)
-        assert list(got["inside"]) == want["modes"]
-        assert list(got["inside"].values()) == [x if x != "unbounded" else math.inf for x in want["margins"]["inside"]]
+        assert list(got.inside) == want["modes"]
+        assert list(got.inside.values()) == [x if x != "unbounded" else math.inf for x in want["margins"]["inside"]]
         to_other = want["margins"]["to_other"]
-        assert got["to_other"] == (math.inf if to_other == "unbounded" else to_other)
-        assert got["reference"] == want["margins"]["metric"]["reference"]
+        assert got.to_other == (math.inf if to_other == "unbounded" else to_other)
+        assert list(got.reference) == want["margins"]["metric"]["reference"]
+        assert got.length == want["margins"]["metric"]["length"]
     # by hand (tests/mechanics/test_margin.cpp): 1/sqrt(5) from the friction line
-    assert math.isclose(a.margins([1.0, -1.0, -0.75])["inside"]["rr"], 1 / math.sqrt(5), rel_tol=1e-15)
+    assert math.isclose(a.margins([1.0, -1.0, -0.75]).inside["rr"], 1 / math.sqrt(5), rel_tol=1e-15)
+
+
+def test_results_are_typed_values_with_inf_for_unbounded_ends():
+    """Results are frozen dataclasses with the JSON's fields; a number the JSON writes
+    "unbounded" is math.inf; a mapping's missing key is a KeyError."""
+    path = EXAMPLES / "block-on-table.json"
+    raw = json.loads(path.read_text())
+    a = ml.analyze(ml.Scene.from_file(path))
+    # Gravity (0, -10) and a push (1, 0) at height 0.5 (docs/planning.md): the last band, tipping
+    # (sr), goes on for ever: its end is math.inf, as the CLI's "unbounded".
+    bands = ml.push_line(a, (0.0, 0.5), (1.0, 0.0), gravity=(0.0, -10.0))
+    assert all(isinstance(b, ml.Band) for b in bands)
+    assert bands[-1].to == math.inf and bands[-1].modes == ["sr"] and isinstance(bands[-1].from_, float)
+    want = cli("query", path, "--gravity", 0, -10, "--push", 0, 0.5, 1, 0, "--json")["bands"]
+    assert [as_json(b) for b in bands] == want and want[-1]["to"] == "unbounded"
+    # The first band ends where friction gives: mu m g = 0.5 * 1 * 10 (the file's numbers).
+    mu, m = raw["contacts"][0]["mu"], raw["body"]["mass"]
+    assert bands[0].modes == ["ff"] and bands[0].to == mu * m * 10
+    # A fixed wrench: the magnitudes of the best tilt, with no upper end.
+    plan = ml.plan_tilt(a, "rr", wrench=(0.0, 0.0, 0.1))
+    assert isinstance(plan, ml.DirectionPlan) and isinstance(plan.best_magnitudes, ml.Magnitudes)
+    assert plan.best_magnitudes.to == math.inf
+    want = cli("plan", "tilt", path, "--goal", "rr", "--wrench", 0, 0, 0.1, "--json")
+    assert as_json(plan) == {k: v for k, v in want.items() if k != "fixed"}
+    # A push with gravity: every case a PushCase, best_magnitudes as the CLI's.
+    cases = ml.plan_push(a, "sr", gravity=(0.0, -9.81))
+    want = cli("plan", "push", path, "--goal", "sr", "--gravity", 0, -9.81, "--json")["cases"]
+    assert all(isinstance(c, ml.PushCase) for c in cases) and [as_json(c) for c in cases] == without_nulls(want)
+    assert any(c.best_magnitudes is not None and c.best_magnitudes.to == math.inf for c in cases)
+    # Frozen values; a field the JSON does not have is refused when reading it.
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        plan.best = 0.0
+    with pytest.raises(ValueError, match="unknown field 'fixed'"):
+        ml.DirectionPlan.from_json(cli("plan", "tilt", path, "--goal", "rr", "--wrench", 0, 0, 0.1, "--json"))
+    assert isinstance(ml.query(ml.Scene.from_file(path), [0.0, -9.81, -4.905]), ml.QueryAnswer)
+    with pytest.raises(KeyError):
+        a.margins([0.0, -9.81, -4.905]).inside["rr"]
+    with pytest.raises(KeyError, match='no mode "xx"'):
+        a["xx"]

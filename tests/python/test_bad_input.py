@@ -247,7 +247,7 @@ def test_one_rule_for_vectors_in_every_front_end(block):
     for w in ([1.0, -2.0, 5e-324], [1.0, 0.0, 1e-61]):
         want = sorted(oracle.query(exact, w))
         assert ml.analyze(scene).query(w) == want
-        assert ml.query(scene, w)["modes"] == want
+        assert ml.query(scene, w).modes == want
         assert ml.analyze(scene).query(np.array([w, w])).sum() == 2 * len(want)
     assert sorted(oracle.query(exact, [1.0, -2.0, 5e-324])) == ["fs", "rs"]
     with pytest.raises(ValueError, match=r"^wrench: out of range \(expected the largest coordinate"):

@@ -20,7 +20,7 @@ import pytest
 
 import momentlab as ml
 import oracle
-from conftest import CLI, EXAMPLES, cli
+from conftest import CLI, EXAMPLES, as_json, cli
 
 # ---------------------------------------------------------------------------------------------
 # 1. The goal holds every direction; one other set meets the plane in one direction.
@@ -86,8 +86,8 @@ def test_tilt_and_comply_when_the_goal_holds_every_direction(tmp_path):
     check_whole_turn_but_zero(cli("plan", "tilt", scene, "--goal", "ff", "--quasi-static", "--json"))
     check_whole_turn_but_zero(cli("plan", "comply", scene, "--goal", "ff", "--quasi-static", "--centre", "0", "1", "--json")["centre"])
     a = ml.analyze(ml.Scene.from_json(json.dumps(ANTIPODAL)), quasi_static=True)
-    check_whole_turn_but_zero(ml.plan_tilt(a, "ff"))
-    check_whole_turn_but_zero(ml.plan_comply(a, "ff", [0, 1])["centre"])
+    check_whole_turn_but_zero(as_json(ml.plan_tilt(a, "ff")))
+    check_whole_turn_but_zero(as_json(ml.plan_comply(a, "ff", [0, 1]).centre))
     text = cli("plan", "tilt", scene, "--goal", "ff", "--quasi-static").stdout
     assert "the goal alone: [-3.14159, 3.14159]\n  shared with another mode: 0 only\n" in text, text
     assert "no arc where the goal is alone" not in text
@@ -168,7 +168,7 @@ def test_query_margins_do_not_change_when_the_scene_moves(tmp_path, d):
     assert math.isclose(got["margins"]["inside"][0], want, rel_tol=1e-12), (d, got, want)
     assert math.isclose(got["margins"]["to_other"], want, rel_tol=1e-12), (d, got, want)
     py = ml.analyze(ml.Scene.from_json(json.dumps(doc))).margins(wd)
-    assert math.isclose(py["inside"]["s"], want, rel_tol=1e-12) and math.isclose(py["to_other"], want, rel_tol=1e-12), (d, py)
+    assert math.isclose(py.inside["s"], want, rel_tol=1e-12) and math.isclose(py.to_other, want, rel_tol=1e-12), (d, py)
 
 
 @pytest.mark.parametrize("d", OFFSETS)
@@ -273,7 +273,8 @@ def test_closure_quality_is_the_oracles_at_any_length(tmp_path, length):
     check_quality(got["form"]["quality"], want_form)
     check_quality(got["force"]["quality"], want_force)
     py = ml.closure(ml.Scene.from_json(json.dumps(FIVE)), length=length)
-    check_quality(py["form"]["quality"], want_form)
+    check_quality(py.form.quality, want_form)
+    check_quality(py.force.quality, want_force)
 
 
 def test_a_thin_closure_has_its_thin_quality(tmp_path):
@@ -369,11 +370,11 @@ def test_the_printed_best_push_has_the_printed_magnitudes(tmp_path):
 
 def goal_band(bands, goal):
     """The magnitudes of push_line's bands that hold the goal: (from, to), to None when unbounded."""
-    held = [b for b in bands if goal in b["modes"]]
+    held = [b for b in bands if goal in b.modes]
     if not held:
         return None
-    to = held[-1]["to"]
-    return held[0]["from"], None if to == math.inf else to
+    to = held[-1].to
+    return held[0].from_, None if to == math.inf else to
 
 
 @pytest.mark.parametrize("seed", range(6))
@@ -394,12 +395,12 @@ def test_best_pushes_with_gravity_are_the_pushes_measured(seed):
         a = ml.analyze(ml.Scene.from_json(json.dumps(doc)))
         goal = rng.choice(a.modes)
         for c in ml.plan_push(a, goal, mu=0.5, ignore_interference=True, gravity=g):
-            if not c["feasible"] or not c.get("best_magnitudes"):
+            if not c.feasible or c.best_magnitudes is None:
                 continue
-            best, bm = c["best"], c["best_magnitudes"]
-            hi = None if bm["to"] == math.inf else bm["to"]
-            band = goal_band(ml.push_line(a, best["point"], best["direction_vector"], gravity=g), goal)
-            assert band == (bm["from"], hi), (doc, goal, g, c, band)
+            best, bm = c.best, c.best_magnitudes
+            hi = None if bm.to == math.inf else bm.to
+            band = goal_band(ml.push_line(a, best.point, best.direction_vector, gravity=g), goal)
+            assert band == (bm.from_, hi), (doc, goal, g, c, band)
             if checked < 4:
-                check_magnitudes(doc, goal, g, best["point"], best["direction_vector"], bm["from"], hi, 1e-9)
+                check_magnitudes(doc, goal, g, best.point, best.direction_vector, bm.from_, hi, 1e-9)
             checked += 1

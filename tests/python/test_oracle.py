@@ -122,8 +122,8 @@ def test_query_agrees_with_the_oracle(seed):
     for w in wrenches:
         want = oracle.query(exact, w)
         got = ml.query(scene, w)
-        assert got["modes"] == sorted(want), (doc, w)
-        assert got["verdict"] == oracle.verdict(len(want))
+        assert got.modes == sorted(want), (doc, w)
+        assert got.verdict == oracle.verdict(len(want))
 
 
 def test_query_names_what_is_missing():

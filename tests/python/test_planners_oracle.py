@@ -71,8 +71,8 @@ def check_directions(plan, goal, point, o, rng, counts):
     inside the union the goal, outside it no goal; and at three random angles away from every
     end. A probe within DELTA / 2 of any end of the plan (arcs narrower than 2 DELTA) is left out
     and counted."""
-    unique, shared, union = plan.get("unique", []), plan.get("shared", []), plan["intervals"]
-    assert ("unique" in plan) == bool(union)  # told the modes: split whenever feasible
+    unique, shared, union = plan.unique or [], plan.shared or [], plan.intervals
+    assert (plan.unique is not None) == bool(union)  # told the modes: split whenever feasible
     ends = unique + shared + union
     probes = {middle(arc) for arc in ends if width(arc) > 2 * DELTA}
     counts["arcs narrower than 2 DELTA"] += sum(width(arc) <= 2 * DELTA for arc in ends)
@@ -95,8 +95,8 @@ def check_directions(plan, goal, point, o, rng, counts):
         else:
             assert not o.gives(goal, point, angle), (plan, angle)
             counts["outside"] += 1
-    if union and plan.get("best_unique") and plan["margin"] > DELTA:
-        assert o.answer(point, plan["best"]) == {goal}, plan
+    if union and plan.best_unique and plan.margin > DELTA:
+        assert o.answer(point, plan.best) == {goal}, plan
 
 
 def test_tilt_and_comply_against_the_oracle():
@@ -112,19 +112,19 @@ def test_tilt_and_comply_against_the_oracle():
             check_directions(ml.plan_tilt(a, goal), goal, com, o, rng, counts)
             # A random centre, and the corners of E_goal's labelled regions (on their boundaries,
             # where the knife edges are).
-            labels = ml.plan_comply(a, goal)["labels"]
+            labels = ml.plan_comply(a, goal).labels
             centres = [[float(oracle._grid(rng, -2, 2, 4)), float(oracle._grid(rng, -2, 2, 4))]]
-            centres += [list(v) for sign in ("plus", "minus") for v in labels[sign]["vertices"]][:2]
+            centres += [list(v) for sign in ("plus", "minus") for v in getattr(labels, sign).vertices][:2]
             for centre in centres:
-                plan = ml.plan_comply(a, goal, centre)["centre"]
+                plan = ml.plan_comply(a, goal, centre).centre
                 # The verdict agrees with the exact label (docs/planning.md): inside a labelled region
                 # no offset works, on its boundary only knife edges do.
-                if plan["verdict"] == "works":
-                    assert plan["label"] == "none", plan
-                if plan["label"] in ("+", "-", "+-") and plan["intervals"]:
-                    assert plan["verdict"] == "boundary", plan
-                if plan["verdict"] == "fails":
-                    assert plan["intervals"] == []
+                if plan.verdict == "works":
+                    assert plan.label == "none", plan
+                if plan.label in ("+", "-", "+-") and plan.intervals:
+                    assert plan.verdict == "boundary", plan
+                if plan.verdict == "fails":
+                    assert plan.intervals == []
                 check_directions(plan, goal, centre, o, rng, counts)
     print("[planners] directions probed:", dict(counts))
     # Ends probed on both sides, in every kind of arc, and outside.
@@ -147,7 +147,7 @@ def finger_forces(polygon, case, mu):
     the edge turned by 90 degrees; t = (n.y, -n.x)) the finger's force is n - mu t (slip r),
     n + mu t (l) or anything between (f); on a convex vertex the normal is any direction between
     its two edges' normals. As (point, force) pairs in exact rationals."""
-    kind, index = case["feature"].split()
+    kind, index = case.feature.split()
     index = int(index)
     q = [[oracle.exact(x) for x in v] for v in polygon]
     k = len(q)
@@ -156,7 +156,7 @@ def finger_forces(polygon, case, mu):
         d = (q[(i + 1) % k][0] - q[i][0], q[(i + 1) % k][1] - q[i][1])
         return (-d[1], d[0])
 
-    slips = {"r": [-1], "l": [1], "f": [-1, 0, 1]}[case["slip"]]
+    slips = {"r": [-1], "l": [1], "f": [-1, 0, 1]}[case.slip]
     m = oracle.exact(mu)
 
     def forces(n):
@@ -189,20 +189,20 @@ def test_push_against_the_oracle():
         a = analysis_of(doc)
         for goal in rng.sample(a.modes, min(2, len(a.modes))):
             for c in ml.plan_push(a, goal, mu=0.5, ignore_interference=True):
-                counts[c["verdict"]] += 1
-                if c["verdict"] == "no":
+                counts[c.verdict] += 1
+                if c.verdict == "no":
                     for p, f in finger_forces(doc["body"]["polygon"], c, 0.5):
                         assert not oracle.produces(o.scene, goal, oracle.wrench_at(p, f)), (c, p, f)
                         counts["pushes of 'no' cases"] += 1
-                if c["verdict"] != "feasible":
+                if c.verdict != "feasible":
                     continue
-                assert "unique" in c and (c["unique"] or c["shared"]), c
-                p, angle = c["best"]["point"], c["best"]["direction"]
+                assert c.unique is not None and (c.unique or c.shared), c
+                p, angle = c.best.point, c.best.direction
                 got = o.answer(p, angle)
                 assert goal in got, (c, got)
-                if c["best_unique"]:
+                if c.best_unique:
                     assert got == {goal}, (c, got)
-                    assert c["unique"]
+                    assert c.unique
                 counts["best pushes"] += 1
     print("[planners] push cases:", dict(counts))
     assert counts["best pushes"] >= 20 and counts["pushes of 'no' cases"] >= 200, counts
@@ -279,9 +279,9 @@ def test_tilt_plans_move_with_exact_transforms(seed):
         for goal in a.modes:
             p, q = ml.plan_tilt(a, goal), ml.plan_tilt(moved, letters(goal))
             for key in ("intervals", "unique", "shared"):
-                want = canon(p.get(key, []), turn, f is mirror)
-                got = canon(q.get(key, []))
-                assert same_arcs(got, want), (seed, f.__name__, goal, key, p.get(key), q.get(key))
+                want = canon(getattr(p, key) or [], turn, f is mirror)
+                got = canon(getattr(q, key) or [])
+                assert same_arcs(got, want), (seed, f.__name__, goal, key, getattr(p, key), getattr(q, key))
 
 
 def test_push_line_bands_against_the_oracle():
@@ -301,9 +301,9 @@ def test_push_line_bands_against_the_oracle():
         if direction == [0.0, 0.0]:
             direction = [1.0, 0.0]
         bands = ml.push_line(a, point, direction, gravity=gravity)
-        assert bands[0]["from"] == 0 and bands[-1]["to"] == math.inf
+        assert bands[0].from_ == 0 and bands[-1].to == math.inf
         for prev, band in zip(bands, bands[1:]):
-            assert prev["to"] == band["from"] and prev["to_closed"] != band["from_closed"]
+            assert prev.to == band.from_ and prev.to_closed != band.from_closed
         m, com = oracle.exact(doc["body"]["mass"]), [oracle.exact(x) for x in doc["body"]["com"]]
         g = oracle.wrench_at(com, (m * oracle.exact(gravity[0]), m * oracle.exact(gravity[1])))
         u = oracle.wrench_at([oracle.exact(x) for x in point], [oracle.exact(x) for x in direction])
@@ -315,7 +315,7 @@ def test_push_line_bands_against_the_oracle():
         def band_of(lam):
             """The band holding lam at least DELTA / 2 (relative) from its ends, or None."""
             for band in bands:
-                lo, hi = Fraction(band["from"]), None if band["to"] == math.inf else Fraction(band["to"])
+                lo, hi = Fraction(band.from_), None if band.to == math.inf else Fraction(band.to)
                 slack = Fraction(DELTA / 2) * max(lo, 1 if hi is None else hi)
                 if lo + slack < lam and (hi is None or lam < hi - slack):
                     return band
@@ -323,15 +323,15 @@ def test_push_line_bands_against_the_oracle():
 
         probes = []
         for band in bands:
-            if band["to"] == math.inf:
-                probes.append(Fraction(band["from"]) * 2 + 1)
+            if band.to == math.inf:
+                probes.append(Fraction(band.from_) * 2 + 1)
             else:
-                probes.append((Fraction(band["from"]) + Fraction(band["to"])) / 2)
-                end = Fraction(band["to"])
+                probes.append((Fraction(band.from_) + Fraction(band.to)) / 2)
+                end = Fraction(band.to)
                 probes += [end * (1 - Fraction(DELTA)), end * (1 + Fraction(DELTA))]
                 # At the printed end: the modes of a band that starts or ends there (the closed one
                 # if the end is exact, else the one on the side it was rounded to).
-                touching = [set(b["modes"]) for b in bands if b["from"] == band["to"] or b["to"] == band["to"]]
+                touching = [set(b.modes) for b in bands if b.from_ == band.to or b.to == band.to]
                 assert modes_at(end) in touching, (doc, band, bands)
                 counts["printed ends"] += 1
         for lam in probes:
@@ -339,7 +339,7 @@ def test_push_line_bands_against_the_oracle():
             if band is None:
                 counts["left out (band narrower than DELTA)"] += 1
                 continue
-            assert modes_at(lam) == set(band["modes"]), (doc, float(lam), band, bands)
+            assert modes_at(lam) == set(band.modes), (doc, float(lam), band, bands)
             counts["probes"] += 1
     print("[planners] bands:", dict(counts))
     assert counts["probes"] >= 100 and counts["printed ends"] >= 30, counts

@@ -69,13 +69,13 @@ def test_mode_sets_plans_draw():
     assert [ax.get_title() for ax in axes[0]] == ["F: mode rr", "T: mode rr", "E: mode rr"]
     mp.tilt(axes[1][0], a, "rr")
     cases = mp.push(axes[1][1], a, "rr")
-    assert any(c["feasible"] for c in cases)
+    assert any(c.feasible for c in cases)
     # E_rr of the block along the wall is cone{(1, 0, -1/4), (1/2, -1, 0), (1/2, -1, -1)}; their
     # moments about (x, y) are y - 1/4, x + y/2 and x + y/2 - 1 (tests/planning/test_comply.cpp).
     # At (-1, 1/4) they are 0, -7/8 and -15/8: on the edge of the - region, a boundary centre.
     plan = mp.comply(axes[1][2], a, "rr", centre=(-1.0, 0.25))
-    assert plan["centre"]["verdict"] == "boundary"
-    assert plan["centre"]["label"] == "-"
+    assert plan.centre.verdict == "boundary"
+    assert plan.centre.label == "-"
     plt.close(fig)
 
 

@@ -40,9 +40,11 @@ struct ContactFinding {
 
 namespace detail {
 /// find_contacts for polygons the caller has already found simple (polygon_problem gave ""):
-/// reading a scene checks each outline as it reads it, and sweeps it only once.
+/// reading a scene checks each outline as it reads it, and sweeps it only once. When `origins`
+/// is given, it receives where each contact was found, one per contact.
 [[nodiscard]] std::vector<Contact> find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
-                                                           const ContactFinding& options);
+                                                           const ContactFinding& options,
+                                                           std::vector<ContactOrigin>* origins = nullptr);
 }  // namespace detail
 
 }  // namespace momentlab

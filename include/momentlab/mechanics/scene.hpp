@@ -41,6 +41,17 @@ struct Contact {
 /// A simple polygon given by its vertices, in either orientation (geometry/polygon.hpp checks).
 using Polygon = std::vector<Vec2>;
 
+/// Where find_contacts found a contact: vertex `vertex` of one polygon on edge `edge` (from
+/// vertex `edge` to the next) of the other, indices as the polygons were given; the vertex is
+/// the body's (on obstacle `obstacle`) when `body_vertex`, else obstacle `obstacle`'s (on the
+/// body).
+struct ContactOrigin {
+    bool body_vertex = true;
+    std::size_t obstacle = 0;
+    std::size_t vertex = 0;
+    std::size_t edge = 0;
+};
+
 /// The moving body: mass, centre of mass, inertia about the centre of mass, optional outline.
 struct Body {
     double mass = 1.0;
@@ -64,6 +75,8 @@ struct Scene {
     /// How far from the body's outline a contact may lie (scene files' "contact_distance"), when
     /// the scene gave it; to_json writes it back so that the scene reads again.
     std::optional<double> contact_distance;
+    /// One per contact when the contacts were found from the polygons (find_contacts), else empty.
+    std::vector<ContactOrigin> origins;
 };
 
 }  // namespace momentlab
