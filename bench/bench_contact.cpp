@@ -334,6 +334,18 @@ void BM_find_contacts(benchmark::State& state) {
 }
 BENCHMARK(BM_find_contacts)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMillisecond)->Complexity();
 
+// The same without the exact overlap check (polygons_overlap) that find_contacts runs after the
+// simplicity checks.
+void BM_find_contacts_without_overlap_check(benchmark::State& state) {
+    const auto [body, floor] = body_on_terrain(state.range(0));
+    const std::vector<Polygon> obstacles = {floor};
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(polygon_problem(body).size() + polygon_problem(floor).size());
+        benchmark::DoNotOptimize(detail::find_contacts_of_simple(body, obstacles, {}).size());
+    }
+}
+BENCHMARK(BM_find_contacts_without_overlap_check)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMillisecond);
+
 // The alternative: every vertex against every edge (what find_contacts did before its grid).
 void BM_find_contacts_all_pairs(benchmark::State& state) {
     const auto [body, floor] = body_on_terrain(state.range(0));

@@ -36,7 +36,11 @@ void print_list(std::ostream& out, const char* name, const List& list) {
 
 void print_region(std::ostream& out, const char* name, const Region& r) {
     out << "  " << name << " region: " << r.kind() << "\n";
-    print_list(out, "vertices", r.vertices);
+    if (!r.vertices_h.empty()) {  // each coordinate the exact x / s correctly rounded
+        out << "    " << std::left << std::setw(10) << "vertices";
+        for (std::size_t i = 0; i < r.vertices_h.size(); ++i) out << (i ? "  " : "") << fmt_point(r.vertices_h[i], kDigits);
+        out << "\n";
+    }
     print_list(out, "rays", r.rays);
     print_list(out, "lines", r.lines);
 }

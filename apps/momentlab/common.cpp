@@ -1,6 +1,8 @@
 // What the commands share (common.hpp).
 #include "common.hpp"
 
+#include "momentlab/core/rounding.hpp"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -160,10 +162,10 @@ void print_bands(const std::vector<MagnitudeBand>& bands, const std::vector<Mode
     for (const MagnitudeBand& b : bands) {
         std::string range;
         if (b.to && compare(b.from, *b.to) == 0) {
-            range = fmt(b.from.value()) + " only";
+            range = fmt(b.from) + " only";
         } else {
-            range = std::string(b.from_closed ? "[" : "(") + fmt(b.from.value()) + ", " +
-                    (b.to ? fmt(b.to->value()) + (b.to_closed ? "]" : ")") : std::string("unbounded)"));
+            range = std::string(b.from_closed ? "[" : "(") + fmt(b.from) + ", " +
+                    (b.to ? fmt(*b.to) + (b.to_closed ? "]" : ")") : std::string("unbounded)"));
         }
         std::string modes;
         for (std::size_t j : b.modes) modes += (modes.empty() ? "" : " ") + analysis[j].mode.letters;
@@ -250,6 +252,18 @@ std::string fmt(const Vec2& v, int digits) { return "(" + fmt(v.x(), digits) + "
 
 std::string fmt(const Vec3& v, int digits) {
     return "(" + fmt(v.x(), digits) + ", " + fmt(v.y(), digits) + ", " + fmt(v.z(), digits) + ")";
+}
+
+std::string fmt(const Dyadic& num, const Dyadic& den, int digits) {
+    (void)output_value(nearest_double(num, den));  // (throws beyond the doubles)
+    return significant_digits(num, den, digits);
+}
+
+std::string fmt(const Magnitude& m, int digits) { return fmt(m.num, m.den, digits); }
+
+std::string fmt_point(const ExactVector& homogeneous, int digits) {
+    const Exact3 v = homogeneous.exact();
+    return "(" + fmt(v[0], v[2], digits) + ", " + fmt(v[1], v[2], digits) + ")";
 }
 
 std::string degrees(double radians) {

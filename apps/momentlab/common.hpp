@@ -130,6 +130,12 @@ void write_picture(const render::Figure& figure, const PictureOptions& options);
 std::string fmt(double x, int digits = 6);
 std::string fmt(const Vec2& v, int digits = 6);
 std::string fmt(const Vec3& v, int digits = 6);
+/// An exact quotient num / den with `digits` significant digits, the exact value correctly
+/// rounded (significant_digits, core/rounding.hpp); beyond the doubles an UnrepresentableError.
+std::string fmt(const Dyadic& num, const Dyadic& den, int digits = 6);
+std::string fmt(const Magnitude& m, int digits = 6);
+/// The homogeneous point (x, y, s), s != 0, as (x / s, y / s), each correctly rounded.
+std::string fmt_point(const ExactVector& homogeneous, int digits = 6);
 /// An angle in radians as degrees with two decimals and the degree sign.
 std::string degrees(double radians);
 /// `text` with control characters escaped (\n, \t, \xNN): names and messages stay one line.

@@ -4,6 +4,7 @@
 // (unsigned __int128: GCC, Clang, and Clang for WebAssembly).
 #include "momentlab/core/dyadic.hpp"
 
+#include "momentlab/core/rounding.hpp"
 #include "power_of_two.hpp"
 
 #include <algorithm>
@@ -346,8 +347,15 @@ double Dyadic::to_double_scaled(std::int64_t k) const {
     // rounding to 53 bits.
     Limb t = top << lz;
     if (lz != 0 && size_ >= 2) t |= p[size_ - 2] >> (64 - lz);
+    // The bits below those 64 as one sticky bit: t has 11 bits beyond the 53 kept, so rounding t
+    // is then rounding the whole magnitude (correctly, to nearest with ties to even).
+    if (size_ >= 3 || (size_ == 2 && (lz == 0 || (p[0] << lz) != 0))) t |= 1;
     const std::int64_t bitlen = 64 * static_cast<std::int64_t>(size_) - lz;
-    const double v = detail::times_power_of_two(static_cast<double>(t), exponent_ + bitlen - 64 - k);
+    const std::int64_t scale = exponent_ + bitlen - 64 - k;
+    // A result below the normal range would be rounded twice (to 53 bits, then to the
+    // subnormal's fewer): rounded once from the exact value there.
+    if (scale + 63 < -1022 && scale + 64 >= -1080) return nearest_double(scaled(-k), Dyadic(1.0));
+    const double v = detail::times_power_of_two(static_cast<double>(t), scale);
     return sign_ < 0 ? -v : v;
 }
 

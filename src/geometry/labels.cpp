@@ -1,5 +1,7 @@
 #include "momentlab/geometry/labels.hpp"
 
+#include "momentlab/core/rounding.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -16,14 +18,6 @@ Mat3 points_to_functionals() {
 
 Mat3 functionals_to_points() { return points_to_functionals().transpose(); }
 
-// x / s rounded, without overflow in the parts (infinite beyond the double range).
-double ratio(const Dyadic& x, const Dyadic& s) {
-    if (x.is_zero()) return 0.0;
-    const double q = x.to_double_scaled(x.exponent()) / s.to_double_scaled(s.exponent());
-    const std::int64_t e = std::clamp<std::int64_t>(x.exponent() - s.exponent(), -100000, 100000);
-    return std::ldexp(q, static_cast<int>(e));
-}
-
 // The sheet s >= 0 of a cone of homogeneous points.
 Region sheet(const Cone& k_sheet) {
     Region r;
@@ -31,7 +25,7 @@ Region sheet(const Cone& k_sheet) {
         if (ray.dot_sign(Vec3::UnitZ()) == Sign::Positive) {
             const Exact3 v = ray.exact();
             r.vertices_h.push_back(ray);
-            r.vertices.emplace_back(ratio(v[0], v[2]), ratio(v[1], v[2]));
+            r.vertices.emplace_back(nearest_double(v[0], v[2]), nearest_double(v[1], v[2]));
         } else {
             r.rays_h.push_back(ray);
             r.rays.emplace_back(ray.value().x(), ray.value().y());

@@ -251,39 +251,6 @@ bool within_distance_of_boundary(std::span<const Vec2> polygon, const Vec2& p, d
     return false;
 }
 
-namespace {
-
-bool strictly_inside(std::span<const Vec2> polygon, const Vec2& p) {
-    return in_closed_polygon(polygon, p) && !within_distance_of_boundary(polygon, p, 0.0);
-}
-
-// Some point of `a` (a vertex, an edge midpoint, the vertex centroid) strictly inside `b`.
-bool reaches_into(std::span<const Vec2> a, std::span<const Vec2> b) {
-    Vec2 centroid = Vec2::Zero();
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        const Vec2& p = a[i];
-        centroid += p / static_cast<double>(a.size());
-        if (strictly_inside(b, p) || strictly_inside(b, 0.5 * (p + a[(i + 1) % a.size()]))) return true;
-    }
-    return strictly_inside(a, centroid) && strictly_inside(b, centroid);
-}
-
-}  // namespace
-
-bool polygons_overlap(std::span<const Vec2> a, std::span<const Vec2> b) {
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        const Vec2 &p = a[i], &q = a[(i + 1) % a.size()];
-        for (std::size_t j = 0; j < b.size(); ++j) {
-            const Vec2 &r = b[j], &s = b[(j + 1) % b.size()];
-            const Sign o1 = orient2d(p, q, r), o2 = orient2d(p, q, s), o3 = orient2d(r, s, p), o4 = orient2d(r, s, q);
-            if (o1 != Sign::Zero && o2 != Sign::Zero && o3 != Sign::Zero && o4 != Sign::Zero && o1 != o2 && o3 != o4) {
-                return true;
-            }
-        }
-    }
-    return reaches_into(a, b) || reaches_into(b, a);
-}
-
 double distance_to_boundary(std::span<const Vec2> polygon, const Vec2& p) {
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < polygon.size(); ++i) {
@@ -345,6 +312,44 @@ std::span<const std::size_t> EdgeGrid::near(const Vec2& q) const {
     const auto [x, y] = index(q);
     const std::size_t c = x * ny_ + y;
     return {edges_.data() + start_[c], start_[c + 1] - start_[c]};
+}
+
+void EdgeGrid::near_segment(const Vec2& a, const Vec2& b, std::vector<std::size_t>& out) const {
+    out.clear();
+    // The part of ab within the polygon's box grown by the margin, and by an allowance for the
+    // rounding of the segment's own points (parameters found in floating point).
+    const double slack = margin_ + 1e-9 * (a.cwiseAbs().maxCoeff() + b.cwiseAbs().maxCoeff());
+    const Vec2 d = b - a;
+    double t0 = 0.0, t1 = 1.0;
+    for (int k = 0; k < 2; ++k) {
+        const double lo = lo_[k] - slack, hi = hi_[k] + slack;
+        if (d[k] == 0.0) {
+            if (a[k] < lo || a[k] > hi) return;
+            continue;
+        }
+        const double u = (lo - a[k]) / d[k], v = (hi - a[k]) / d[k];
+        t0 = std::max(t0, std::min(u, v));
+        t1 = std::min(t1, std::max(u, v));
+    }
+    if (!(t0 <= t1)) return;
+    const Vec2 from = a + t0 * d, to = a + t1 * d;
+    const std::size_t pieces = static_cast<std::size_t>((to - from).norm() / cell_) + 1;
+    for (std::size_t i = 0; i < pieces; ++i) {
+        const double parts = static_cast<double>(pieces);
+        const Vec2 u = from + (to - from) * (static_cast<double>(i) / parts);
+        const Vec2 v = i + 1 == pieces ? to : Vec2(from + (to - from) * (static_cast<double>(i + 1) / parts));
+        const auto [x0, y0] = index(u.cwiseMin(v).array() - slack);
+        const auto [x1, y1] = index(u.cwiseMax(v).array() + slack);
+        for (std::size_t x = x0; x <= x1; ++x) {
+            for (std::size_t y = y0; y <= y1; ++y) {
+                const std::size_t c = x * ny_ + y;
+                out.insert(out.end(), edges_.begin() + static_cast<std::ptrdiff_t>(start_[c]),
+                           edges_.begin() + static_cast<std::ptrdiff_t>(start_[c + 1]));
+            }
+        }
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
 std::pair<std::size_t, std::size_t> EdgeGrid::index(const Vec2& q) const {

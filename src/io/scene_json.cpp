@@ -153,6 +153,14 @@ Scene read_scene(const Value& doc, InputWarnings* w) {
             options.mu = nonnegative(*mu, Path(root, "mu"), "mu");
             options.mu_kinetic = options.mu;
         }
+        // Drawn touching, not overlapping: decided exactly (polygons_overlap), before the contacts.
+        for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
+            if (const std::optional<Vec2> x = polygons_overlap(scene.body->polygon, scene.obstacles[i])) {
+                throw InputError("$.obstacles[" + std::to_string(i) + "].polygon",
+                                 "overlaps the body polygon ($.body.polygon), for instance at (" + json(x->x()).dump() + ", " +
+                                     json(x->y()).dump() + ") (expected them to touch, not overlap)");
+            }
+        }
         try {
             // The outlines were found simple as they were read (polygon()).
             scene.contacts = detail::find_contacts_of_simple(scene.body->polygon, scene.obstacles, options, &scene.origins);
@@ -160,12 +168,6 @@ Scene read_scene(const Value& doc, InputWarnings* w) {
             throw InputError("$", e.what());
         }
         if (scene.contacts.empty()) {
-            for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
-                if (polygons_overlap(scene.body->polygon, scene.obstacles[i])) {
-                    throw InputError("$.obstacles[" + std::to_string(i) + "]",
-                                     "the body polygon overlaps this obstacle (expected them to touch, not overlap)");
-                }
-            }
             throw InputError("$", "the body polygon touches no obstacle (no contacts found)");
         }
     }

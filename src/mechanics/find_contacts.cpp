@@ -11,6 +11,8 @@
 #include <span>
 #include <utility>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -71,6 +73,16 @@ void vertex_on_edge(const Polygon& touching, const Polygon& touched, bool body_i
     }
 }
 
+// The shortest "%g" text that reads back as x.
+std::string shortest(double x) {
+    char text[32];
+    for (int digits = 1; digits <= 17; ++digits) {
+        std::snprintf(text, sizeof text, "%.*g", digits, x);
+        if (std::strtod(text, nullptr) == x) break;
+    }
+    return text;
+}
+
 void check_distance(const ContactFinding& options) {
     if (!(options.distance >= 0.0)) throw std::invalid_argument("find_contacts: distance must be >= 0");
 }
@@ -85,6 +97,12 @@ std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygo
         const std::string problem = polygon_problem(p);
         if (!problem.empty()) {
             throw std::invalid_argument("find_contacts: " + (i == 0 ? std::string("the body polygon: ") : "obstacle " + std::to_string(i - 1) + ": ") + problem);
+        }
+    }
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+        if (const std::optional<Vec2> x = polygons_overlap(body, obstacles[i])) {
+            throw std::invalid_argument("find_contacts: the body polygon overlaps obstacle " + std::to_string(i) +
+                                        ", for instance at (" + shortest(x->x()) + ", " + shortest(x->y()) + ")");
         }
     }
     return detail::find_contacts_of_simple(body, obstacles, options);

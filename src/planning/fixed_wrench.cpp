@@ -1,6 +1,8 @@
 // A fixed wrench plus a controlled one (planning/fixed_wrench.hpp).
 #include "momentlab/planning/fixed_wrench.hpp"
 
+#include "momentlab/core/rounding.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -14,11 +16,7 @@ Exact3 gravity_wrench(const Body& body, const Vec2& acceleration) {
     return wrench_through(exact(body.com), Exact2{m * a[0], m * a[1]});
 }
 
-double Magnitude::value() const {
-    if (num.is_zero()) return 0.0;
-    const std::int64_t k = den.exponent();  // the denominator scaled into [1, 2)
-    return num.to_double_scaled(k) / den.to_double_scaled(k);
-}
+double Magnitude::value() const { return nearest_double(num, den); }
 
 int compare(const Magnitude& a, const Magnitude& b) { return compare(a.num * b.den, b.num * a.den); }
 

@@ -3,6 +3,11 @@
 // of gyration kept, so that the modes and the exact inertia do not change.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "momentlab/io/input_error.hpp"
 #include "momentlab/io/scene_json.hpp"
 #include "momentlab/mechanics/modes.hpp"
 
@@ -50,6 +55,35 @@ TEST(SceneJson, WritesTheInertiaWhenGivenOne) {
     const nlohmann::json written = to_json(scene);
     EXPECT_EQ(written["body"]["inertia"].get<double>(), 0.125);
     EXPECT_FALSE(written["body"].contains("radius_of_gyration"));
+}
+
+// Contacts found from polygons at the edge of the contact distance (docs/reliability.md): a
+// block's corner raised exactly the distance above the floor touches it, one unit in the last
+// place higher does not; a corner below the floor by any amount, even 2^-60, is an overlap,
+// refused with both polygons' paths.
+TEST(SceneJson, ContactsFromPolygonsAtTheToleranceEdge) {
+    const auto scene = [](double corner_y, const std::string& distance) {
+        char text[400];
+        std::snprintf(text, sizeof text,
+                      R"({"body": {"mass": 1, "com": [0.5, 0.5], "inertia": 0.1, "polygon": [[0, 0], [1, %.17g], [1, 1], [0, 1]]},
+                          "obstacles": [{"polygon": [[-1, -1], [2, -1], [2, 0], [-1, 0]]}]%s})",
+                      corner_y, distance.c_str());
+        return read_scene_text(text);
+    };
+    EXPECT_EQ(scene(1e-9, "").contacts.size(), 2u);
+    EXPECT_EQ(scene(std::nextafter(1e-9, 1.0), "").contacts.size(), 1u);
+    EXPECT_EQ(scene(0.25, R"(, "contact_distance": 0.25)").contacts.size(), 2u);
+    EXPECT_EQ(scene(std::nextafter(0.25, 1.0), R"(, "contact_distance": 0.25)").contacts.size(), 1u);
+    EXPECT_EQ(scene(0.0, "").contacts.size(), 2u);
+    for (const double below : {-0x1p-60, -0.25}) {
+        try {
+            (void)scene(below, R"(, "contact_distance": 0.25)");
+            ADD_FAILURE() << "a corner " << below << " into the floor was accepted";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("$.obstacles[0].polygon: overlaps the body polygon ($.body.polygon)"), std::string::npos)
+                << e.what();
+        }
+    }
 }
 
 }  // namespace

@@ -172,6 +172,26 @@ def test_bad_force_set_arguments():
         ml.find_contacts([[0, 0], [1, 0], [0, 1]], [[[0, 0], [np.nan, 0], [0, 1]]])
 
 
+LADDER = [[0, 0], [0.1, 0], [2.1, 4], [2, 4]]  # drawn 0.1 into its wall
+FLOOR, WALL = [[-1, -1], [3, -1], [3, 0], [-1, 0]], [[2, 0], [3, 0], [3, 5], [2, 5]]
+
+
+def test_polygons_drawn_overlapping_are_refused(tmp_path):
+    doc = {"body": {"mass": 1, "com": [1.05, 2], "inertia": 1, "polygon": LADDER}, "mu": 0.3,
+           "obstacles": [{"polygon": FLOOR}, {"polygon": WALL}]}
+    with pytest.raises(ValueError) as python_error:
+        ml.Scene(body=doc["body"], obstacles=[FLOOR, WALL], mu=0.3)
+    message = str(python_error.value)
+    assert message.startswith("$.obstacles[1].polygon: overlaps the body polygon ($.body.polygon), for instance at ("), message
+    (tmp_path / "ladder.json").write_text(json.dumps(doc))
+    r = cli("modes", tmp_path / "ladder.json", check=False)
+    assert r.returncode == 2 and r.stderr.strip() == "momentlab: " + message
+    with pytest.raises(ValueError, match=r"^find_contacts: the body polygon overlaps obstacle 1, for instance at \("):
+        ml.find_contacts(LADDER, [FLOOR, WALL])
+    touching = [[0, 0], [0.125, 0], [2, 4], [1.875, 4]]  # against the wall: found, not refused
+    assert len(ml.find_contacts(touching, [FLOOR, WALL])) == 3
+
+
 def test_files_are_read_as_the_cli_reads_them(tmp_path):
     (tmp_path / "nul.json").write_bytes(b'{"contacts": [{"point": [0, 0], "normal": [0, 1]}]}\0')
     (tmp_path / "latin1.json").write_bytes(b"\xff")

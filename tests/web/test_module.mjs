@@ -252,7 +252,12 @@ test('tilts, springs and pushes: the exact oracle\'s', () => {
 });
 
 test('bad input throws an Error with the CLI message', () => {
+  // The issue's ladder, drawn 0.1 into its wall (contacts found from the polygons): refused.
+  const ladder = '{"body": {"mass": 1, "com": [1.05, 2], "inertia": 1, "polygon": [[0, 0], [0.1, 0], [2.1, 4], [2, 4]]}, "mu": 0.3, ' +
+    '"obstacles": [{"polygon": [[-1, -1], [3, -1], [3, 0], [-1, 0]]}, {"polygon": [[2, 0], [3, 0], [3, 5], [2, 5]]}]}';
+  assert.throws(() => ml.analyze(ladder), /^Error: \$\.obstacles\[1\]\.polygon: overlaps the body polygon \(\$\.body\.polygon\), for instance at \(/);
   const bad = [
+    ladder,
     '{"body": {"mass": 1, "com": [0, 0], "inertia": 1}, "contacts": [{"point": [0, 0], "normal": [0, 1], "mu": -1}]}',
     '{"body": {"mass": 1, "com": [0, 0], "inertia": 1}, "contacts": [{"point": [0, 0], "normal": [0, 0]}]}',
     '{"body": {"mass": 0, "com": [0, 0], "inertia": 1}, "contacts": [{"point": [0, 0], "normal": [0, 1]}]}',

@@ -82,10 +82,10 @@ public:
 
     /// floor(log2 |x|); meaningless for zero.
     [[nodiscard]] std::int64_t exponent() const;
-    /// x * 2^-k rounded to a double (relative error below 2^-52; 0 or infinite outside the
-    /// double range).
+    /// x * 2^-k correctly rounded to a double (to nearest, ties to even; 0 or infinite outside
+    /// the double range).
     [[nodiscard]] double to_double_scaled(std::int64_t k) const;
-    /// x rounded to a double (relative error below 2^-52; 0 or infinite outside the range).
+    /// x correctly rounded to a double (0 or infinite outside the range).
     [[nodiscard]] double to_double() const { return to_double_scaled(0); }
     /// True when x is exactly a finite double (then to_double() is exact).
     [[nodiscard]] bool fits_double() const;

@@ -32,7 +32,8 @@ struct Region {
     std::vector<ExactVector> rays_h;
     /// Directions of lines contained in the region, as exact points at infinity (x, y, 0).
     std::vector<ExactVector> lines_dir_h;
-    /// Vertices (x/s, y/s), rounded (infinite where x/s is beyond the double range).
+    /// Vertices (x/s, y/s), each coordinate the exact quotient correctly rounded (nearest_double,
+    /// core/rounding.hpp; infinite beyond the double range).
     std::vector<Vec2> vertices;
     /// rays_h and lines_dir_h rounded (directions only).
     std::vector<Vec2> rays;

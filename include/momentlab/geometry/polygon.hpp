@@ -3,6 +3,7 @@
 /// \file
 /// Checks on the polygons of bodies and obstacles (exact, with the orientation predicate).
 
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -38,11 +39,15 @@ namespace momentlab {
 /// True when p is within `distance` of some edge of the polygon (exactly).
 [[nodiscard]] bool within_distance_of_boundary(std::span<const Vec2> polygon, const Vec2& p, double distance);
 
-/// True when the interiors of two simple polygons meet, as far as these tell: two edges cross
-/// properly, a vertex, an edge midpoint or the vertex centroid of one lies strictly inside
-/// the other (the tests are exact for the points tested; for messages, e.g. "the body overlaps
-/// obstacle 2" instead of "touches no obstacle").
-[[nodiscard]] bool polygons_overlap(std::span<const Vec2> a, std::span<const Vec2> b);
+/// A point where the interiors of two simple polygons (either orientation) meet, or none when
+/// they do not (they may touch along edges and at vertices). Decided exactly: every edge of
+/// each is cut where the other's boundary meets it (orient2d, and exact rational parameters
+/// along the edge), and each piece is inside, outside or along the other polygon as the other's
+/// boundary passes at the piece's end (src/geometry/polygon_overlap.cpp). The point returned is
+/// a double strictly inside both (checked exactly) when the doubles hold one beside the piece
+/// found, else a rounded point of that piece (an overlap thinner than the doubles' spacing).
+/// Each polygon's edges are indexed in an EdgeGrid: O(n + m + the edge pairs sharing cells).
+[[nodiscard]] std::optional<Vec2> polygons_overlap(std::span<const Vec2> a, std::span<const Vec2> b);
 
 /// The distance from p to the boundary of the polygon (floating point: for messages only).
 [[nodiscard]] double distance_to_boundary(std::span<const Vec2> polygon, const Vec2& p);
@@ -62,6 +67,9 @@ public:
     /// The edges (edge k runs from vertex k to k + 1) entered in the cell of q, increasing; none
     /// when q lies beyond the polygon's box grown by the distance.
     [[nodiscard]] std::span<const std::size_t> near(const Vec2& q) const;
+    /// The edges entered in the cells near the segment ab (a superset of the edges within the
+    /// distance of it), increasing, into `out` (cleared first).
+    void near_segment(const Vec2& a, const Vec2& b, std::vector<std::size_t>& out) const;
 
 private:
     [[nodiscard]] std::pair<std::size_t, std::size_t> index(const Vec2& q) const;

@@ -31,7 +31,8 @@ struct ContactFinding {
 /// An edge lying along another edge gives two contacts, at the ends of the overlap. "Lying
 /// on" is within `options.distance`, decided exactly (within_distance_of_segment). Throws
 /// std::invalid_argument for a polygon that is not simple (polygon_problem: fewer than 3
-/// vertices, non-finite or repeated vertices, crossing or folded edges) or a negative distance.
+/// vertices, non-finite or repeated vertices, crossing or folded edges), a body overlapping an
+/// obstacle (their interiors meet: polygons_overlap, exact, no tolerance) or a negative distance.
 /// Each touched polygon's edges are indexed in a grid (docs/benchmarks.md, Polygons): O((n + m)
 /// log(n + m)) with the simplicity checks for outlines of n and m vertices whose edges do not
 /// crowd into a few cells.
@@ -39,9 +40,10 @@ struct ContactFinding {
                                                  const ContactFinding& options = {});
 
 namespace detail {
-/// find_contacts for polygons the caller has already found simple (polygon_problem gave ""):
-/// reading a scene checks each outline as it reads it, and sweeps it only once. When `origins`
-/// is given, it receives where each contact was found, one per contact.
+/// find_contacts for polygons the caller has already found simple (polygon_problem gave "") and
+/// not overlapping (polygons_overlap gave none): reading a scene checks each outline as it reads
+/// it, and sweeps it only once. When `origins` is given, it receives where each contact was
+/// found, one per contact.
 [[nodiscard]] std::vector<Contact> find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
                                                            const ContactFinding& options,
                                                            std::vector<ContactOrigin>* origins = nullptr);

@@ -30,7 +30,7 @@ namespace momentlab {
 struct Magnitude {
     Dyadic num;
     Dyadic den = Dyadic(1.0);
-    /// The ratio rounded to a double.
+    /// The ratio correctly rounded to a double (nearest_double, core/rounding.hpp).
     [[nodiscard]] double value() const;
 };
 
