@@ -1,8 +1,8 @@
 #include "momentlab/core/rational.hpp"
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -141,7 +141,9 @@ double Rational::to_double() const {
             c = down;
             continue;
         }
-        const bool odd = (std::bit_cast<std::uint64_t>(c) & 1U) != 0;  // ties to even
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &c, sizeof bits);
+        const bool odd = (bits & 1U) != 0;  // ties to even
         if (odd && cu == 0) return up;
         if (odd && cd == 0) return down;
         return c;

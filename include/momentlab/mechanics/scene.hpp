@@ -37,7 +37,7 @@ struct Contact {
     /// The exact values when some are not the doubles above (a decimal read from text, a
     /// Fraction from Python), the doubles being their correct roundings; none when the doubles
     /// are exact. Every decision reads the exact values (exact_values()).
-    std::shared_ptr<const ContactValues> exact;
+    std::shared_ptr<const ContactValues> exact = nullptr;
 
     /// A contact with mu_kinetic defaulting to mu. Throws std::invalid_argument for a zero or
     /// non-finite normal, a non-finite point or a negative friction coefficient.
@@ -94,7 +94,7 @@ struct Body {
     std::optional<double> radius_of_gyration = std::nullopt;
     /// The exact values of mass, com, inertia and radius of gyration when some are not the
     /// doubles above (as Contact::exact); none when the doubles are exact.
-    std::shared_ptr<const BodyValues> exact;
+    std::shared_ptr<const BodyValues> exact = nullptr;
     /// The exact values in force (as Contact::exact_values).
     [[nodiscard]] const BodyValues* exact_values() const;
 };
