@@ -190,6 +190,59 @@ void BM_oneshot_once(benchmark::State& state) {
 }
 BENCHMARK(BM_oneshot_once)->DenseRange(2, 8, 2)->Unit(benchmark::kMicrosecond);
 
+// The same kind of questions on scenes whose numbers have three decimals (docs/design.md,
+// "Numbers as typed"): read as binary doubles (arg 0, Contact::make of doubles) and as the
+// decimals they spell (arg 1, Contact::make of Rationals, as a scene file reads them), side by
+// side; the wrench is the same double. The ratio of the two is the cost of reading decimals.
+std::vector<Question> decimal_pool(int n, bool decimal) {
+    std::mt19937_64 rng(46 + static_cast<std::uint64_t>(n));
+    const auto three_places = [&](double lo, double hi) {
+        const auto k = static_cast<std::int64_t>(std::llround((lo + (hi - lo) * unit(rng)) * 1000.0));
+        return Rational(Dyadic::from_integer(k), Dyadic::from_integer(1000));
+    };
+    std::vector<Question> pool;
+    for (int i = 0; i < kPool; ++i) {
+        Scene s;
+        s.body = Body{1.0, Vec2(0.5, 0.25), 0.1, {}};
+        for (int j = 0; j < n; ++j) {
+            const double a = M_PI * (1.0 + unit(rng));
+            const Rational2 p{three_places(0.5 + 0.6 * std::cos(a), 0.5 + 0.6 * std::cos(a)),
+                              three_places(0.25 + 0.4 * std::sin(a), 0.25 + 0.4 * std::sin(a))};
+            const Rational2 nrm{Rational(0.5) - p[0] + three_places(-0.15, 0.15), Rational(0.25) - p[1] + three_places(-0.15, 0.15)};
+            const Rational mu = three_places(0.1, 1.1);
+            s.contacts.push_back(decimal ? Contact::make(p, nrm, mu) : Contact::make(to_double(p), to_double(nrm), mu.to_double()));
+        }
+        pool.push_back({std::move(s), Vec3(20 * unit(rng) - 10, 20 * unit(rng) - 10, 20 * unit(rng) - 10)});
+    }
+    return pool;
+}
+
+void BM_oneshot_decimals(benchmark::State& state) {
+    const auto pool = decimal_pool(static_cast<int>(state.range(0)), state.range(1) != 0);
+    std::size_t i = 0, found = 0;
+    int exact = 0;
+    for (auto _ : state) {
+        const Question& q = pool[i % kPool];
+        QueryDiagnostics how;
+        found += query(q.scene, q.wrench, {}, how).letters.size();
+        if (i++ < kPool) exact += !how.filtered;
+    }
+    benchmark::DoNotOptimize(found);
+    state.SetItemsProcessed(state.iterations());
+    state.counters["exact_path"] = exact;
+}
+BENCHMARK(BM_oneshot_decimals)->ArgsProduct({{2, 4, 8}, {0, 1}})->Unit(benchmark::kMicrosecond);
+
+// The same scenes analysed (every mode's sets, exact), binary and decimal.
+void BM_analyze_decimals(benchmark::State& state) {
+    const auto pool = decimal_pool(static_cast<int>(state.range(0)), state.range(1) != 0);
+    std::size_t i = 0, found = 0;
+    for (auto _ : state) found += analyze(pool[i++ % kPool].scene).size();
+    benchmark::DoNotOptimize(found);
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_analyze_decimals)->ArgsProduct({{4, 8}, {0, 1}})->Unit(benchmark::kMicrosecond);
+
 // The same questions as a simulator asks them: the LCP of the new scene assembled into reused
 // buffers (CoulombLcp::reset), then solved by Siconos' lexicographic Lemke.
 void BM_lemke_oneshot(benchmark::State& state) {

@@ -27,9 +27,9 @@ struct PlanOptions {
     bool ignore_interference = false;
     std::vector<double> centre;
     bool quasi_static = false;
-    std::vector<double> gravity;
-    std::vector<double> fixed;
-    std::vector<double> forces;
+    std::vector<TypedNumber> gravity;
+    std::vector<TypedNumber> fixed;
+    std::vector<TypedNumber> forces;
 };
 
 // Segments of a feature as text: "(0, 0.5) - (0, 0.25), (1, 0)" (a point once).
@@ -112,7 +112,7 @@ int run_tilt(const PlanOptions& o) {
     progress.finish();
     const Scene& scene = p.scene();
     const ModeForces& goal = p.goal(o.goal);
-    const std::optional<Exact3> fixed = p.wrench_of(load);
+    const std::optional<Exact3> fixed = p.fixed_wrench(load);
     if (o.json) {
         nlohmann::json out = to_json(plan);
         out["goal"] = o.goal;
@@ -146,7 +146,7 @@ int run_comply(const PlanOptions& o) {
     progress.finish();
     const Scene& scene = p.scene();
     const ModeForces& goal = p.goal(o.goal);
-    const std::optional<Exact3> fixed = p.wrench_of(load);
+    const std::optional<Exact3> fixed = p.fixed_wrench(load);
     const Labels& region = answer.labels;
     const std::optional<ComplyPlan>& plan = answer.centre;
     if (o.json) {
@@ -229,7 +229,7 @@ int run_push(const PlanOptions& o) {
     const std::vector<ModeForces>& analysis = p.analysis();
     progress.finish();
     const ModeForces& goal = p.goal(o.goal);
-    const std::optional<Exact3> fixed = p.wrench_of(load);
+    const std::optional<Exact3> fixed = p.fixed_wrench(load);
     const char* interference = o.ignore_interference ? "ignored" : "considered";
     // The cases as they are solved: only their printed rows are kept (a table of 6 n cases needs
     // the memory of its output), and the first case whole, for a picture or its bands.

@@ -16,14 +16,14 @@ namespace {
 
 struct QueryOptions {
     std::string file;
-    std::vector<double> wrench;
+    std::vector<TypedNumber> wrench;
     std::string wrenches;
     bool json = false;
     bool quasi_static = false;
     bool margin = false;
-    std::vector<double> push;
-    std::vector<double> gravity;
-    std::vector<double> forces;
+    std::vector<TypedNumber> push;
+    std::vector<TypedNumber> gravity;
+    std::vector<TypedNumber> forces;
 };
 
 // `--push X Y DX DY`: the force of direction (DX, DY) through (X, Y), its magnitude from 0 up, added
@@ -31,13 +31,14 @@ struct QueryOptions {
 int run_push_line(const QueryOptions& o) {
     if (!o.wrenches.empty()) throw InputError("--push", "give --push with one question, not --wrenches");
     if (o.margin) throw InputError("--margin", "give --margin with one wrench, not with --push");
-    const std::vector<Vec2> at = checked_points(o.push, "--push", 2);
+    const std::vector<Rational2> typed = checked_points(o.push, "--push", 2);
+    const std::vector<Vec2> at = {to_double(typed[0]), to_double(typed[1])};
     TerminalProgress progress;
     Problem p = open_problem(o.file, o.quasi_static, progress);
     const Load load = load_of(o.gravity, o.wrench, o.forces);
-    const std::vector<MagnitudeBand> bands = p.push_line(at[0], at[1], load);
-    const std::optional<Exact3> fixed = p.wrench_of(load);
-    const Exact3 g = fixed ? *fixed : Exact3{};
+    const std::vector<MagnitudeBand> bands = p.push_line(typed[0], typed[1], load);
+    const std::optional<Rational3> fixed = p.wrench_of(load);
+    const Rational3 g = fixed ? *fixed : Rational3{};
     progress.finish();
     if (o.json) {
         nlohmann::json out = {{"point", vector_json(at[0])},
@@ -92,6 +93,23 @@ std::optional<std::size_t> questions_in(const std::string& path) {
     return count;
 }
 
+// The exact values of a line's [fx, fy, tau] (w, as nlohmann read it): each number's text read
+// as the decimal it spells.
+Rational3 typed_wrench(const std::string& line, const nlohmann::json& w) {
+    Rational3 out{Rational(w[0].get<double>()), Rational(w[1].get<double>()), Rational(w[2].get<double>())};
+    std::size_t at = line.find('['), k = 0;
+    while (at != std::string::npos && k < 3) {
+        const std::size_t from = line.find_first_not_of(" \t\r", at + 1);
+        if (from == std::string::npos) break;
+        const std::size_t to = line.find_first_of(" \t\r,]", from);
+        if (to == std::string::npos) break;
+        if (const std::optional<Rational> r = Rational::parse(std::string_view(line).substr(from, to - from))) out[k] = *r;
+        ++k;
+        at = line.find(',', to);
+    }
+    return out;
+}
+
 // One JSON array [fx, fy, tau] per line in, one JSON object per line out (answers stream: the
 // lines before a bad one have been answered). The questions go to a QueryIndex made from the
 // scene, in the batches it asks for (batch()): it walks the scene's cells for them as long as
@@ -109,7 +127,7 @@ void answer_file(const QueryOptions& o) {
         std::size_t k = 0;
         if (o.margin) {
             for (const Vec3& e : pending) {
-                const MarginAnswer m = p.margins(Load{.wrench = e});
+                const MarginAnswer m = p.margins(Load{.wrench = rational(e)});
                 write_answer(std::cout, m.answer, &asked[k++], &m);
             }
         } else if (!pending.empty()) {
@@ -138,7 +156,18 @@ void answer_file(const QueryOptions& o) {
             if (!w.is_array() || w.size() != 3 || !w[0].is_number() || !w[1].is_number() || !w[2].is_number()) {
                 throw InputError(where, "expected [fx, fy, tau]");
             }
-            pending.push_back(checked_vector(Vec3(w[0].get<double>(), w[1].get<double>(), w[2].get<double>()), where));
+            (void)checked_vector(Vec3(w[0].get<double>(), w[1].get<double>(), w[2].get<double>()), where);
+            // The wrench as typed (0.1 is 1/10), times its common denominator: the same modes.
+            const Rational3 typed = typed_wrench(line, w);
+            const std::vector<Dyadic> e = clear_denominators(typed);
+            if (!(e[0].fits_double() && e[1].fits_double() && e[2].fits_double())) {
+                // Beyond doubles even so: answered exactly, alone, after those before it.
+                answer_pending();
+                const QueryAnswer a = o.margin ? p.margins(Load{.wrench = typed}).answer : p.query(Load{.wrench = typed});
+                write_answer(std::cout, a, &w);
+                continue;
+            }
+            pending.push_back(Vec3(e[0].to_double(), e[1].to_double(), e[2].to_double()));
             asked.push_back(std::move(w));
         } catch (const InputError&) {
             answer_pending();

@@ -131,21 +131,54 @@ const CLI::Validator& index_check() {
     return check;
 }
 
-Load load_of(const std::vector<double>& gravity, const std::vector<double>& wrench, const std::vector<double>& forces) {
+std::istream& operator>>(std::istream& in, TypedNumber& n) {
+    std::string text;
+    in >> text;
+    char* end = nullptr;
+    n.value = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size()) in.setstate(std::ios::failbit);
+    n.exact = std::isfinite(n.value) ? Rational::parse(text) : std::nullopt;
+    return in;
+}
+
+namespace {
+
+std::vector<double> values_of(const std::vector<TypedNumber>& typed) {
+    std::vector<double> out;
+    for (const TypedNumber& t : typed) out.push_back(t.value);
+    return out;
+}
+
+}  // namespace
+
+std::vector<Rational2> checked_points(const std::vector<TypedNumber>& values, const std::string& option,
+                                      std::optional<std::size_t> count) {
+    (void)checked_points(values_of(values), option, count);  // the checks, on the doubles
+    std::vector<Rational2> out;
+    for (std::size_t i = 0; i < values.size(); i += 2) out.push_back({values[i].rational(), values[i + 1].rational()});
+    return out;
+}
+
+Load load_of(const std::vector<TypedNumber>& gravity, const std::vector<TypedNumber>& wrench,
+             const std::vector<TypedNumber>& forces) {
     Load load;
     if (!gravity.empty()) load.gravity = checked_points(gravity, "--gravity", 1).front();
     if (!wrench.empty()) {
         if (wrench.size() != 3) throw InputError("--wrench", "expected three numbers FX FY TAU");
-        load.wrench = Vec3(wrench[0], wrench[1], wrench[2]);
+        (void)checked_vector(Vec3(wrench[0].value, wrench[1].value, wrench[2].value), "--wrench");
+        load.wrench = Rational3{wrench[0].rational(), wrench[1].rational(), wrench[2].rational()};
     }
     if (forces.size() % 4 != 0) throw InputError("--force", "expected four numbers X Y FX FY for each --force");
     for (std::size_t i = 0; i < forces.size(); i += 4) {
-        load.forces.emplace_back(Vec2(forces[i], forces[i + 1]), Vec2(forces[i + 2], forces[i + 3]));
+        (void)checked_vector(Vec2(forces[i].value, forces[i + 1].value), "--force");
+        (void)checked_vector(Vec2(forces[i + 2].value, forces[i + 3].value), "--force");
+        load.forces.emplace_back(Rational2{forces[i].rational(), forces[i + 1].rational()},
+                                 Rational2{forces[i + 2].rational(), forces[i + 3].rational()});
     }
     return load;
 }
 
-void add_force_option(CLI::App* cmd, std::vector<double>& forces, const char* what) {
+void add_force_option(CLI::App* cmd, std::vector<TypedNumber>& forces, const char* what) {
     cmd->add_option("--force", forces, std::string("X Y FX FY: a force (FX, FY) acting through (X, Y), ") + what + " (repeatable)")
         ->expected(4)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)

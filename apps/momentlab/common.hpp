@@ -74,12 +74,29 @@ const CLI::Validator& number_check();
 /// A CLI11 check for index options (--edge, --vertex): digits only, not empty.
 const CLI::Validator& index_check();
 
+/// A number option as typed (after number_check): the double strtod reads and, for decimal
+/// text, the exact value it spells (0.1 is 1/10; docs/design.md, "Numbers as typed").
+struct TypedNumber {
+    TypedNumber() {}  // (not an aggregate: CLI11 would make it from a double, not from its text)
+    double value = 0.0;
+    std::optional<Rational> exact;
+    /// The exact value (the double's own for text that is not a decimal, such as hexadecimal).
+    /// Precondition: value is finite.
+    [[nodiscard]] Rational rational() const { return exact ? *exact : Rational(value); }
+};
+/// How CLI11 reads a TypedNumber option.
+std::istream& operator>>(std::istream& in, TypedNumber& n);
+
 /// The load of --gravity GX GY, --wrench FX FY TAU and --force X Y FX FY (repeatable; the
 /// numbers of every --force in one list): the wrench acting besides a controlled action, or the
-/// applied wrench of a question (the problem checks the numbers).
-Load load_of(const std::vector<double>& gravity, const std::vector<double>& wrench, const std::vector<double>& forces);
+/// applied wrench of a question, exactly as typed. Every vector is checked (app/checks.hpp).
+Load load_of(const std::vector<TypedNumber>& gravity, const std::vector<TypedNumber>& wrench,
+             const std::vector<TypedNumber>& forces);
 /// Adds --force X Y FX FY (repeatable) to a command.
-void add_force_option(CLI::App* cmd, std::vector<double>& forces, const char* what);
+void add_force_option(CLI::App* cmd, std::vector<TypedNumber>& forces, const char* what);
+/// checked_points for typed numbers, exactly as typed.
+std::vector<Rational2> checked_points(const std::vector<TypedNumber>& values, const std::string& option,
+                                      std::optional<std::size_t> count = std::nullopt);
 /// "from 4.905 to 9.81", "9.81 only", "from 4.905 up": a range of magnitudes.
 std::string magnitude_text(const MagnitudeRange& range);
 /// The magnitude bands, one per line: "  [0, 4.905)   ff   unique".

@@ -20,8 +20,12 @@ command line prints ("$.contacts[0].mu: ..."). The reference is docs/python.md.
 
 from __future__ import annotations
 
+import json
+import math
 import os
 from dataclasses import dataclass, field
+from decimal import Decimal
+from fractions import Fraction
 from typing import Any, Iterable, Optional, Sequence
 
 import numpy as np
@@ -161,6 +165,46 @@ def _sequence(value, what) -> list:
         raise ValueError(f"{what}: expected a list") from None
 
 
+def _has_exact(value, depth: int = 0) -> bool:
+    """True when a scene's values hold a Fraction or a Decimal (docs/design.md, "Numbers as
+    typed"); deeper than a scene goes (a list holding itself), False: the reader refuses it."""
+    if depth > 8:
+        return False
+    if isinstance(value, (Fraction, Decimal)):
+        return True
+    if isinstance(value, dict):
+        return any(_has_exact(v, depth + 1) for v in value.values())
+    if isinstance(value, (list, tuple)):
+        return any(_has_exact(v, depth + 1) for v in value)
+    return False
+
+
+def _exact_json(value, where: str) -> str:
+    """A scene's values as JSON text whose numbers spell their exact values: a float's full binary
+    value, a Decimal as written, a Fraction whose denominator divides a power of ten as its decimal."""
+    if isinstance(value, dict):
+        return "{" + ",".join(json.dumps(str(k)) + ":" + _exact_json(v, f"{where}.{k}") for k, v in value.items()) + "}"
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    if isinstance(value, (list, tuple)):
+        return "[" + ",".join(_exact_json(v, f"{where}[{i}]") for i, v in enumerate(value)) + "]"
+    if isinstance(value, Fraction):
+        d, k = value.denominator, 0
+        while d % 2 == 0 or d % 5 == 0:
+            d //= 2 if d % 2 == 0 else 5
+            k += 1
+        if d != 1:
+            raise ValueError(f"{where}: {value} is not a decimal: a scene's numbers are decimals (or floats)")
+        value = Decimal(f"{value.numerator * 10 ** k // value.denominator}E-{k}")
+    if isinstance(value, float) and math.isfinite(value):
+        value = Decimal(value)  # exactly the double
+    if isinstance(value, Decimal):
+        if not value.is_finite():
+            raise ValueError(f"{where}: expected a finite number")
+        return str(value)
+    return json.dumps(value)
+
+
 class Scene:
     """A body (optional for purely kinematic questions), its contacts and fixed obstacles.
 
@@ -186,7 +230,10 @@ class Scene:
             doc["contact_distance"] = contact_distance
         if mu is not None:
             doc["mu"] = mu
-        self._scene = _momentlab._Scene.from_doc(doc)
+        if _has_exact(doc):  # Fractions and Decimals: read exactly, as the text of their decimals
+            self._scene = _momentlab._Scene.from_json(_exact_json(doc, "$"))
+        else:
+            self._scene = _momentlab._Scene.from_doc(doc)
 
     @classmethod
     def from_json(cls, text: str) -> "Scene":

@@ -94,6 +94,71 @@ Eigen::Matrix<double, K, 1> vector_of(const py::handle& value, const char* what)
     return v;
 }
 
+// A number with its exact meaning (docs/design.md, "Numbers as typed"): a float (or numpy
+// scalar) is its binary value, an int its integer, a fractions.Fraction its ratio, a
+// decimal.Decimal or a numeric string the decimal it spells; nullopt for anything else.
+std::optional<Rational> exact_number(const py::handle& x) {
+    static const py::object fraction = py::module_::import("fractions").attr("Fraction");
+    static const py::object decimal = py::module_::import("decimal").attr("Decimal");
+    const auto integer = [](const py::handle& i) { return Rational::parse(py::str(i).cast<std::string>()); };
+    if (py::isinstance<py::bool_>(x)) return Rational(x.cast<bool>() ? 1.0 : 0.0);
+    if (py::isinstance<py::int_>(x)) return integer(x);
+    if (py::isinstance(x, fraction)) {
+        const std::optional<Rational> num = integer(x.attr("numerator")), den = integer(x.attr("denominator"));
+        if (!num || !den) return std::nullopt;
+        return Rational(num->num(), den->num());
+    }
+    if (py::isinstance(x, decimal)) return Rational::parse(py::str(x).cast<std::string>());
+    if (py::isinstance<py::str>(x)) {
+        std::string t = x.cast<std::string>();
+        t.erase(t.find_last_not_of(" \t\r\n") + 1);
+        t.erase(0, std::min(t.size(), t.find_first_not_of(" \t\r\n")));
+        return Rational::parse(t);
+    }
+    return std::nullopt;
+}
+
+// True for a list or tuple holding a Fraction, a Decimal, a string or an int beyond 2^53 (read
+// exactly, element by element); numpy arrays, floats and small ints take vector_of's path.
+bool needs_exact(const py::handle& value) {
+    if (!py::isinstance<py::list>(value) && !py::isinstance<py::tuple>(value)) return false;
+    static const py::object fraction = py::module_::import("fractions").attr("Fraction");
+    static const py::object decimal = py::module_::import("decimal").attr("Decimal");
+    for (const py::handle& x : value) {
+        if (py::isinstance<py::str>(x) || py::isinstance(x, fraction) || py::isinstance(x, decimal)) return true;
+        if (py::isinstance<py::int_>(x) && !py::isinstance<py::bool_>(x) && x.attr("bit_length")().cast<int>() > 53) return true;
+    }
+    return false;
+}
+
+// A vector of K exact numbers (exact_number; floats and numpy arrays as vector_of reads them),
+// checked as vector_of checks its rounding.
+template <int K>
+std::array<Rational, K> exact_vector_of(const py::handle& value, const char* what) {
+    std::array<Rational, K> out;
+    if (!needs_exact(value)) {
+        const Eigen::Matrix<double, K, 1> v = vector_of<K>(value, what);
+        for (int k = 0; k < K; ++k) out[static_cast<std::size_t>(k)] = Rational(v(k));
+        return out;
+    }
+    if (py::len(value) != K) throw InputError(what, "expected " + std::to_string(K) + " numbers");
+    Eigen::Matrix<double, K, 1> rounded;
+    int k = 0;
+    for (const py::handle& x : value) {
+        std::optional<Rational> r = exact_number(x);
+        if (!r) {
+            if (py::isinstance<py::str>(x) || !py::hasattr(x, "__float__")) throw InputError(what, "expected numbers");
+            const double d = x.attr("__float__")().cast<double>();
+            if (!std::isfinite(d)) throw InputError(what, "expected finite numbers");
+            r = Rational(d);
+        }
+        rounded(k) = r->to_double();
+        out[static_cast<std::size_t>(k++)] = *r;
+    }
+    check_magnitude(rounded, what);
+    return out;
+}
+
 // An (n, 3) array of finite wrenches or normals; `what` names it in errors.
 std::vector<Vec3> vectors3_of(const py::handle& value, const char* what) {
     const Array a = real_array(value, what);
@@ -243,15 +308,15 @@ py::array_t<bool> query_batch(Analysis& a, const py::handle& wrenches) {
 // A load from the keyword arguments: gravity (GX, GY), wrench (FX, FY, TAU), forces [(point, force), ...].
 Load load_of(const py::handle& gravity, const py::handle& wrench, const py::handle& forces = py::none()) {
     Load load;
-    if (!gravity.is_none()) load.gravity = vector_of<2>(gravity, "gravity");
-    if (!wrench.is_none()) load.wrench = vector_of<3>(wrench, "wrench");
+    if (!gravity.is_none()) load.gravity = exact_vector_of<2>(gravity, "gravity");
+    if (!wrench.is_none()) load.wrench = exact_vector_of<3>(wrench, "wrench");
     if (!forces.is_none()) {
         std::size_t i = 0;
         for (const auto& f : forces) {
             const std::string where = "forces[" + std::to_string(i++) + "]";
             const auto pair = py::reinterpret_borrow<py::sequence>(f);
             if (py::len(pair) != 2) throw InputError(where, "expected (point, force)");
-            load.forces.emplace_back(vector_of<2>(pair[0], where.c_str()), vector_of<2>(pair[1], where.c_str()));
+            load.forces.emplace_back(exact_vector_of<2>(pair[0], where.c_str()), exact_vector_of<2>(pair[1], where.c_str()));
         }
     }
     return load;
@@ -421,10 +486,10 @@ PYBIND11_MODULE(_momentlab, m) {
         .def("mode_at", [](const Analysis& a, std::size_t i) { return a.modes.at(i); }, py::return_value_policy::copy)
         .def("mode", [](Analysis& a, const std::string& letters) { return a.mode(letters); })
         .def("query_one",
-             [](Analysis& a, const py::handle& wrench) { return a.problem.query(Load{.wrench = vector_of<3>(wrench, "wrench")}).letters; })
+             [](Analysis& a, const py::handle& wrench) { return a.problem.query(Load{.wrench = exact_vector_of<3>(wrench, "wrench")}).letters; })
         .def("margins",
              [](Analysis& a, const py::handle& wrench) {
-                 const MarginAnswer m = a.problem.margins(Load{.wrench = vector_of<3>(wrench, "wrench")});
+                 const MarginAnswer m = a.problem.margins(Load{.wrench = exact_vector_of<3>(wrench, "wrench")});
                  py::dict inside;
                  for (std::size_t k = 0; k < m.answer.letters.size(); ++k) inside[py::str(m.answer.letters[k])] = m.inside[k];
                  py::dict out;
@@ -463,8 +528,8 @@ PYBIND11_MODULE(_momentlab, m) {
         .def("push_line",
              [](Analysis& a, const py::handle& point, const py::handle& direction, const py::handle& gravity, const py::handle& wrench,
                 const py::handle& forces) {
-                 const Vec2 p = vector_of<2>(point, "point");
-                 const Vec2 d = vector_of<2>(direction, "direction");
+                 const Rational2 p = exact_vector_of<2>(point, "point");
+                 const Rational2 d = exact_vector_of<2>(direction, "direction");
                  return python_of(to_json(a.problem.push_line(p, d, load_of(gravity, wrench, forces)), a.modes));
              });
 
@@ -491,7 +556,7 @@ PYBIND11_MODULE(_momentlab, m) {
     m.def("query", [](const Scene& scene, const py::handle& wrench, bool quasi_static, const py::handle& gravity,
                       const py::handle& forces) {
         Load load = load_of(gravity, py::none(), forces);
-        if (!wrench.is_none()) load.wrench = vector_of<3>(wrench, "wrench");
+        if (!wrench.is_none()) load.wrench = exact_vector_of<3>(wrench, "wrench");
         const QueryAnswer a = Problem(scene, quasi_static).query(load);
         py::dict out;
         out["modes"] = a.letters;

@@ -15,6 +15,12 @@ InputError missing_body(const std::string& why) { return InputError("$", "missin
 
 bool fits_doubles(const Exact3& w) { return w[0].fits_double() && w[1].fits_double() && w[2].fits_double(); }
 
+// The wrench times its common denominator (a positive number, received in `common`).
+Exact3 cleared(const Rational3& w, Dyadic* common = nullptr) {
+    const std::vector<Dyadic> e = clear_denominators(w, common);
+    return {e[0], e[1], e[2]};
+}
+
 // The modes of the analysis (indices) as a QueryAnswer: letters sorted, twists alongside.
 QueryAnswer answer_of(const std::vector<ModeForces>& analysis, std::vector<std::size_t> modes) {
     std::sort(modes.begin(), modes.end(),
@@ -54,49 +60,69 @@ const QueryIndex& Problem::index() {
 
 const ModeForces& Problem::goal(const std::string& letters) { return find_mode(analysis(), letters, names_.goal); }
 
-std::optional<Exact3> Problem::wrench_of(const Load& load) const {
-    std::optional<Exact3> out;
-    const auto add = [&](const Exact3& w) { out = out ? *out + w : w; };
+std::optional<Rational3> Problem::wrench_of(const Load& load) const {
+    std::optional<Rational3> out;
+    const auto add = [&](const Rational3& w) { out = out ? Rational3{(*out)[0] + w[0], (*out)[1] + w[1], (*out)[2] + w[2]} : w; };
+    // The force f through p: (f, p x f).
+    const auto through = [](const Rational2& p, const Rational2& f) { return Rational3{f[0], f[1], p[0] * f[1] - p[1] * f[0]}; };
     if (load.gravity) {
-        const Vec2 g = checked_vector(*load.gravity, names_.gravity);
+        (void)checked_vector(to_double(*load.gravity), names_.gravity);
         if (!scene_.body) throw missing_body(names_.gravity + " acts on its mass through its centre of mass");
-        add(gravity_wrench(*scene_.body, g));
+        const Body& b = *scene_.body;
+        const BodyValues* v = b.exact_values();
+        const Rational m = v ? v->mass : Rational(b.mass);
+        const Rational2 com = v ? v->com : rational(b.com);
+        add(through(com, {m * (*load.gravity)[0], m * (*load.gravity)[1]}));
     }
-    if (load.wrench) add(exact(checked_vector(*load.wrench, names_.wrench)));
+    if (load.wrench) {
+        (void)checked_vector(to_double(*load.wrench), names_.wrench);
+        add(*load.wrench);
+    }
     for (const auto& [point, force] : load.forces) {
-        const Vec2 p = checked_vector(point, names_.force);
-        add(wrench_through(exact(p), exact(checked_vector(force, names_.force))));
+        (void)checked_vector(to_double(point), names_.force);
+        (void)checked_vector(to_double(force), names_.force);
+        add(through(point, force));
     }
     return out;
 }
 
+std::optional<Exact3> Problem::fixed_wrench(const Load& load) const {
+    const std::optional<Rational3> w = wrench_of(load);
+    if (!w) return std::nullopt;
+    const Dyadic one(1.0);
+    if ((*w)[0].den() == one && (*w)[1].den() == one && (*w)[2].den() == one) return Exact3{(*w)[0].num(), (*w)[1].num(), (*w)[2].num()};
+    return exact(to_double(*w));
+}
+
 QueryAnswer Problem::query(const Load& load) {
-    const std::optional<Exact3> w = wrench_of(load);
+    const std::optional<Rational3> w = wrench_of(load);
     if (!w) throw InputError(names_.wrench, "expected the applied wrench (or gravity, or forces at points)");
-    if (fits_doubles(*w)) {
+    const Exact3 e = cleared(*w);
+    if (fits_doubles(e)) {
         require_body(scene_, "query", AnalysisOptions{quasi_static_});
-        return momentlab::query(scene_, to_double(*w), AnalysisOptions{quasi_static_, progress_});
+        return momentlab::query(scene_, to_double(e), AnalysisOptions{quasi_static_, progress_});
     }
     const std::vector<ModeForces>& a = analysis("query");
-    const ExactVector e = ExactVector::from_exact(*w);
+    const ExactVector v = ExactVector::from_exact(e);
     std::vector<std::size_t> modes;
     for (std::size_t i = 0; i < a.size(); ++i) {
-        if (a[i].applied.has(e)) modes.push_back(i);
+        if (a[i].applied.has(v)) modes.push_back(i);
     }
     return answer_of(a, std::move(modes));
 }
 
 MarginAnswer Problem::margins(const Load& load) {
-    const std::optional<Exact3> w = wrench_of(load);
+    const std::optional<Rational3> w = wrench_of(load);
     if (!w) throw InputError(names_.wrench, "expected the applied wrench (or gravity, or forces at points)");
     const std::vector<ModeForces>& a = analysis("query");
+    const Exact3 e = cleared(*w);
     std::vector<std::size_t> modes;
-    if (fits_doubles(*w)) {
-        modes = index().query(to_double(*w)).modes;
+    if (fits_doubles(e)) {
+        modes = index().query(to_double(e)).modes;
     } else {
-        const ExactVector e = ExactVector::from_exact(*w);
+        const ExactVector v = ExactVector::from_exact(e);
         for (std::size_t i = 0; i < a.size(); ++i) {
-            if (a[i].applied.has(e)) modes.push_back(i);
+            if (a[i].applied.has(v)) modes.push_back(i);
         }
     }
     MarginAnswer out;
@@ -112,16 +138,30 @@ MarginAnswer Problem::margins(const Load& load) {
     return out;
 }
 
-std::vector<MagnitudeBand> Problem::push_line(const Vec2& point, const Vec2& direction, const Load& load) {
-    const Vec2 p = checked_vector(point, names_.point);
-    const Vec2 d = checked_direction(direction, names_.direction);
-    const Exact3 fixed = wrench_of(load).value_or(Exact3{});
-    return magnitude_bands(analysis("query"), fixed, wrench_through(exact(p), exact(d)));
+std::vector<MagnitudeBand> Problem::push_line(const Rational2& point, const Rational2& direction, const Load& load) {
+    (void)checked_vector(to_double(point), names_.point);
+    (void)checked_direction(to_double(direction), names_.direction);
+    // g + lambda u with both cleared: s_g g + lambda' s_u u, lambda' = lambda s_g / s_u, so each
+    // end found is lambda = lambda' s_u / s_g, exactly.
+    const Rational3 fixed = wrench_of(load).value_or(Rational3{});
+    const Rational3 u{direction[0], direction[1], point[0] * direction[1] - point[1] * direction[0]};
+    Dyadic s_g, s_u;
+    const Exact3 g = cleared(fixed, &s_g), cu = cleared(u, &s_u);
+    std::vector<MagnitudeBand> bands = magnitude_bands(analysis("query"), g, cu);
+    const auto back = [&](Magnitude& m) {
+        m.num = m.num * s_u;
+        m.den = m.den * s_g;
+    };
+    for (MagnitudeBand& b : bands) {
+        back(b.from);
+        if (b.to) back(*b.to);
+    }
+    return bands;
 }
 
 PlanContext Problem::context(const Load& load) {
     PlanContext c;
-    c.fixed = wrench_of(load);
+    c.fixed = fixed_wrench(load);
     c.modes = analysis();
     c.metric = default_metric(scene_);
     return c;

@@ -33,12 +33,12 @@ public:
     }
 
 private:
-    const AssemblyData<Rational>& exact() {
-        if (!exact_) exact_ = assembly_data<Rational>(assembly_);
+    const AssemblyData<assembly_detail::Rational>& exact() {
+        if (!exact_) exact_ = assembly_data<assembly_detail::Rational>(assembly_);
         return *exact_;
     }
-    Rational egx() { return exact_value(gravity_.x()); }
-    Rational egy() { return exact_value(gravity_.y()); }
+    assembly_detail::Rational egx() { return exact_value(gravity_.x()); }
+    assembly_detail::Rational egy() { return exact_value(gravity_.y()); }
 
     bool cell_nonempty(const std::string& letters) {
         if (letters.find_first_not_of('f') == std::string::npos) return true;  // x = 0
@@ -118,7 +118,7 @@ private:
     const Assembly& assembly_;
     Vec2 gravity_;
     AssemblyData<Interval> d_;
-    std::optional<AssemblyData<Rational>> exact_;
+    std::optional<AssemblyData<assembly_detail::Rational>> exact_;
     Interval gx_, gy_;
     std::optional<bool> frictionless_;
 };

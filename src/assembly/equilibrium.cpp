@@ -36,7 +36,7 @@ Equilibrium equilibrium(const Assembly& assembly, const Vec2& gravity) {
     std::vector<ForceColumn> columns;
     const Program<Interval> p = equilibrium_program(d, Interval(gravity.x()), Interval(gravity.y()), &columns);
     const FeasibilityAnswer answer = decide(p, [&] {
-        const AssemblyData<Rational> e = assembly_data<Rational>(assembly);
+        const AssemblyData<assembly_detail::Rational> e = assembly_data<assembly_detail::Rational>(assembly);
         return equilibrium_program(e, exact_value(gravity.x()), exact_value(gravity.y()));
     });
     Equilibrium out;

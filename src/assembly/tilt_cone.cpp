@@ -15,18 +15,18 @@ using namespace assembly_detail;
 
 namespace {
 
-using Direction = std::array<Rational, 2>;
+using Direction = std::array<assembly_detail::Rational, 2>;
 
-Rational cross(const Direction& a, const Direction& b) { return a[0] * b[1] - a[1] * b[0]; }
-Rational dot(const Direction& a, const Direction& b) { return a[0] * b[0] + a[1] * b[1]; }
+assembly_detail::Rational cross(const Direction& a, const Direction& b) { return a[0] * b[1] - a[1] * b[0]; }
+assembly_detail::Rational dot(const Direction& a, const Direction& b) { return a[0] * b[0] + a[1] * b[1]; }
 bool same_ray(const Direction& a, const Direction& b) { return cross(a, b) == 0 && dot(a, b) > 0; }
-Direction opposite(const Direction& a) { return {Rational(-a[0]), Rational(-a[1])}; }
+Direction opposite(const Direction& a) { return {assembly_detail::Rational(-a[0]), assembly_detail::Rational(-a[1])}; }
 
 ExactDirection exact_direction(const Direction& d) {
-    const Rational scale = max(abs(d[0]), abs(d[1]));
+    const assembly_detail::Rational scale = max(abs(d[0]), abs(d[1]));
     ExactDirection out;
     for (int i = 0; i < 2; ++i) {
-        const Rational v = d[static_cast<std::size_t>(i)] / scale;
+        const assembly_detail::Rational v = d[static_cast<std::size_t>(i)] / scale;
         out.exact[static_cast<std::size_t>(i)] = exact_text(v);
         out.rounded[i] = approximate(v);
         out.is_double[static_cast<std::size_t>(i)] = is_double(v);
@@ -48,7 +48,7 @@ public:
             Program<Interval> margin = p;  // feasibility first, with a margin on the forces
             for (std::size_t j = 0; j + 1 < margin.strict.size(); ++j) margin.strict[j] = true;
             const FeasibilityAnswer f = decide(margin, [&] {
-                Program<Rational> e = exact();
+                Program<assembly_detail::Rational> e = exact();
                 for (std::size_t j = 0; j + 1 < e.strict.size(); ++j) e.strict[j] = true;
                 return e;
             });
@@ -58,9 +58,9 @@ public:
             for (int sign : {1, -1}) {
                 const Optimum o = maximize(p, exact, {{s, sign}});
                 if (o.status != Optimum::Status::Optimal) continue;
-                const Rational end = sign > 0 ? o.value : Rational(-o.value);
+                const assembly_detail::Rational end = sign > 0 ? o.value : assembly_detail::Rational(-o.value);
                 // u + end * u_perp, u_perp = (-u.y, u.x)
-                const Direction d{Rational(u[0]) - end * u[1], Rational(u[1]) + end * u[0]};
+                const Direction d{assembly_detail::Rational(u[0]) - end * u[1], assembly_detail::Rational(u[1]) + end * u[0]};
                 bool known = false;
                 for (const Direction& e : ends) known = known || same_ray(e, d);
                 if (!known) ends.push_back(d);
@@ -87,7 +87,7 @@ public:
             return cone;
         }
         // a and -a: a line, or the half-plane on the side of a perpendicular that stands.
-        const Direction left{Rational(-a[1]), a[0]};
+        const Direction left{assembly_detail::Rational(-a[1]), a[0]};
         if (stands(left)) {
             cone.kind = TiltCone::Kind::HalfPlane;
             cone.directions = {exact_direction(a), exact_direction(opposite(a))};
@@ -102,8 +102,8 @@ public:
     }
 
 private:
-    const AssemblyData<Rational>& exact_data() {
-        if (!exact_) exact_ = assembly_data<Rational>(assembly_);
+    const AssemblyData<assembly_detail::Rational>& exact_data() {
+        if (!exact_) exact_ = assembly_data<assembly_detail::Rational>(assembly_);
         return *exact_;
     }
 
@@ -115,7 +115,7 @@ private:
 
     const Assembly& assembly_;
     AssemblyData<Interval> d_;
-    std::optional<AssemblyData<Rational>> exact_;
+    std::optional<AssemblyData<assembly_detail::Rational>> exact_;
 };
 
 }  // namespace

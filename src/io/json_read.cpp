@@ -631,6 +631,27 @@ std::vector<Vec2> vec2_list(const Value& v, const Path& path) {
     return out;
 }
 
+Rational exact_number(const Value& v) {
+    const JsonNumber n = v.number();
+    // An integer of at most 15 digits is its double (no need to parse it again).
+    const std::string_view t = n.text.substr(!n.text.empty() && n.text[0] == '-' ? 1 : 0);
+    if (t.size() <= 15 && t.find_first_not_of("0123456789") == std::string_view::npos) return Rational(n.value);
+    const std::optional<Rational> r = Rational::parse(n.text);
+    return r ? *r : Rational(n.value);
+}
+
+Rational2 exact_vec2(const Value& v) {
+    Rational2 out;
+    v.for_each_element([&](std::size_t k, const Value& c) { out[k] = exact_number(c); });
+    return out;
+}
+
+Rational3 exact_vec3(const Value& v) {
+    Rational3 out;
+    v.for_each_element([&](std::size_t k, const Value& c) { out[k] = exact_number(c); });
+    return out;
+}
+
 Vec2 nonzero2(const Value& obj, const Path& path, std::string_view name) {
     const Path p(path, name);
     return nonzero(vec2(field(obj, path, name), p), p);

@@ -41,6 +41,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "momentlab/core/rational.hpp"
 #include "momentlab/core/vec.hpp"
 #include "momentlab/io/input_error.hpp"
 
@@ -293,6 +294,12 @@ Vec2 vec2(const Value& v, const Path& path);
 Vec3 vec3(const Value& v, const Path& path);
 std::vector<Vec3> vec3_list(const Value& v, const Path& path);
 std::vector<Vec2> vec2_list(const Value& v, const Path& path);
+/// The exact value of a number that number() (or a vector reader) accepted: the decimal its
+/// text spells (0.1 is 1/10), or the double itself for a number that was never text.
+Rational exact_number(const Value& v);
+/// The exact coordinates of a vector that vec2() / vec3() accepted.
+Rational2 exact_vec2(const Value& v);
+Rational3 exact_vec3(const Value& v);
 /// A non-zero [x, y] in field `name` of `obj`.
 Vec2 nonzero2(const Value& obj, const Path& path, std::string_view name);
 /// v, unless it is zero (an InputError at path).

@@ -71,6 +71,19 @@ Body read_body(const Value& b, const Path& path, InputWarnings* w) {
         throw InputError(path.str(), "missing field \"inertia\" (or \"radius_of_gyration\")");
     }
     if (const std::optional<Value> p = b.find("polygon")) body.polygon = polygon(*p, Path(path, "polygon"));
+    // The exact values, kept beside the doubles when some are not doubles (0.1 is 1/10).
+    BodyValues v;
+    v.mass = exact_number(field(b, path, "mass"));
+    v.com = exact_vec2(field(b, path, "com"));
+    if (const std::optional<Value> i = b.find("inertia")) v.inertia = exact_number(*i);
+    if (const std::optional<Value> r = b.find("radius_of_gyration")) v.radius_of_gyration = exact_number(*r);
+    if (!v.mass.is_double() || !is_double(v.com) || !v.inertia.is_double() || (v.radius_of_gyration && !v.radius_of_gyration->is_double())) {
+        v.mass_double = body.mass;
+        v.com_double = body.com;
+        v.inertia_double = body.inertia;
+        v.radius_double = body.radius_of_gyration;
+        body.exact = std::make_shared<const BodyValues>(std::move(v));
+    }
     return body;
 }
 
@@ -88,7 +101,21 @@ Contact read_contact(const Value& c, const Path& path, InputWarnings* w) {
     std::optional<double> kinetic;
     if (mu_kinetic) kinetic = nonnegative(*mu_kinetic, Path(path, "mu_kinetic"), "mu_kinetic");
     if (name && !name->is_string()) throw InputError(Path(path, "name").str(), "expected a string");
-    return Contact::make(point, normal, friction, kinetic, name ? std::string(name->string()) : std::string());
+    std::string text = name ? std::string(name->string()) : std::string();
+    // The exact values (0.1 is 1/10), kept beside the doubles when some are not doubles.
+    ContactValues v;
+    v.point = exact_vec2(*given_point);
+    v.normal = exact_vec2(*given_normal);
+    v.mu = mu ? exact_number(*mu) : Rational();
+    v.mu_kinetic = mu_kinetic ? exact_number(*mu_kinetic) : v.mu;
+    if (is_double(v.point) && is_double(v.normal) && v.mu.is_double() && v.mu_kinetic.is_double()) {
+        return Contact::make(point, normal, friction, kinetic, std::move(text));
+    }
+    v.point_double = point;
+    v.normal_double = normal;
+    v.mu_double = friction;
+    v.mu_kinetic_double = kinetic.value_or(friction);
+    return Contact::make(std::move(v), std::move(text));
 }
 
 Scene read_scene(const Value& doc, InputWarnings* w) {
@@ -166,6 +193,11 @@ Scene read_scene(const Value& doc, InputWarnings* w) {
             scene.contacts = detail::find_contacts_of_simple(scene.body->polygon, scene.obstacles, options, &scene.origins);
         } catch (const std::invalid_argument& e) {
             throw InputError("$", e.what());
+        }
+        // A decimal mu (0.3 is 3/10) for every contact found.
+        const Rational exact_mu = mu ? exact_number(*mu) : Rational();
+        if (!exact_mu.is_double()) {
+            for (Contact& c : scene.contacts) c = Contact::make(rational(c.point), rational(c.normal), exact_mu, std::nullopt, c.name);
         }
         if (scene.contacts.empty()) {
             throw InputError("$", "the body polygon touches no obstacle (no contacts found)");

@@ -103,7 +103,7 @@ Closure closure(const Scene& scene, const ClosureOptions& options) {
     for (const Contact& c : scene.contacts) {
         normals.push_back(c.normal_wrench());
         unit_normals.push_back(unit_wrench(c.point, c.normal, metric));
-        for (const ExactVector& w : friction_cone_edges(c.point, c.normal, c.mu)) {  // n + mu t, n - mu t at p
+        for (const ExactVector& w : c.friction_edges()) {  // n + mu t, n - mu t at p
             edges.push_back(w);
             const Vec3 v = w.value();
             unit_edges.push_back(unit_wrench(c.point, Vec2(v.x(), v.y()), metric));

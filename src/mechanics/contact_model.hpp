@@ -50,6 +50,28 @@ struct ContactGenerators {
     }
 }
 
+/// A contact's exact values with their denominators cleared (docs/design.md, "Numbers as
+/// typed"): the point P / scale, a positive multiple n of the normal, mu = mu_num / mu_den and
+/// mu_k = kinetic_num / kinetic_den, all Dyadic. Every generator of the contact is then a
+/// positive multiple of one made of these in Dyadic arithmetic (cleared_wrench).
+struct ClearedContact {
+    Exact2 point;
+    Dyadic scale;
+    Exact2 normal;
+    Dyadic mu_num, mu_den, kinetic_num, kinetic_den;
+};
+[[nodiscard]] ClearedContact cleared(const ContactValues& values);
+
+/// The direction of the edge e, times mu's denominator: den n + c num t for the edge's
+/// n + c (num / den) t.
+[[nodiscard]] Exact2 edge_direction(const ClearedContact& c, FrictionEdge e);
+
+/// scale times the wrench of the force direction d through P / scale: (scale d, P x d).
+[[nodiscard]] Exact3 cleared_wrench(const ClearedContact& c, const Exact2& d);
+
+/// The inertia matrix of a body's exact values times a positive number (its denominators cleared).
+[[nodiscard]] std::array<Exact3, 3> cleared_inertia(const BodyValues& values);
+
 /// The planar inertia at the world origin in the number type N (constructible as N{double}, with
 /// +, - and *): M = [[m, 0, -m c.y], [0, m, m c.x], [-m c.y, m c.x, I_c + m |c|^2]], I_c the
 /// inertia about the centre of mass, or m rho^2 for a radius of gyration rho (exactly).

@@ -38,18 +38,18 @@ struct FrictionEdges {
         const std::size_t n = contacts.size();
         int distinct = 0;
         for (std::size_t j = 0; j < n; ++j) {
-            if (contacts[j].mu_kinetic != contacts[j].mu) kinetic_at[j] = distinct++;
+            if (!contacts[j].kinetic_is_static()) kinetic_at[j] = distinct++;
         }
         kinetics.resize(static_cast<std::size_t>(distinct));
         kinetics_rounded.resize(static_cast<std::size_t>(distinct));
         detail::for_each_index(2, two_threads && n >= kTwoThreadContacts, [&](std::size_t half) {
             for (std::size_t j = n * half / 2; j < n * (half + 1) / 2; ++j) {
                 const Contact& c = contacts[j];
-                statics[j] = friction_cone_edges(c.point, c.normal, c.mu);
+                statics[j] = c.friction_edges();
                 statics_rounded[j] = {statics[j][0].approximation(), statics[j][1].approximation()};
                 if (kinetic_at[j] >= 0) {
                     const auto k = static_cast<std::size_t>(kinetic_at[j]);
-                    kinetics[k] = friction_cone_edges(c.point, c.normal, c.mu_kinetic);
+                    kinetics[k] = c.friction_edges(true);
                     kinetics_rounded[k] = {kinetics[k][0].approximation(), kinetics[k][1].approximation()};
                 }
             }

@@ -172,14 +172,38 @@ struct ContactData {
     std::array<A3, 4> edges;
 };
 
+// An exact number as an Approx: its rounding (relative error below 2^-52) and a bound.
+Approx approx_of(const Dyadic& x) {
+    const double v = x.to_double();
+    return {v, x.fits_double() ? 0.0 : std::fabs(v) * 0x1p-51 + kUnderflow};
+}
+
+constexpr std::array kEdges{detail::FrictionEdge::StaticPlus, detail::FrictionEdge::StaticMinus, detail::FrictionEdge::KineticPlus,
+                            detail::FrictionEdge::KineticMinus};
+
 ContactData contact_data(const Contact& c) {
-    const Approx px{c.point.x(), 0.0}, py{c.point.y(), 0.0}, nx{c.normal.x(), 0.0}, ny{c.normal.y(), 0.0};
     ContactData d;
+    if (const ContactValues* values = c.exact_values()) {
+        // Exact values: every vector times a positive number, its denominators cleared (the
+        // point P / s, the normal's and mu's own), so the same signs.
+        const detail::ClearedContact k = detail::cleared(*values);
+        const Approx px = approx_of(k.point[0]), py = approx_of(k.point[1]), s = approx_of(k.scale);
+        const Approx nx = approx_of(k.normal[0]), ny = approx_of(k.normal[1]);
+        d.normal = {s * nx, s * ny, px * ny - py * nx};
+        d.tangent = {s * ny, -(s * nx), -(px * nx + py * ny)};
+        d.about = {py, -px, s};
+        for (const auto e : kEdges) {
+            const Exact2 dir = detail::edge_direction(k, e);
+            const Approx dx = approx_of(dir[0]), dy = approx_of(dir[1]);
+            d.edges[static_cast<std::size_t>(e)] = negated(A3{s * dx, s * dy, px * dy - py * dx});
+        }
+        return d;
+    }
+    const Approx px{c.point.x(), 0.0}, py{c.point.y(), 0.0}, nx{c.normal.x(), 0.0}, ny{c.normal.y(), 0.0};
     d.normal = {nx, ny, px * ny - py * nx};
     d.tangent = {ny, -nx, -(px * nx + py * ny)};
     d.about = input(c.point.y(), -c.point.x(), 1.0);
-    for (const auto e : {detail::FrictionEdge::StaticPlus, detail::FrictionEdge::StaticMinus, detail::FrictionEdge::KineticPlus,
-                         detail::FrictionEdge::KineticMinus}) {
+    for (const auto e : kEdges) {
         const auto [dx, dy] = friction_direction(nx, ny, Approx{detail::tangent_coefficient(c, e), 0.0});
         d.edges[static_cast<std::size_t>(e)] = negated(A3{dx, dy, px * dy - py * dx});
     }
@@ -201,10 +225,16 @@ public:
     Filtered(const Scene& scene, bool quasi_static) : n_(scene.contacts.size()) {
         for (const Contact& c : scene.contacts) {
             contacts_.push_back(contact_data(c));
-            scene_mu_.push_back(c.mu);
+            const ContactValues* values = c.exact_values();
+            mu_zero_.push_back(values ? values->mu.is_zero() : c.mu == 0.0);
         }
         if (!quasi_static) {
-            inertia_ = detail::inertia_matrix<Approx>(*scene.body);
+            if (const BodyValues* values = scene.body->exact_values()) {
+                const ExactMatrix m = detail::cleared_inertia(*values);
+                for (std::size_t i = 0; i < 3; ++i) inertia_[i] = {approx_of(m[i][0]), approx_of(m[i][1]), approx_of(m[i][2])};
+            } else {
+                inertia_ = detail::inertia_matrix<Approx>(*scene.body);
+            }
             dynamic_ = true;
         }
     }
@@ -248,7 +278,7 @@ public:
             for (std::size_t j = 0; j < n_; ++j) {
                 for (const detail::FrictionEdge e : detail::contact_generators(d.letters[j])) {
                     // (the static cone is one edge when mu = 0: both are n)
-                    if (e == detail::FrictionEdge::StaticMinus && scene_mu_[j] == 0.0) continue;
+                    if (e == detail::FrictionEdge::StaticMinus && mu_zero_[j]) continue;
                     g[k++] = Generator{contacts_[j].edges[static_cast<std::size_t>(e)], -1};
                 }
             }
@@ -378,7 +408,7 @@ private:
 
     std::size_t n_;
     std::vector<ContactData> contacts_;
-    std::vector<double> scene_mu_;
+    std::vector<bool> mu_zero_;
     std::array<A3, 3> inertia_{};
     bool dynamic_ = false;
     std::vector<A3> twists_;

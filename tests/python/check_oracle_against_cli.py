@@ -24,6 +24,7 @@ import argparse
 import collections
 import itertools
 import json
+from fractions import Fraction
 import os
 import random
 import subprocess
@@ -57,6 +58,20 @@ def self_check(scene, found):
             assert oracle.mode_of_twist(scene, xi) in found, xi
 
 
+def number_text(x):
+    """x's exact decimal when it has one (every double does), else its double's shortest text: the
+    wrench as the tool will read it."""
+    x = Fraction(x)
+    d, k = x.denominator, 0
+    while d % 2 == 0 or d % 5 == 0:
+        d //= 2 if d % 2 == 0 else 5
+        k += 1
+    if d != 1 or k > 60:
+        return repr(float(x))
+    digits = str(abs(x.numerator * 10 ** k // x.denominator)).rjust(k + 1, "0")
+    return ("-" if x < 0 else "") + (digits if k == 0 else digits[:-k] + "." + digits[-k:])
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--scenes", type=int, default=100, help="random scenes (default 100)")
@@ -80,7 +95,9 @@ def main():
             json.dump(doc, f)
             path = f.name
         try:
-            scene = oracle.exact_scene(doc)
+            # The scene as the tool reads its text: each number the decimal it spells.
+            with open(path) as f:
+                scene = oracle.exact_scene(json.load(f, parse_float=Fraction))
             mine = oracle.modes(scene)
             self_check(scene, mine)
             theirs = set(run_cli(args.cli, ["modes", path, "--json"])["modes"])
@@ -97,7 +114,7 @@ def main():
                 wpath = path + ".wrenches"
                 with open(wpath, "w") as f:
                     for _, w in wrenches:
-                        f.write("[" + ", ".join(repr(float(x)) for x in w) + "]\n")
+                        f.write("[" + ", ".join(number_text(x) for x in w) + "]\n")
                 proc = subprocess.run([args.cli, "query", path, "--wrenches", wpath, "--json"],
                                       capture_output=True, text=True)
                 os.unlink(wpath)
@@ -106,11 +123,11 @@ def main():
                 outs = [json.loads(line) for line in proc.stdout.splitlines() if line.strip()]
                 assert len(outs) == len(wrenches)
             for index, (kind, w) in enumerate(wrenches):
-                mine = oracle.query(scene, w)
+                mine = oracle.query(scene, [Fraction(number_text(x)) for x in w])
                 if args.batch:
                     out = outs[index]
                 else:
-                    out = run_cli(args.cli, ["query", path, "--wrench"] + [repr(float(x)) for x in w] + ["--json"])
+                    out = run_cli(args.cli, ["query", path, "--wrench"] + [number_text(x) for x in w] + ["--json"])
                 theirs = set(out["modes"])
                 counts[f"{kind} wrenches"] += 1
                 verdicts[(kind, oracle.verdict(mine))] += 1

@@ -46,10 +46,11 @@ InputNames web_names() {
 Load load_of(const std::string& text) {
     const json doc = json::parse(text);
     Load load;
-    if (doc.contains("gravity")) load.gravity = Vec2(doc["gravity"][0], doc["gravity"][1]);
-    if (doc.contains("wrench")) load.wrench = Vec3(doc["wrench"][0], doc["wrench"][1], doc["wrench"][2]);
+    // (doubles: the page's typed decimals are not read as decimals yet)
+    if (doc.contains("gravity")) load.gravity = rational(Vec2(doc["gravity"][0], doc["gravity"][1]));
+    if (doc.contains("wrench")) load.wrench = rational(Vec3(doc["wrench"][0], doc["wrench"][1], doc["wrench"][2]));
     for (const json& f : doc.value("forces", json::array())) {
-        load.forces.emplace_back(Vec2(f[0][0], f[0][1]), Vec2(f[1][0], f[1][1]));
+        load.forces.emplace_back(rational(Vec2(f[0][0], f[0][1])), rational(Vec2(f[1][0], f[1][1])));
     }
     return load;
 }
@@ -111,7 +112,7 @@ public:
             json modes = json::array();
             if (load.wrench && !load.gravity && load.forces.empty()) {
                 const auto& a = problem_->analysis();
-                std::vector<std::size_t> found = problem_->index().query(checked_vector(*load.wrench, "wrench")).modes;
+                std::vector<std::size_t> found = problem_->index().query(checked_vector(to_double(*load.wrench), "wrench")).modes;
                 std::sort(found.begin(), found.end(), [&](std::size_t x, std::size_t y) { return a[x].mode.letters < a[y].mode.letters; });
                 for (std::size_t k : found) modes.push_back(a[k].mode.letters);
                 return json{{"modes", modes}, {"verdict", to_string(verdict_of(found.size()))}};
@@ -161,7 +162,7 @@ public:
             const Load load = load_of(load_text);
             json out = to_json(problem_->plan_tilt(goal, load));
             out["goal"] = goal;
-            if (const std::optional<Exact3> fixed = problem_->wrench_of(load)) out["fixed"] = vector_json(to_double(*fixed));
+            if (const std::optional<Rational3> fixed = problem_->wrench_of(load)) out["fixed"] = vector_json(to_double(*fixed));
             return out;
         });
     }
@@ -180,7 +181,7 @@ public:
                         {"interference", ignore_interference ? "ignored" : "considered"},
                         {"cases", json::array()}};
             for (const PushCase& c : problem_->plan_push(goal, request, load)) out["cases"].push_back(to_json(c));
-            if (const std::optional<Exact3> fixed = problem_->wrench_of(load)) out["fixed"] = vector_json(to_double(*fixed));
+            if (const std::optional<Rational3> fixed = problem_->wrench_of(load)) out["fixed"] = vector_json(to_double(*fixed));
             return out;
         });
     }
@@ -202,8 +203,8 @@ public:
     [[nodiscard]] std::string push_line(double x, double y, double dx, double dy, const std::string& load_text) {
         return guarded([&] {
             const Load load = load_of(load_text);
-            const std::vector<MagnitudeBand> bands = problem_->push_line(Vec2(x, y), Vec2(dx, dy), load);
-            const Exact3 fixed = problem_->wrench_of(load).value_or(Exact3{});
+            const std::vector<MagnitudeBand> bands = problem_->push_line(rational(Vec2(x, y)), rational(Vec2(dx, dy)), load);
+            const Rational3 fixed = problem_->wrench_of(load).value_or(Rational3{});
             return json{{"point", vector_json(Vec2(x, y))},
                         {"direction", vector_json(Vec2(dx, dy))},
                         {"fixed", vector_json(to_double(fixed))},

@@ -39,10 +39,12 @@ struct InputNames {
 /// What acts on the body besides a controlled action (a tilt, a push, a spring), or the applied
 /// wrench of a question: gravity (an acceleration, through the centre of mass), a wrench
 /// (fx, fy, tau about the origin) and forces (a point and a force each). Any may be absent.
+/// The numbers are exact: decimals as typed on the command line, doubles as given by the C++,
+/// Python and JavaScript APIs (rational() of a Vec2 or Vec3), Python's Fractions.
 struct Load {
-    std::optional<Vec2> gravity;
-    std::optional<Vec3> wrench;
-    std::vector<std::pair<Vec2, Vec2>> forces;  ///< (point, force)
+    std::optional<Rational2> gravity;
+    std::optional<Rational3> wrench;
+    std::vector<std::pair<Rational2, Rational2>> forces;  ///< (point, force)
     [[nodiscard]] bool empty() const { return !gravity && !wrench && forces.empty(); }
 };
 
@@ -93,21 +95,25 @@ public:
 
     /// The wrench of a load, exactly (gravity needs the body: an InputError at "$" naming
     /// names().gravity); none for an empty load. Every number is checked (app/checks.hpp).
-    [[nodiscard]] std::optional<Exact3> wrench_of(const Load& load) const;
+    [[nodiscard]] std::optional<Rational3> wrench_of(const Load& load) const;
+
+    /// The load's wrench as the planners take it: exactly when every coordinate is a Dyadic
+    /// (the load's numbers are doubles), else rounded to doubles (the planners read the binary value).
+    [[nodiscard]] std::optional<Exact3> fixed_wrench(const Load& load) const;
 
     /// Which modes the load's wrench produces: query(scene, e) (the one-shot path when it can,
-    /// the exact walk when it must) for a wrench that is exactly a double, the analysis exactly
-    /// otherwise (gravity and forces at points make products that doubles may not hold). An empty
-    /// load is an InputError at names().wrench.
+    /// the exact walk when it must) for a wrench whose direction is exactly doubles (its
+    /// denominators cleared), the analysis exactly otherwise (gravity and forces at points make
+    /// products that doubles may not hold). An empty load is an InputError at names().wrench.
     [[nodiscard]] QueryAnswer query(const Load& load);
     /// The same with the margins (the analysis is made).
     [[nodiscard]] MarginAnswer margins(const Load& load);
 
     /// The bands of magnitudes of the force lambda * direction through `point`, lambda from 0 up,
     /// added to the load's wrench (magnitude_bands).
-    [[nodiscard]] std::vector<MagnitudeBand> push_line(const Vec2& point, const Vec2& direction, const Load& load);
+    [[nodiscard]] std::vector<MagnitudeBand> push_line(const Rational2& point, const Rational2& direction, const Load& load);
 
-    /// The planning context: every mode, the margins' metric, and the load's wrench as the fixed one.
+    /// The planning context: every mode, the margins' metric, and the load's fixed_wrench.
     [[nodiscard]] PlanContext context(const Load& load);
     /// plan_tilt for the goal; the load may not hold gravity (a tilt turns gravity itself).
     [[nodiscard]] DirectionPlan plan_tilt(const std::string& goal, const Load& load);

@@ -25,7 +25,10 @@ namespace momentlab {
 
 /// The scene as JSON, in the same format (contacts always written out, mu_kinetic included),
 /// so that read_scene gives back the same scene: normals as given, and the radius of gyration
-/// instead of the inertia when the scene was given one.
+/// instead of the inertia when the scene was given one. Numbers are written as doubles: the
+/// text they dump to reads back as the same exact values for decimals of up to 15 significant
+/// digits (shortest round-trip); a double that is not such a decimal reads back as the decimal
+/// nearest it, unless read from the JSON value itself (read_scene, binary values).
 [[nodiscard]] nlohmann::json to_json(const Scene& scene);
 
 /// The analysis of a scene a user gave, with the message the CLI, Python and the web module all

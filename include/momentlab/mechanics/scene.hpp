@@ -4,14 +4,25 @@
 /// The planar contact problem as an immutable value: a rigid body touching fixed polygons at
 /// point contacts with Coulomb friction (docs/design.md, Conventions).
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "momentlab/core/exact.hpp"
+#include "momentlab/core/rational.hpp"
 #include "momentlab/core/vec.hpp"
 
 namespace momentlab {
+
+/// A contact's numbers exactly (docs/design.md, "Numbers as typed"), with the doubles they round
+/// to (the Contact's own doubles while these are its values).
+struct ContactValues {
+    Rational2 point, normal;
+    Rational mu, mu_kinetic;
+    Vec2 point_double = Vec2::Zero(), normal_double = Vec2::Zero();
+    double mu_double = 0.0, mu_kinetic_double = 0.0;
+};
 
 /// A point contact. `normal` points into the moving body and is used exactly as written: any
 /// positive length (every condition is homogeneous in it, so nothing is rounded to unit
@@ -23,11 +34,27 @@ struct Contact {
     double mu = 0.0;
     double mu_kinetic = 0.0;
     std::string name;
+    /// The exact values when some are not the doubles above (a decimal read from text, a
+    /// Fraction from Python), the doubles being their correct roundings; none when the doubles
+    /// are exact. Every decision reads the exact values (exact_values()).
+    std::shared_ptr<const ContactValues> exact = nullptr;
 
     /// A contact with mu_kinetic defaulting to mu. Throws std::invalid_argument for a zero or
     /// non-finite normal, a non-finite point or a negative friction coefficient.
     static Contact make(const Vec2& point, const Vec2& normal, double mu,
                         std::optional<double> mu_kinetic = std::nullopt, std::string name = {});
+    /// The same from exact values: the doubles are their correct roundings, and `exact` keeps
+    /// the values when some are not doubles. The same checks, on the exact values.
+    static Contact make(const Rational2& point, const Rational2& normal, const Rational& mu,
+                        const std::optional<Rational>& mu_kinetic = std::nullopt, std::string name = {});
+    /// The same from values whose doubles are already their roundings (a reader's).
+    static Contact make(ContactValues values, std::string name = {});
+
+    /// The exact values in force: `exact` while the doubles are still its roundings, else none
+    /// (then the doubles are the exact values).
+    [[nodiscard]] const ContactValues* exact_values() const;
+    /// True when mu_kinetic = mu exactly.
+    [[nodiscard]] bool kinetic_is_static() const;
 
     /// t = (n.y, -n.x).
     [[nodiscard]] Vec2 tangent() const { return Vec2(normal.y(), -normal.x()); }
@@ -36,6 +63,10 @@ struct Contact {
     [[nodiscard]] ExactVector normal_wrench() const;
     /// T = (t, p x t), exact: T . xi is its tangential velocity (times |n|).
     [[nodiscard]] ExactVector tangent_wrench() const;
+    /// The edges of the static friction cone (kinetic: of the kinetic one) as wrenches acting at
+    /// the contact: (n + mu t, n - mu t), exactly. For exact values (`exact`), each of these
+    /// three is the same vector times a positive number (its denominators cleared).
+    [[nodiscard]] std::array<ExactVector, 2> friction_edges(bool kinetic = false) const;
 };
 
 /// A simple polygon given by its vertices, in either orientation (geometry/polygon.hpp checks).
@@ -52,6 +83,17 @@ struct ContactOrigin {
     std::size_t edge = 0;
 };
 
+/// A body's numbers exactly, with the doubles they round to.
+struct BodyValues {
+    Rational mass;
+    Rational2 com;
+    Rational inertia;
+    std::optional<Rational> radius_of_gyration;
+    double mass_double = 0.0, inertia_double = 0.0;
+    Vec2 com_double = Vec2::Zero();
+    std::optional<double> radius_double;
+};
+
 /// The moving body: mass, centre of mass, inertia about the centre of mass, optional outline.
 struct Body {
     double mass = 1.0;
@@ -61,10 +103,17 @@ struct Body {
     Polygon polygon;
     /// When set, the inertia is exactly mass * radius_of_gyration^2 (`inertia` is its rounding).
     std::optional<double> radius_of_gyration = std::nullopt;
+    /// The exact values of mass, com, inertia and radius of gyration when some are not the
+    /// doubles above (as Contact::exact); none when the doubles are exact.
+    std::shared_ptr<const BodyValues> exact = nullptr;
+    /// The exact values in force (as Contact::exact_values).
+    [[nodiscard]] const BodyValues* exact_values() const;
 };
 
 /// The planar inertia at the world origin, exactly: M = [[m, 0, -m c.y], [0, m, m c.x],
 /// [-m c.y, m c.x, I_c + m |c|^2]], so that the total wrench is M times the acceleration twist.
+/// For a body with exact values (`exact`), M times a positive number (its denominators
+/// cleared): the same cones M A.
 [[nodiscard]] ExactMatrix inertia_at_origin(const Body& body);
 
 /// A body (optional for purely kinematic questions), its contacts and the fixed obstacles.

@@ -1,0 +1,246 @@
+#include "momentlab/core/rational.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+namespace momentlab {
+namespace {
+
+constexpr std::int64_t kMaxDecimalExponent = 100000;
+
+Dyadic magnitude(const Dyadic& x) { return x.sign() == Sign::Negative ? -x : x; }
+
+// The integer spelled by decimal digits, exactly (18 digits at a time).
+Dyadic integer_of(std::string_view digits) {
+    Dyadic out;
+    for (std::size_t at = 0; at < digits.size(); at += 18) {
+        const std::string_view chunk = digits.substr(at, 18);
+        std::int64_t value = 0, scale = 1;
+        for (const char c : chunk) {
+            value = value * 10 + (c - '0');
+            scale *= 10;
+        }
+        out = out * Dyadic::from_integer(scale) + Dyadic::from_integer(value);
+    }
+    return out;
+}
+
+Dyadic power(Dyadic base, std::int64_t k) {
+    Dyadic out = Dyadic::from_integer(1);
+    for (; k > 0; k >>= 1) {
+        if (k & 1) out = out * base;
+        if (k > 1) base = base * base;
+    }
+    return out;
+}
+
+// The odd integer x as a 64-bit word, when it is one.
+std::optional<std::uint64_t> word(const Dyadic& x) {
+    const auto limbs = x.limbs();
+    if (x.binary_exponent() != 0 || limbs.size() != 1) return std::nullopt;
+    return limbs[0];
+}
+
+Dyadic of_word(std::uint64_t odd) { return Dyadic::from_limbs(Sign::Positive, std::span<const Dyadic::Limb>(&odd, 1), 0); }
+
+}  // namespace
+
+Rational::Rational(Dyadic num, const Dyadic& den) {
+    if (den.sign() != Sign::Positive || den.binary_exponent() < 0) {
+        throw std::invalid_argument("Rational: the denominator must be a positive integer");
+    }
+    // Its powers of two move to the numerator: the denominator is odd.
+    const std::int64_t twos = den.binary_exponent();
+    num_ = num.scaled(-twos);
+    den_ = den.scaled(-twos);
+}
+
+std::optional<Rational> Rational::parse(std::string_view text) {
+    std::size_t at = 0;
+    bool negative = false;
+    if (at < text.size() && (text[at] == '-' || text[at] == '+')) negative = text[at++] == '-';
+    std::string digits;
+    std::int64_t exponent = 0;
+    bool any = false;
+    for (; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at) digits += text[at], any = true;
+    if (at < text.size() && text[at] == '.') {
+        for (++at; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at) digits += text[at], --exponent, any = true;
+    }
+    if (!any) return std::nullopt;
+    if (at < text.size() && (text[at] == 'e' || text[at] == 'E')) {
+        ++at;
+        bool minus = false;
+        if (at < text.size() && (text[at] == '-' || text[at] == '+')) minus = text[at++] == '-';
+        if (at == text.size()) return std::nullopt;
+        std::int64_t e = 0;
+        for (; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at) {
+            if (e > kMaxDecimalExponent) return std::nullopt;
+            e = e * 10 + (text[at] - '0');
+        }
+        exponent += minus ? -e : e;
+    }
+    if (at != text.size()) return std::nullopt;
+    // digits x 10^exponent, without leading or trailing zeros.
+    const std::size_t first = digits.find_first_not_of('0');
+    if (first == std::string::npos) return Rational();
+    digits.erase(0, first);
+    while (digits.back() == '0') digits.pop_back(), ++exponent;
+    if (exponent > kMaxDecimalExponent || exponent < -kMaxDecimalExponent - static_cast<std::int64_t>(digits.size())) {
+        return std::nullopt;
+    }
+    // D x 10^-k = D 2^-k / 5^k; while D is a multiple of 5 (its last digit 5), D / 5 = 2 D / 10
+    // takes one 5 from the denominator.
+    std::int64_t fives = exponent < 0 ? -exponent : 0;
+    while (fives > 0 && digits.back() == '5') {
+        int carry = 0;
+        for (std::size_t i = digits.size(); i-- > 0;) {
+            const int d = 2 * (digits[i] - '0') + carry;
+            digits[i] = static_cast<char>('0' + d % 10);
+            carry = d / 10;
+        }
+        if (carry) digits.insert(digits.begin(), static_cast<char>('0' + carry));
+        digits.pop_back();  // the 0 that 2 x (...5) ends in
+        --fives;
+    }
+    Dyadic num = integer_of(digits).scaled(exponent);  // the 2^exponent of 10^exponent
+    if (exponent > 0) num = num * power(Dyadic::from_integer(5), exponent);
+    Rational out;
+    out.num_ = negative ? -num : num;
+    out.den_ = power(Dyadic::from_integer(5), fives);
+    return out;
+}
+
+bool Rational::is_double() const { return den_ == Dyadic(1.0) && num_.fits_double(); }
+
+double Rational::to_double() const {
+    if (num_.is_zero()) return 0.0;
+    const std::int64_t en = num_.exponent(), ed = den_.exponent();
+    double c = num_.to_double_scaled(en) / den_.to_double_scaled(ed);
+    const std::int64_t shift = en - ed;
+    if (shift > 4000) return num_.sign() == Sign::Negative ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+    if (shift < -4000) return num_.sign() == Sign::Negative ? -0.0 : 0.0;
+    c = std::ldexp(c, static_cast<int>(shift));
+    if (!std::isfinite(c)) return c;
+    // c is within a few units in the last place: the neighbour nearer the exact value, exactly.
+    const auto error = [&](double x) { return magnitude(num_ - Dyadic(x) * den_); };
+    for (;;) {
+        const Dyadic here = error(c);
+        const double up = std::nextafter(c, std::numeric_limits<double>::infinity());
+        const double down = std::nextafter(c, -std::numeric_limits<double>::infinity());
+        const int cu = std::isfinite(up) ? compare(error(up), here) : 1;
+        if (cu < 0) {
+            c = up;
+            continue;
+        }
+        const int cd = std::isfinite(down) ? compare(error(down), here) : 1;
+        if (cd < 0) {
+            c = down;
+            continue;
+        }
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &c, sizeof bits);
+        const bool odd = (bits & 1U) != 0;  // ties to even
+        if (odd && cu == 0) return up;
+        if (odd && cd == 0) return down;
+        return c;
+    }
+}
+
+Rational Rational::operator-() const {
+    Rational out = *this;
+    out.num_ = -num_;
+    return out;
+}
+
+Rational operator+(const Rational& a, const Rational& b) {
+    Rational out;
+    if (a.den_ == b.den_) {
+        out.num_ = a.num_ + b.num_;
+        out.den_ = a.den_;
+    } else {
+        out.num_ = a.num_ * b.den_ + b.num_ * a.den_;
+        out.den_ = a.den_ * b.den_;
+    }
+    return out;
+}
+
+Rational operator-(const Rational& a, const Rational& b) { return a + (-b); }
+
+Rational operator*(const Rational& a, const Rational& b) {
+    Rational out;
+    out.num_ = a.num_ * b.num_;
+    out.den_ = a.den_ * b.den_;
+    return out;
+}
+
+int compare(const Rational& a, const Rational& b) {
+    if (a.den_ == b.den_) return compare(a.num_, b.num_);
+    return compare(a.num_ * b.den_, b.num_ * a.den_);
+}
+
+std::vector<Dyadic> clear_denominators(std::span<const Rational> x, Dyadic* common) {
+    std::vector<Dyadic> out;
+    out.reserve(x.size());
+    // The least common multiple in 64 bits when the denominators are words and it fits.
+    std::uint64_t lcm = 1;
+    bool words = true;
+    for (const Rational& r : x) {
+        const std::optional<std::uint64_t> d = word(r.den());
+        if (!d) {
+            words = false;
+            break;
+        }
+        const std::uint64_t step = *d / std::gcd(lcm, *d);
+        if (step != 0 && lcm > std::numeric_limits<std::uint64_t>::max() / step) {
+            words = false;
+            break;
+        }
+        lcm *= step;
+    }
+    if (words) {
+        for (const Rational& r : x) out.push_back(r.num() * of_word(lcm / *word(r.den())));
+        if (common) *common = of_word(lcm);
+        return out;
+    }
+    // Else the product of the distinct denominators.
+    std::vector<const Dyadic*> distinct;
+    for (const Rational& r : x) {
+        bool seen = false;
+        for (const Dyadic* d : distinct) seen = seen || *d == r.den();
+        if (!seen) distinct.push_back(&r.den());
+    }
+    for (const Rational& r : x) {
+        Dyadic v = r.num();
+        for (const Dyadic* d : distinct) {
+            if (!(*d == r.den())) v = v * *d;
+        }
+        out.push_back(std::move(v));
+    }
+    if (common) {
+        Dyadic d = Dyadic::from_integer(1);
+        for (const Dyadic* f : distinct) d = d * *f;
+        *common = std::move(d);
+    }
+    return out;
+}
+
+Rational2 rational(const Vec2& v) { return {Rational(v.x()), Rational(v.y())}; }
+
+Rational3 rational(const Vec3& v) { return {Rational(v.x()), Rational(v.y()), Rational(v.z())}; }
+
+Vec2 to_double(const Rational2& v) { return Vec2(v[0].to_double(), v[1].to_double()); }
+
+Vec3 to_double(const Rational3& v) { return Vec3(v[0].to_double(), v[1].to_double(), v[2].to_double()); }
+
+bool is_double(std::span<const Rational> v) {
+    for (const Rational& r : v) {
+        if (!r.is_double()) return false;
+    }
+    return true;
+}
+
+}  // namespace momentlab

@@ -1,0 +1,96 @@
+// Rational (core/rational.hpp): decimal text read exactly, correct rounding, cleared
+// denominators, against GMP rationals made from the text in the test and against strtod (the C
+// library's correctly rounded reading of decimal text).
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <random>
+#include <string>
+
+#include "exact_scene.hpp"
+#include "momentlab/core/rational.hpp"
+
+namespace momentlab {
+namespace {
+
+using reference::Q;
+using reference::to_q;
+
+Q to_q(const Rational& r) { return to_q(r.num()) / to_q(r.den()); }
+
+// The decimal's value by GMP: digits / 10^k, times 10^e.
+Q decimal_q(bool negative, const std::string& digits, int k, int e) {
+    Q out(mpz_class(digits, 10));
+    mpz_class ten;
+    mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(k));
+    out /= ten;
+    mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(std::abs(e)));
+    if (e >= 0) out *= ten; else out /= ten;
+    return negative ? Q(-out) : out;
+}
+
+TEST(Rational, ParsesDecimalsExactly) {
+    EXPECT_EQ(to_q(*Rational::parse("0.1")), Q(1, 10));
+    EXPECT_EQ(to_q(*Rational::parse("2.943")), Q(2943, 1000));
+    EXPECT_EQ(to_q(*Rational::parse("1e-3")), Q(1, 1000));
+    EXPECT_EQ(to_q(*Rational::parse("-4.905E+1")), Q(-981, 20));
+    EXPECT_EQ(to_q(*Rational::parse("+0.5")), Q(1, 2));
+    EXPECT_TRUE(Rational::parse("0.5")->is_double());
+    EXPECT_FALSE(Rational::parse("0.1")->is_double());
+    for (const char* bad : {"", "-", ".", "1e", "0x1p3", "inf", "nan", "1.2.3", "1e+", "1 "}) {
+        EXPECT_FALSE(Rational::parse(bad).has_value()) << bad;
+    }
+    std::mt19937_64 gen(46);
+    for (int i = 0; i < 2000; ++i) {
+        std::string digits;
+        const int n = std::uniform_int_distribution<int>(1, 30)(gen);
+        for (int j = 0; j < n; ++j) digits += static_cast<char>('0' + gen() % 10);
+        const int k = std::uniform_int_distribution<int>(0, n)(gen), e = std::uniform_int_distribution<int>(-40, 40)(gen);
+        const bool negative = gen() % 2 == 0;
+        std::string text = (negative ? "-" : "") + digits.substr(0, static_cast<std::size_t>(n - k));
+        if (n - k == 0) text += "0";
+        if (k > 0) text += "." + digits.substr(static_cast<std::size_t>(n - k));
+        text += "e" + std::to_string(e);
+        const std::optional<Rational> r = Rational::parse(text);
+        ASSERT_TRUE(r) << text;
+        ASSERT_EQ(to_q(*r), decimal_q(negative, digits, k, e)) << text;
+        // Correctly rounded, as strtod rounds the text.
+        ASSERT_EQ(r->to_double(), std::strtod(text.c_str(), nullptr)) << text;
+        // The denominator is odd (powers of two live in the numerator).
+        ASSERT_TRUE(mpz_odd_p(to_q(r->den()).get_num_mpz_t())) << text;
+    }
+}
+
+TEST(Rational, RoundsRatiosToNearestTiesToEven) {
+    // (2^53 + 1) / 1 ties between 2^53 and 2^53 + 2: to even, 2^53.
+    const Rational tie(Dyadic::from_integer((std::int64_t{1} << 53) + 1), Dyadic(1.0));
+    EXPECT_EQ(tie.to_double(), 0x1p53);
+    const Rational tie_up(Dyadic::from_integer((std::int64_t{1} << 53) + 3), Dyadic(1.0));
+    EXPECT_EQ(tie_up.to_double(), 0x1p53 + 4.0);
+    EXPECT_EQ(Rational(Dyadic(1.0), Dyadic(3.0)).to_double(), 1.0 / 3.0);  // division is correctly rounded
+    EXPECT_EQ(Rational(Dyadic(-2.0), Dyadic(7.0)).to_double(), -2.0 / 7.0);
+}
+
+TEST(Rational, ClearsDenominatorsToTheSameDirection) {
+    std::mt19937_64 gen(7);
+    for (int i = 0; i < 500; ++i) {
+        std::vector<Rational> x;
+        for (int k = 0; k < 3; ++k) {
+            const auto num = static_cast<std::int64_t>(gen() % 2001) - 1000;
+            const auto den = static_cast<std::int64_t>(gen() % 999) + 1;
+            x.emplace_back(Dyadic::from_integer(num), Dyadic::from_integer(den));
+        }
+        // Huge denominators: the product path.
+        if (i % 5 == 0) x.emplace_back(Dyadic::from_integer(1), Dyadic(0x1p80) * Dyadic(3.0) + Dyadic(1.0));
+        Dyadic d;
+        const std::vector<Dyadic> y = clear_denominators(x, &d);
+        ASSERT_GT(to_q(d), 0);
+        for (std::size_t k = 0; k < x.size(); ++k) {
+            ASSERT_EQ(to_q(y[k]), to_q(x[k]) * to_q(d));
+        }
+    }
+}
+
+}  // namespace
+}  // namespace momentlab
