@@ -1,4 +1,5 @@
 #include "momentlab/core/rational.hpp"
+#include "momentlab/core/rounding.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -12,7 +13,6 @@ namespace {
 
 constexpr std::int64_t kMaxDecimalExponent = 100000;
 
-Dyadic magnitude(const Dyadic& x) { return x.sign() == Sign::Negative ? -x : x; }
 
 // The integer spelled by decimal digits, exactly (18 digits at a time).
 Dyadic integer_of(std::string_view digits) {
@@ -116,39 +116,7 @@ std::optional<Rational> Rational::parse(std::string_view text) {
 
 bool Rational::is_double() const { return den_ == Dyadic(1.0) && num_.fits_double(); }
 
-double Rational::to_double() const {
-    if (num_.is_zero()) return 0.0;
-    const std::int64_t en = num_.exponent(), ed = den_.exponent();
-    double c = num_.to_double_scaled(en) / den_.to_double_scaled(ed);
-    const std::int64_t shift = en - ed;
-    if (shift > 4000) return num_.sign() == Sign::Negative ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
-    if (shift < -4000) return num_.sign() == Sign::Negative ? -0.0 : 0.0;
-    c = std::ldexp(c, static_cast<int>(shift));
-    if (!std::isfinite(c)) return c;
-    // c is within a few units in the last place: the neighbour nearer the exact value, exactly.
-    const auto error = [&](double x) { return magnitude(num_ - Dyadic(x) * den_); };
-    for (;;) {
-        const Dyadic here = error(c);
-        const double up = std::nextafter(c, std::numeric_limits<double>::infinity());
-        const double down = std::nextafter(c, -std::numeric_limits<double>::infinity());
-        const int cu = std::isfinite(up) ? compare(error(up), here) : 1;
-        if (cu < 0) {
-            c = up;
-            continue;
-        }
-        const int cd = std::isfinite(down) ? compare(error(down), here) : 1;
-        if (cd < 0) {
-            c = down;
-            continue;
-        }
-        std::uint64_t bits = 0;
-        std::memcpy(&bits, &c, sizeof bits);
-        const bool odd = (bits & 1U) != 0;  // ties to even
-        if (odd && cu == 0) return up;
-        if (odd && cd == 0) return down;
-        return c;
-    }
-}
+double Rational::to_double() const { return nearest_double(num_, den_); }
 
 Rational Rational::operator-() const {
     Rational out = *this;

@@ -72,7 +72,7 @@ def python_binary(text, wrench, quasi_static=False):
     """The scene built from Python floats (binary meaning) and a float wrench."""
     doc = as_doubles(text)
     scene = ml.Scene(body=doc.get("body"), contacts=doc["contacts"])
-    return set(ml.query(scene, [float(w) for w in wrench], quasi_static=quasi_static)["modes"])
+    return set(ml.query(scene, [float(w) for w in wrench], quasi_static=quasi_static).modes)
 
 
 def binary_oracle(text, wrench, quasi_static=False):
@@ -95,7 +95,7 @@ def test_force_through_a_decimal_contact_point_is_held(tmp_path):
     # Python: Fractions, Decimals and numeric strings have their exact values.
     scene = ml.Scene.from_json(THROUGH)
     for w in (THROUGH_WRENCH, [Decimal("0.18699"), "0.26866", Fraction(9113, 10000)]):
-        assert set(ml.query(scene, w, quasi_static=True)["modes"]) == expected
+        assert set(ml.query(scene, w, quasi_static=True).modes) == expected
     # The same numbers as doubles: the binary scene, as the binary oracle reads it.
     assert python_binary(THROUGH, THROUGH_WRENCH, True) == binary_oracle(THROUGH, THROUGH_WRENCH, True)
 
@@ -220,6 +220,6 @@ def test_python_scene_of_decimals_and_fractions():
                                "normal": [Fraction(c["normal"][0]), Fraction(c["normal"][1])], "mu": 0}
                               for c in doc["contacts"]]}
     scene = ml.Scene(body=exact_doc["body"], contacts=exact_doc["contacts"])
-    assert set(ml.query(scene, [0, 0, 1])["modes"]) == oracle.query(doc, [0, 0, 1])
+    assert set(ml.query(scene, [0, 0, 1]).modes) == oracle.query(doc, [0, 0, 1])
     with pytest.raises(ValueError, match="not a decimal"):
         ml.Scene(body=exact_doc["body"], contacts=[{"point": [Fraction(1, 3), 0], "normal": [0, 1]}])
