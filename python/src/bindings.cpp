@@ -198,9 +198,9 @@ nlohmann::json json_of(const py::handle& value, const std::string& path, int dep
             try {  // a big integer: the reader checks its magnitude
                 return value.cast<double>();
             } catch (const py::cast_error&) {
-                throw InputError(path, "expected a number of magnitude 0 or 1e-60 .. 1e60");
+                throw InputError(path, "expected a number, " + std::string(kMagnitudeRange));
             } catch (const py::error_already_set&) {
-                throw InputError(path, "expected a number of magnitude 0 or 1e-60 .. 1e60");
+                throw InputError(path, "expected a number, " + std::string(kMagnitudeRange));
             }
         }
     }

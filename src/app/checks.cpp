@@ -44,7 +44,7 @@ double checked_coefficient(double mu, const std::string& where) {
 
 double checked_length(double x, const std::string& where) {
     if (!(x > 0.0) || !std::isfinite(x) || !magnitude_in_range(x)) {
-        throw InputError(where, "expected a length > 0, of magnitude 1e-60 .. 1e60");
+        throw InputError(where, "expected a length > 0, of magnitude " + std::string(kMagnitudeBounds));
     }
     return x;
 }

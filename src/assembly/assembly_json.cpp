@@ -30,7 +30,7 @@ double number(const json& v, const std::string& path) {
     if (!v.is_number()) throw InputError(path, "expected a number");
     const double x = v.get<double>();
     if (!std::isfinite(x) || !magnitude_in_range(std::abs(x))) {
-        throw InputError(path, "expected a finite number, 0 or of magnitude 1e-60 .. 1e60");
+        throw InputError(path, "expected a finite number, " + std::string(kMagnitudeRange));
     }
     return x;
 }

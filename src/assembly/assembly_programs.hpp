@@ -22,6 +22,9 @@
 #include "exact_number.hpp"
 #include "interval.hpp"
 #include "linear_program.hpp"
+#include "momentlab/geometry/force_sets.hpp"
+#include "momentlab/mechanics/modes.hpp"
+#include "momentlab/mechanics/scene.hpp"
 #include "momentlab/assembly/assembly.hpp"
 
 namespace momentlab::assembly_detail {
@@ -121,8 +124,7 @@ AssemblyData<T> assembly_data(const Assembly& assembly) {
         if (b.inertia || b.radius_of_gyration) {
             T ic = b.radius_of_gyration ? m * number<T>(*b.radius_of_gyration) * number<T>(*b.radius_of_gyration)
                                         : number<T>(*b.inertia);
-            const T io = ic + m * (cx * cx + cy * cy);
-            out.inertia = {Wrench<T>{m, zero, zero - m * cy}, Wrench<T>{zero, m, m * cx}, Wrench<T>{zero - m * cy, m * cx, io}};
+            out.inertia = inertia_matrix(m, cx, cy, ic);
             const T one = number<T>(1.0);
             const T im = one / m, ii = one / ic;
             out.inverse_inertia = {Wrench<T>{im + cy * cy * ii, zero - cx * cy * ii, cy * ii},
@@ -142,15 +144,15 @@ AssemblyData<T> assembly_data(const Assembly& assembly) {
         const T tx = ny, ty = number<T>(0.0) - nx;
         out.normal = force_wrench(px, py, nx, ny);
         out.tangent = force_wrench(px, py, tx, ty);
-        const auto edge = [&](const T& k) { return force_wrench(px, py, nx + k * tx, ny + k * ty); };
+        const auto edge = [&](const T& k) { const auto dir = friction_direction(nx, ny, k); return force_wrench(px, py, dir[0], dir[1]); };
         const T mu = number<T>(c.mu), muk = number<T>(c.mu_kinetic);
         if (c.mu == 0.0) {
             out.cone = {out.normal};
         } else {
             out.cone = {edge(mu), edge(number<T>(0.0) - mu)};
         }
-        out.slide_r = edge(number<T>(0.0) - muk);
-        out.slide_l = edge(muk);
+        out.slide_r = edge(number<T>(opposing_friction(ContactMode::SlidingRight)) * muk);
+        out.slide_l = edge(number<T>(opposing_friction(ContactMode::SlidingLeft)) * muk);
         out.kinetic_outside = c.mu_kinetic > c.mu;
         // Same pair and same normal as an earlier contact: the wrenches are equal exactly when
         // p x n (for N) or p . n (for T = (t, -p . n)) are; an interval that is a point decides.

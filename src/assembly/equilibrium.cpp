@@ -16,8 +16,8 @@ namespace {
 // The edge direction of a contact's cone, rounded (for the forces printed).
 Vec2 edge_direction(const Contact& c, Index edge) {
     if (c.mu == 0.0) return c.normal;
-    const double k = edge == 0 ? c.mu : -c.mu;
-    return c.normal + k * c.tangent();
+    const auto d = friction_direction(c.normal.x(), c.normal.y(), edge == 0 ? c.mu : -c.mu);
+    return Vec2(d[0], d[1]);
 }
 
 BodyMotion body_motion(const Vec3& twist) {

@@ -1,5 +1,5 @@
 // Rank 3: cone(generators) from the angular order around a pivot generator p (the quotient
-// R^3 / p, exact through det(p, u, v); angular_order.hpp). A floating-point guess picks p
+// R^3 / p, exact through det(p, u, v); angular_sort.hpp). A floating-point guess picks p
 // (farthest_from, guess_extreme: only the running time depends on it); the largest angular gap
 // around p then decides the cone, in O(n log n) (see PivotAnalysis): when p is an extreme ray of
 // a pointed cone, Graham's scan around p gives the extreme rays in cyclic order. At most three
@@ -14,7 +14,7 @@
 #include <span>
 #include <utility>
 
-#include "angular_order.hpp"
+#include "angular_sort.hpp"
 #include "cone_build.hpp"
 #include "cone_parts.hpp"
 #include "scratch.hpp"

@@ -1,12 +1,12 @@
 // Rank 2: cone(generators) when they span the plane of a and b. The generators are sorted by
-// angle inside the plane (angular_order.hpp: about a coordinate axis across the plane, exact
+// angle inside the plane (angular_sort.hpp: about a coordinate axis across the plane, exact
 // 2x2 minors), and the largest angular gap tells the cone: a gap wider than pi leaves a wedge,
 // a gap of exactly pi a half-plane, none the whole plane.
 #include <cassert>
 #include <cstddef>
 #include <span>
 
-#include "angular_order.hpp"
+#include "angular_sort.hpp"
 #include "cone_parts.hpp"
 
 // Private to the geometry layer: hidden from the shared library's interface.

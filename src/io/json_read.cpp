@@ -150,8 +150,8 @@ void Builder::number(double value, std::string_view text, Text lifetime) {
     const Schema* place = nullptr;
     Node* n = begin_value(Kind::Number, place);
     if (value == 0.0 && nonzero_digits(text)) {
-        throw InputError(path(), "a number too small for a double: it would be taken as 0 "
-                                 "(expected 0 or a magnitude 1e-60 .. 1e60)");
+        throw InputError(path(), "a number too small for a double: it would be taken as 0 (expected " +
+                                 std::string(kMagnitudeRange) + ")");
     }
     if (n == nullptr || n->skipped()) return;
     if (text.size() >= (std::size_t{1} << (32 - Node::kLengthShift))) {
@@ -262,7 +262,7 @@ public:
     template <class Exception>
     bool parse_error(std::size_t, const std::string&, const Exception& e) {
         if constexpr (std::is_same_v<Exception, nlohmann::detail::out_of_range>) {  // e.g. 1e999
-            throw InputError("$", std::string("a number is out of range (expected 0 or 1e-60 .. 1e60): ") + e.what());
+            throw InputError("$", "a number is out of range (expected " + std::string(kMagnitudeRange) + "): " + e.what());
         }
         throw InputError("$", std::string("malformed JSON: ") + e.what());
     }
@@ -565,7 +565,7 @@ double coordinate(const Value& v, const Path& path) {
     const double x = v.number().value;
     if (!std::isfinite(x)) throw InputError(path.str(), "expected a finite number");
     if (!(std::abs(x) <= kLargestMagnitude)) {
-        throw InputError(path.str(), "the magnitude of " + dumped(x) + " is out of range (expected 0 or 1e-60 .. 1e60)");
+        throw InputError(path.str(), "the magnitude of " + dumped(x) + " is out of range (expected " + std::string(kMagnitudeRange) + ")");
     }
     return x;
 }
@@ -574,7 +574,7 @@ double coordinate(const Value& v, const Path& path) {
 template <class V>
 V checked(const V& v, const Path& path) {
     if (!magnitude_in_range(v.cwiseAbs().maxCoeff())) {
-        throw InputError(path.str(), "the vector's magnitude is out of range (expected 0 or 1e-60 .. 1e60)");
+        throw InputError(path.str(), "the vector's magnitude is out of range (expected " + std::string(kMagnitudeRange) + ")");
     }
     return v;
 }
@@ -592,7 +592,7 @@ std::array<double, N> coordinates(const Value& v, const Path& path) {
 double number(const Value& v, const Path& path) {
     const double x = coordinate(v, path);
     if (!magnitude_in_range(std::abs(x))) {
-        throw InputError(path.str(), "the magnitude of " + dumped(x) + " is out of range (expected 0 or 1e-60 .. 1e60)");
+        throw InputError(path.str(), "the magnitude of " + dumped(x) + " is out of range (expected " + std::string(kMagnitudeRange) + ")");
     }
     return x;
 }

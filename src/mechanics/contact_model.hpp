@@ -29,15 +29,15 @@ struct ContactGenerators {
 
 /// What a contact adds to the contact cone T of a mode where its letter is `mode_letter` (Mason 1991,
 /// section 2.1): nothing when it separates (s); both edges of the static cone when it is fixed (f);
-/// when it slides, the one kinetic edge whose friction opposes the sliding: n - mu_k t for r
-/// (sliding along +t), n + mu_k t for l.
+/// when it slides, the one kinetic edge whose friction opposes the sliding (opposing_friction):
+/// n - mu_k t for r (sliding along +t), n + mu_k t for l.
 [[nodiscard]] constexpr ContactGenerators contact_generators(char mode_letter) {
-    switch (mode_letter) {
-        case letter(ContactMode::Fixed): return {{FrictionEdge::StaticPlus, FrictionEdge::StaticMinus}, 2};
-        case letter(ContactMode::SlidingRight): return {{FrictionEdge::KineticMinus, FrictionEdge::KineticMinus}, 1};
-        case letter(ContactMode::SlidingLeft): return {{FrictionEdge::KineticPlus, FrictionEdge::KineticPlus}, 1};
-        default: return {};
-    }
+    const auto mode = static_cast<ContactMode>(mode_letter);
+    if (mode == ContactMode::Fixed) return {{FrictionEdge::StaticPlus, FrictionEdge::StaticMinus}, 2};
+    const int s = opposing_friction(mode);
+    if (s == 0) return {};
+    const FrictionEdge kinetic = s > 0 ? FrictionEdge::KineticPlus : FrictionEdge::KineticMinus;
+    return {{kinetic, kinetic}, 1};
 }
 
 /// The coefficient c of the edge's direction n + c t.
@@ -72,15 +72,14 @@ struct ClearedContact {
 /// The inertia matrix of a body's exact values times a positive number (its denominators cleared).
 [[nodiscard]] std::array<Exact3, 3> cleared_inertia(const BodyValues& values);
 
-/// The planar inertia at the world origin in the number type N (constructible as N{double}, with
-/// +, - and *): M = [[m, 0, -m c.y], [0, m, m c.x], [-m c.y, m c.x, I_c + m |c|^2]], I_c the
-/// inertia about the centre of mass, or m rho^2 for a radius of gyration rho (exactly).
+/// The body's inertia matrix at the world origin (inertia_matrix) from its doubles, in the number
+/// type N (constructible as N{double}): I_c the inertia about the centre of mass, or m rho^2 for
+/// a radius of gyration rho (exactly).
 template <class N>
-[[nodiscard]] std::array<std::array<N, 3>, 3> inertia_matrix(const Body& body) {
+[[nodiscard]] std::array<std::array<N, 3>, 3> body_inertia(const Body& body) {
     const N m{body.mass}, cx{body.com.x()}, cy{body.com.y()};
     const N ic = body.radius_of_gyration ? m * N{*body.radius_of_gyration} * N{*body.radius_of_gyration} : N{body.inertia};
-    const N mcx = m * cx, mcy = m * cy;
-    return {std::array<N, 3>{m, N{}, -mcy}, std::array<N, 3>{N{}, m, mcx}, std::array<N, 3>{-mcy, mcx, ic + mcx * cx + mcy * cy}};
+    return inertia_matrix(m, cx, cy, ic);
 }
 
 }  // namespace momentlab::detail

@@ -233,7 +233,7 @@ public:
                 const ExactMatrix m = detail::cleared_inertia(*values);
                 for (std::size_t i = 0; i < 3; ++i) inertia_[i] = {approx_of(m[i][0]), approx_of(m[i][1]), approx_of(m[i][2])};
             } else {
-                inertia_ = detail::inertia_matrix<Approx>(*scene.body);
+                inertia_ = detail::body_inertia<Approx>(*scene.body);
             }
             dynamic_ = true;
         }

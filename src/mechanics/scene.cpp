@@ -102,7 +102,7 @@ const BodyValues* Body::exact_values() const {
 
 ExactMatrix inertia_at_origin(const Body& body) {
     if (const BodyValues* v = body.exact_values()) return detail::cleared_inertia(*v);
-    return detail::inertia_matrix<Dyadic>(body);
+    return detail::body_inertia<Dyadic>(body);
 }
 
 namespace detail {
@@ -127,8 +127,7 @@ Exact2 edge_direction(const ClearedContact& c, FrictionEdge e) {
     const bool plus = e == FrictionEdge::StaticPlus || e == FrictionEdge::KineticPlus;
     const Dyadic& den = kinetic ? c.kinetic_den : c.mu_den;
     const Dyadic num = plus ? (kinetic ? c.kinetic_num : c.mu_num) : -(kinetic ? c.kinetic_num : c.mu_num);
-    const Exact2 t{c.normal[1], -c.normal[0]};
-    return den * c.normal + num * t;
+    return friction_direction(c.normal[0], c.normal[1], num, &den);
 }
 
 Exact3 cleared_wrench(const ClearedContact& c, const Exact2& d) { return {c.scale * d[0], c.scale * d[1], cross2(c.point, d)}; }
@@ -136,8 +135,9 @@ Exact3 cleared_wrench(const ClearedContact& c, const Exact2& d) { return {c.scal
 std::array<Exact3, 3> cleared_inertia(const BodyValues& v) {
     const Rational &m = v.mass, &cx = v.com[0], &cy = v.com[1];
     const Rational ic = v.radius_of_gyration ? m * *v.radius_of_gyration * *v.radius_of_gyration : v.inertia;
-    const Rational mcx = m * cx, mcy = m * cy, zero;
-    const std::array<Rational, 9> entries{m, zero, -mcy, zero, m, mcx, -mcy, mcx, ic + mcx * cx + mcy * cy};
+    const auto matrix = inertia_matrix(m, cx, cy, ic);
+    std::array<Rational, 9> entries;
+    for (std::size_t i = 0; i < entries.size(); ++i) entries[i] = matrix[i / 3][i % 3];
     const std::vector<Dyadic> e = clear_denominators(entries);
     return {Exact3{e[0], e[1], e[2]}, Exact3{e[3], e[4], e[5]}, Exact3{e[6], e[7], e[8]}};
 }

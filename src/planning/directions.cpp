@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "momentlab/core/predicates.hpp"
+#include "momentlab/geometry/angular_order.hpp"
 #include "momentlab/geometry/force_sets.hpp"
 #include "momentlab/planning/unique.hpp"
 
@@ -18,8 +19,8 @@ double angle_of(const Vec2& d) { return std::atan2(d.y(), d.x()); }
 Vec2 force_of(const ExactVector& w) { return Vec2(w.value().x() + 0.0, w.value().y() + 0.0); }
 
 // How b lies from a, counter-clockwise, decided exactly: the same direction, less than a
-// half-turn, a half-turn, or more.
-enum class Turn { Same, Narrow, Half, Wide };
+// half-turn, a half-turn, or more; the value is b's angular_half from a.
+enum class Turn { Same = 0, Narrow = 1, Half = 2, Wide = 3 };
 
 // The width of the arc counter-clockwise from a to b, from the rounded angles, kept within the
 // range its exact turn allows (rounding can swap two nearly equal directions, which would turn
@@ -112,11 +113,8 @@ std::optional<std::pair<double, double>> add_arcs(std::vector<AngleInterval>& ou
     std::optional<std::pair<double, double>> widest;
     for (const WrenchArc& arc : arcs) {
         const Vec2 from = force_of(arc.from), to = force_of(arc.to);
-        const Sign s = det_sign(nu, arc.from, arc.to);
-        const Turn turn = s == Sign::Positive ? Turn::Narrow
-                          : s == Sign::Negative ? Turn::Wide
-                          : dot_sign(arc.from, arc.to) == Sign::Positive ? Turn::Same
-                                                                         : Turn::Half;
+        const auto along = [&] { return dot_sign(arc.from, arc.to) == Sign::Positive; };
+        const auto turn = static_cast<Turn>(angular_half(det_sign(nu, arc.from, arc.to), along));
         add_arc(out, from, to, turn, arc.whole);
         const double width = arc.whole ? 2.0 * M_PI : arc_width(from, to, turn);
         if (width > 0.0 && (!widest || width > widest->second)) widest = std::pair(angle_of(from), width);

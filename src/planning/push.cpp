@@ -83,7 +83,7 @@ std::vector<Cone> vertex_actions(const Vec2& v, const Exact2& cw, const Exact2& 
         return {forces_across(v, v, {friction_edge(cw, mu, true), friction_edge(cw, mu, false),
                                      friction_edge(ccw, mu, true), friction_edge(ccw, mu, false)})};
     }
-    const bool left = slip == ContactMode::SlidingLeft;
+    const bool left = opposing_friction(slip) > 0;
     if (slip != ContactMode::Fixed) return {forces_across(v, v, {friction_edge(cw, mu, left), friction_edge(ccw, mu, left)})};
     const Exact2 first = friction_edge(cw, mu, true), last = friction_edge(ccw, mu, false);
     if (cross2(first, last).sign() == Sign::Positive) return {forces_across(v, v, {first, last})};
@@ -124,7 +124,7 @@ namespace {
 
 // A finger's forces on the segment a-b with the exact inward normal `normal`.
 Cone edge_actions(const Vec2& a, const Vec2& b, const Exact2& normal, ContactMode slip, double mu) {
-    if (slip != ContactMode::Fixed) return forces_across(a, b, {friction_edge(normal, mu, slip == ContactMode::SlidingLeft)});
+    if (slip != ContactMode::Fixed) return forces_across(a, b, {friction_edge(normal, mu, opposing_friction(slip) > 0)});
     return forces_across(a, b, {friction_edge(normal, mu, true), friction_edge(normal, mu, false)});
 }
 

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "momentlab/geometry/angular_order.hpp"
+
 namespace momentlab {
 namespace {
 
@@ -27,20 +29,19 @@ std::vector<WrenchArc> arcs_of(const ExactVector& nu, const Cone& c) {
     return {det_sign(nu, a, b) == Sign::Positive ? WrenchArc{a, b} : WrenchArc{b, a}};
 }
 
-// Exact angular order about nu, starting at the reference direction r.
-struct AngularOrder {
+// The exact angular order about nu (geometry/angular_order.hpp), starting at the reference
+// direction r.
+struct ArcOrder {
     ExactVector nu, r;
     [[nodiscard]] int half(const ExactVector& v) const {
-        const Sign s = det_sign(nu, r, v);
-        return s == Sign::Positive || (s == Sign::Zero && dot_sign(r, v) == Sign::Positive) ? 0 : 1;
+        return angular_half(det_sign(nu, r, v), [&] { return dot_sign(r, v) == Sign::Positive; });
     }
     [[nodiscard]] bool less(const ExactVector& a, const ExactVector& b) const {
-        const int ha = half(a), hb = half(b);
-        if (ha != hb) return ha < hb;
-        return det_sign(nu, a, b) == Sign::Positive;
+        return angular_compare(half(a), half(b), [&] { return det_sign(nu, a, b); }) == Sign::Negative;
     }
+    // a and b are one direction: b is in a's half 0.
     [[nodiscard]] bool same(const ExactVector& a, const ExactVector& b) const {
-        return det_sign(nu, a, b) == Sign::Zero && dot_sign(a, b) == Sign::Positive;
+        return angular_half(det_sign(nu, a, b), [&] { return dot_sign(a, b) == Sign::Positive; }) == 0;
     }
 };
 
@@ -85,7 +86,7 @@ PlaneSplit split_plane(const ExactVector& nu, const Cone& s, std::span<const Mod
     std::size_t k_count = 0;
     std::vector<ExactVector> order;
     if (!cuts.empty()) {
-        const AngularOrder ord{nu, cuts.front()};
+        const ArcOrder ord{nu, cuts.front()};
         std::sort(cuts.begin(), cuts.end(), [&](const ExactVector& a, const ExactVector& b) { return ord.less(a, b); });
         for (const ExactVector& c : cuts) {
             if (order.empty() || !ord.same(order.back(), c)) order.push_back(c);
@@ -95,7 +96,7 @@ PlaneSplit split_plane(const ExactVector& nu, const Cone& s, std::span<const Mod
     }
     const std::size_t n_pieces = pieces_wanted ? 1 : 2 * k_count;  // point k is piece 2k, the open arc after it 2k + 1
     const auto index_of = [&](const ExactVector& v) {
-        const AngularOrder ord{nu, order.front()};
+        const ArcOrder ord{nu, order.front()};
         for (std::size_t k = 0; k < order.size(); ++k) {
             if (ord.same(order[k], v)) return k;
         }

@@ -507,7 +507,7 @@ TEST(ExactVector, ApproximationBoundsEachCoordinate) {
 // about o, normals nearly through its centre (both rounded to 9 digits, as the bowl family),
 // for o = 0, 10^3, 10^6 and 10^12. Their torques are near o x f, whose rounding hides what tells
 // the wrenches apart; det_sign takes them about the first force's point when the differences of
-// the points are exact (force_det_filter, src/core/exact.cpp). The signs against GMP (with
+// the points are exact (forces_filter, src/core/exact_predicates.cpp). The signs against GMP (with
 // negated wrenches, whose signs the product takes), and the exact paths: at most 5% (without
 // force_det_filter every one of these determinants took the Dyadic path, at every offset; with
 // it 371 at 10^3, where the rounded points put the normal lines within about 10^-13 of

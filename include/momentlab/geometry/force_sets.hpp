@@ -25,11 +25,15 @@ namespace momentlab {
 /// The wrench (d, p x d) of the force d acting through p, exact.
 [[nodiscard]] ExactVector force_wrench(const Vec2& point, const Vec2& direction);
 
-/// The direction n + c t of a friction edge, t = (n.y, -n.x) (c = +-mu), in the number type N:
-/// Dyadic for exact edges, certified doubles in the one-shot path of query.
+/// The direction n + c t of a friction edge, t = (n.y, -n.x) (c = +-mu or +-mu_k), in the number
+/// type N: Dyadic for exact edges, certified doubles in the one-shot path of query, intervals and
+/// rationals in the assembly layer. With `den` (> 0), c = num / den and the direction is scaled
+/// by den: den n + num t (so that a decimal mu stays exact in Dyadic arithmetic). The one place
+/// the edge is written (tools/house_checks.sh).
 template <class N>
-[[nodiscard]] std::array<N, 2> friction_direction(const N& nx, const N& ny, const N& c) {
-    return {nx + c * ny, ny - c * nx};
+[[nodiscard]] std::array<N, 2> friction_direction(const N& nx, const N& ny, const N& c, const N* den = nullptr) {
+    if (den == nullptr) return {nx + c * ny, ny - c * nx};
+    return {*den * nx + c * ny, *den * ny - c * nx};
 }
 
 /// An edge of the Coulomb cone with inward normal n (any length): n + mu t (`left`: the force

@@ -48,8 +48,11 @@ using InputWarnings = std::vector<std::string>;
 /// The accepted magnitudes of numbers in input files: 0, or between these.
 inline constexpr double kSmallestMagnitude = 1e-60;
 inline constexpr double kLargestMagnitude = 1e60;
-/// The accepted magnitudes as every message about them says them.
+/// The accepted magnitudes as every message about them says them (written only here).
 inline constexpr std::string_view kMagnitudeRange = "0 or of magnitude 1e-60 .. 1e60";
+/// The non-zero magnitudes alone (kMagnitudeRange without its "0 or of magnitude "), for a
+/// quantity that must not be 0.
+inline constexpr std::string_view kMagnitudeBounds = kMagnitudeRange.substr(kMagnitudeRange.find("1e"));
 
 /// True for an accepted magnitude (of a number, or of a vector's largest coordinate): 0, or
 /// between kSmallestMagnitude and kLargestMagnitude. False for NaN and infinity.

@@ -29,6 +29,13 @@ enum class ContactMode : char { Separating = 's', Fixed = 'f', SlidingRight = 'r
 
 /// The letter of a contact mode.
 [[nodiscard]] constexpr char letter(ContactMode m) { return static_cast<char>(m); }
+/// Coulomb's rule for a sliding contact (Mason 1991, section 2.1; docs/design.md, Conventions):
+/// friction opposes the slip, so the contact force lies along the friction edge n + s mu_k t with
+/// s = -1 for r (sliding along +t) and s = +1 for l; 0 for s and f, which have no one edge. The
+/// one place the rule is written (tools/house_checks.sh).
+[[nodiscard]] constexpr int opposing_friction(ContactMode m) {
+    return m == ContactMode::SlidingRight ? -1 : (m == ContactMode::SlidingLeft ? 1 : 0);
+}
 /// The contact mode of a letter s, f, r or l; throws std::invalid_argument for another one.
 [[nodiscard]] ContactMode contact_mode(char letter);
 /// "separates", "fixed", "slides along +t" or "slides along -t".

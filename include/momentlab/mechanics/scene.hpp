@@ -4,6 +4,7 @@
 /// The planar contact problem as an immutable value: a rigid body touching fixed polygons at
 /// point contacts with Coulomb friction (docs/design.md, Conventions).
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -110,8 +111,18 @@ struct Body {
     [[nodiscard]] const BodyValues* exact_values() const;
 };
 
-/// The planar inertia at the world origin, exactly: M = [[m, 0, -m c.y], [0, m, m c.x],
-/// [-m c.y, m c.x, I_c + m |c|^2]], so that the total wrench is M times the acceleration twist.
+/// The planar inertia at the world origin of a body of mass m, centre of mass (cx, cy) and
+/// inertia ic about it: M = [[m, 0, -m cy], [0, m, m cx], [-m cy, m cx, ic + m (cx^2 + cy^2)]],
+/// so that the total wrench is M times the acceleration twist (docs/design.md, "Per-mode force
+/// sets"), in the number type N (N{} is 0; Dyadic, Rational, Approx, intervals). The one place
+/// the matrix is written (tools/house_checks.sh).
+template <class N>
+[[nodiscard]] std::array<std::array<N, 3>, 3> inertia_matrix(const N& m, const N& cx, const N& cy, const N& ic) {
+    const N mcx = m * cx, mcy = m * cy;
+    return {std::array<N, 3>{m, N{}, -mcy}, std::array<N, 3>{N{}, m, mcx}, std::array<N, 3>{-mcy, mcx, ic + mcx * cx + mcy * cy}};
+}
+
+/// The planar inertia at the world origin, exactly (inertia_matrix of the body's numbers).
 /// For a body with exact values (`exact`), M times a positive number (its denominators
 /// cleared): the same cones M A.
 [[nodiscard]] ExactMatrix inertia_at_origin(const Body& body);

@@ -1,8 +1,9 @@
 #pragma once
 
 // The exact angular order of vectors about an axis (a coordinate axis across a plane, or a
-// pivot vector: the order in the quotient R^3 / p), and the sort that puts many vectors in that
-// order from floating-point keys repaired by exact comparisons. Used by the planar case
+// pivot vector: the order in the quotient R^3 / p; the order itself is geometry/angular_order.hpp),
+// and the sort that puts many vectors in that order from floating-point keys repaired by exact
+// comparisons. Used by the planar case
 // (cone_planar.cpp) and the pivot analysis (cone_pivot.cpp) of cone(generators); written for
 // any generator type with the predicates of generators.hpp (Vec3, ExactVector). Private to the
 // geometry layer.
@@ -15,6 +16,7 @@
 #include <utility>
 
 #include "generators.hpp"
+#include "momentlab/geometry/angular_order.hpp"
 #include "scratch.hpp"
 
 // Private to the geometry layer: hidden from the shared library's interface.
@@ -38,16 +40,10 @@ struct AngularOrder {
         return mode == Mode::PlaneAxis ? cross_component_sign(u, v, axis) : det_sign(pivot, u, v);
     }
     int half(const G& u) const {
-        const Sign s = orient(reference, u);
-        if (s == Sign::Positive) return 1;
-        if (s == Sign::Negative) return 3;
-        bool same_direction;
-        if (mode == Mode::PlaneAxis) {
-            same_direction = dot_sign(reference, u) == Sign::Positive;
-        } else {
-            same_direction = det_sign(pivot, u, witness) == det_sign(pivot, reference, witness);
-        }
-        return same_direction ? 0 : 2;
+        return angular_half(orient(reference, u), [&] {
+            if (mode == Mode::PlaneAxis) return dot_sign(reference, u) == Sign::Positive;
+            return det_sign(pivot, u, witness) == det_sign(pivot, reference, witness);
+        });
     }
 };
 
@@ -120,11 +116,7 @@ Groups angular_sort(ScratchVector<Item<G>>& items, const AngularOrder<G>& ord, T
     using Item = geometry_detail::Item<G>;
     std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.key < b.key; });
     // compare(a, b): Negative if a comes first, Zero for the same angle, Positive after.
-    auto compare = [&](const Item& a, const Item& b) {
-        if (a.half != b.half) return a.half < b.half ? Sign::Negative : Sign::Positive;
-        if (a.half == 0 || a.half == 2) return Sign::Zero;
-        return -orient(ord, a, b);
-    };
+    auto compare = [&](const Item& a, const Item& b) { return angular_compare(a.half, b.half, [&] { return orient(ord, a, b); }); };
     // One exact comparison per neighbouring pair; an item found out of order is moved back
     // (insertion), which is rare when the keys are good. When they are not (generators almost
     // in one plane through the pivot, where the floating-point angles are noise), the moves
