@@ -32,6 +32,11 @@ APT_PACKAGES := g++ cmake make ccache libeigen3-dev libgmp-dev nlohmann-json3-de
                 python3-dev pybind11-dev python3-numpy python3-matplotlib python3-pytest python3-pip \
                 python3-venv python3-setuptools python3-wheel ninja-build \
                 emscripten nodejs chromium
+# `make demo` installs only what it runs: first the packages of the library, the command line and
+# the Python module's build, then, while those build, numpy, matplotlib and Emscripten.
+DEMO_PACKAGES := g++ cmake make ccache ninja-build libeigen3-dev libgmp-dev nlohmann-json3-dev libcli11-dev \
+                 libboost-dev libcairo2-dev pkg-config python3-dev pybind11-dev
+DEMO_LATER_PACKAGES := python3-numpy python3-matplotlib emscripten nodejs
 SAN_BUILD := build/asan
 WEB_BUILD := build/web
 # Emscripten's tools run on node without network (docs/web.md).
@@ -41,26 +46,21 @@ FUZZ_TARGETS := fuzz_scene_reader fuzz_labels_reader fuzz_cone fuzz_query
 FUZZ_SECONDS ?= 600
 SMOKE_SECONDS ?= 5
 
-.PHONY: all deps build python web test-web demo figures test test-release san-build test-sanitizers fuzz-build test-fuzz fuzz large-inputs instructions bench validate validate-long clean
+.PHONY: all deps build python web web-page test-web demo figures test test-release san-build test-sanitizers fuzz-build test-fuzz fuzz large-inputs instructions bench validate validate-long clean
 
 all: build
 
 # Install the Debian packages that are missing (needs root or sudo; no-op when all present).
 # npm only when there is no npm command: Debian's nodejs has none, other nodejs builds bring theirs.
 deps:
-	@missing=$$(for p in $(APT_PACKAGES); do \
-	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
-	command -v npm >/dev/null || missing="$$missing npm"; \
-	if [ -n "$$missing" ]; then \
-	    echo "Installing:" $$missing; \
-	    SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
-	    $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null; \
-	fi
+	@bash tools/install_packages.sh $(APT_PACKAGES) $$(command -v npm >/dev/null || echo npm)
 
 $(BUILD)/CMakeCache.txt: Makefile | deps
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 
+# A tree `make demo` configured has no tests (their packages may be missing): turned on here.
 build: deps $(BUILD)/CMakeCache.txt
+	@grep -q '^MOMENTLAB_TESTS:BOOL=ON' $(BUILD)/CMakeCache.txt || cmake -S . -B $(BUILD) -DMOMENTLAB_TESTS=ON >/dev/null
 	cmake --build $(BUILD) -j$(JOBS)
 
 # `import momentlab` from any directory: the build installed into PREFIX (Debian's python3 reads
@@ -75,10 +75,14 @@ python: build
 
 # The viewer (docs/web.md): out/web/index.html (one file: open it from disk) and out/web/momentlab.mjs
 # (an ES module for node and pages), the library compiled to WebAssembly by Debian's Emscripten.
-$(WEB_BUILD)/CMakeCache.txt: | deps
+$(WEB_BUILD)/CMakeCache.txt:
 	emcmake cmake -S . -B $(WEB_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS=-fexceptions $(UNITY) >/dev/null
 
-web: deps $(WEB_BUILD)/CMakeCache.txt
+web: deps
+	@$(MAKE) --no-print-directory web-page
+
+# The same without installing packages (`make demo` installs its own).
+web-page: $(WEB_BUILD)/CMakeCache.txt
 	cmake --build $(WEB_BUILD) -j$(JOBS)
 	@mkdir -p out/web
 	@cp $(WEB_BUILD)/web/momentlab.mjs out/web/momentlab.mjs
@@ -97,22 +101,33 @@ test-web: web build
 # Compiler output goes to DEMO_LOG; its last lines are shown when a build fails. `make test`
 # builds everything.
 DEMO_LOG := out/demo-build.log
+DEMO_APT_LOG := out/demo-apt.log
 
-demo: deps
+demo:
 	@set -eo pipefail; mkdir -p out; : > $(DEMO_LOG); \
 	quiet() { "$$@" >>$(DEMO_LOG) 2>&1 || { tail -n 30 $(DEMO_LOG); echo "make demo: failed: $$* (the whole log: $(DEMO_LOG))"; exit 1; }; }; \
 	took() { echo "   (built $$((SECONDS / 60)) min $$((SECONDS % 60)) s after the start; compiler output in $(DEMO_LOG))"; }; \
-	echo "== Building the library and the command line into $(BUILD) (about 2-3 minutes on 2 cores)"; \
-	quiet $(MAKE) --no-print-directory $(BUILD)/CMakeCache.txt; \
+	first=$$(bash tools/install_packages.sh --missing $(DEMO_PACKAGES)); \
+	later=$$(bash tools/install_packages.sh --missing $(DEMO_LATER_PACKAGES)); \
+	bash tools/install_packages.sh $(DEMO_PACKAGES); \
+	if [ -n "$$later" ]; then \
+	    echo "== Installing in the background, for the Python and browser parts: $$later (log: $(DEMO_APT_LOG))"; \
+	    bash tools/install_packages.sh $${first:+--updated} $$later > $(DEMO_APT_LOG) 2>&1 & later_pid=$$!; \
+	fi; \
+	echo "== Building the library and the command line into $(BUILD) (about 2 minutes on 2 cores)"; \
+	[ -f $(BUILD)/CMakeCache.txt ] || quiet cmake -S . -B $(BUILD) -G Ninja $(CMAKE_FLAGS) -DMOMENTLAB_TESTS=OFF; \
 	quiet cmake --build $(BUILD) -j$(JOBS) --target momentlab; took; \
 	bash examples/demo.sh $(BUILD)/momentlab out; \
 	echo; echo "== Building the Python module"; \
 	quiet cmake --build $(BUILD) -j$(JOBS) --target _momentlab; took; \
+	if [ -n "$$later" ]; then \
+	    wait $$later_pid || { tail -n 30 $(DEMO_APT_LOG); echo "make demo: failed: installing $$later"; exit 1; }; \
+	fi; \
 	echo "== The same in Python: examples/python/tutorial.py (Figures 1-6 with matplotlib)"; \
 	echo "   PYTHONPATH=$(BUILD)/python $(PYTHON) examples/python/tutorial.py out/python"; \
 	PYTHONPATH=$(CURDIR)/$(BUILD)/python $(PYTHON) examples/python/tutorial.py out/python | sed 's/^/   /'; \
 	echo; echo "== Building the browser viewer (WebAssembly, $(WEB_BUILD))"; \
-	quiet $(MAKE) --no-print-directory web; took; \
+	quiet $(MAKE) --no-print-directory web-page; took; \
 	echo "== In the browser: open out/web/index.html (drag contacts and the force; pick a mode)"; \
 	echo "   done in $$((SECONDS / 60)) min $$((SECONDS % 60)) s"
 

@@ -25,7 +25,7 @@ mutations=(
     "closure-quality-short|src/mechanics/closure.cpp|s/radius = std::min(radius, d);/radius = std::min(radius, 0.98 * d);/|test_closure|$build/tests/test_closure"
     "reach-plus-g|src/planning/fixed_wrench.cpp|s/ExactVector::from_exact(-fixed)/ExactVector::from_exact(fixed)/|test_fixed_wrench|$build/tests/test_fixed_wrench"
     "push-feasible-as-no|src/planning/push.cpp|s/c.verdict = robust_anywhere                                                    ? PushVerdict::Feasible/c.verdict = robust_anywhere ? PushVerdict::Infeasible/|_momentlab|$py tests/python/test_planners_oracle.py -k push_against"
-    "magnitudes-printed-high|src/planning/fixed_wrench.cpp|s/return num.to_double_scaled(k) \/ den.to_double_scaled(k);/return num.to_double_scaled(k) \/ den.to_double_scaled(k) * (1 + 0x1p-20);/|_momentlab|$py tests/python/test_planners_oracle.py -k bands"
+    "magnitudes-printed-high|src/planning/fixed_wrench.cpp|s/{ return nearest_double(num, den); }/{ return nearest_double(num, den) * (1 + 0x1p-20); }/|_momentlab|$py tests/python/test_planners_oracle.py -k bands"
     "arcs-wider|src/planning/directions.cpp|s/const double to = from + width;/const double to = from + width + 1e-6;/|_momentlab|$py tests/python/test_planners_oracle.py -k tilt_and_comply"
 )
 
