@@ -28,11 +28,11 @@ PY
     (
         cd "$dir" || exit 1
         export flags="-O2 -std=c++20 -ffp-contract=off -Iinclude -Isrc -Ireference -Itests/common -I/usr/include/eigen3"
-        lock bash -c 'printf "%s\n" src/core/dyadic.cpp src/core/exact.cpp src/core/exact_predicates.cpp src/core/predicates.cpp \
+        lock bash -c 'printf "%s\n" src/core/dyadic.cpp src/core/exact.cpp src/core/exact_predicates.cpp src/core/predicates.cpp src/core/rounding.cpp \
                           tests/core/test_predicates.cpp tests/core/test_exact.cpp |
                       xargs -P2 -I{} sh -c "ccache g++ \$flags -c {} -o \$(basename {} .cpp).o" &&
                       for t in test_predicates test_exact; do
-                          g++ $t.o dyadic.o exact.o exact_predicates.o predicates.o -lgtest -lgtest_main -lgmpxx -lgmp -pthread -o $t || exit 1
+                          g++ $t.o dyadic.o exact.o exact_predicates.o predicates.o rounding.o -lgtest -lgtest_main -lgmpxx -lgmp -pthread -o $t || exit 1
                       done' > build.log 2>&1 || { echo "$name: build failed (see $dir/build.log)"; exit 0; }
         failed=$( (./test_predicates; ./test_exact) 2>&1 | sed -n 's/^\[  FAILED  \] \([A-Za-z]*\.[A-Za-z]*\) (.*/\1/p')
         echo "$name: ${failed:-none}" | tr '\n' ' '
