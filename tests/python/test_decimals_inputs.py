@@ -229,3 +229,21 @@ def test_block_on_a_decimal_ramp_at_the_friction_threshold(tmp_path):
     got = cli("query", path, "--gravity", "0", "-9.81", "--json")["modes"]
     assert set(got) == expected
     assert set(cli("modes", path, "--json")["modes"]) == oracle.modes(doc)
+
+
+def test_push_band_ends_give_their_exact_value(tmp_path):
+    """query --push --json: an end that is not a double also comes as "p/q" in lowest terms (the
+    threshold mu m g = 0.3 x 1 x 9.81 of the block, by hand); ends that are doubles do not."""
+    from test_decimals_oracle import THRESHOLDS, block
+
+    mu, m, h, g = THRESHOLDS[0]
+    path = tmp_path / "block.json"
+    path.write_text(block(mu, m, h))
+    bands = cli("query", path, "--gravity", "0", "-9.81", "--push", "0", "0", "1", "0", "--json")["bands"]
+    ends = [(b["from"], b.get("from_exact")) for b in bands] + [(b["to"], b.get("to_exact")) for b in bands]
+    assert (float(mu * m * g), "2943/1000") in ends
+    for value, text in ends:
+        if text is not None:  # the exact value, of which the number is the rounding
+            assert Fraction(text) != Fraction(value) and float(Fraction(text)) == value
+    integer = cli("query", path, "--gravity", "0", "-10", "--push", "0", "0", "1", "0", "--json")["bands"]
+    assert all("from_exact" not in b and "to_exact" not in b for b in integer if b["from"] in (0, 3))
