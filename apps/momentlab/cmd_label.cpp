@@ -13,7 +13,7 @@ namespace {
 struct LabelOptions {
     std::string file;
     bool json = false;
-    std::vector<double> at;
+    std::vector<TypedNumber> at;  // as typed: 0.1 is 1/10
     PictureOptions picture;
 };
 
@@ -46,7 +46,7 @@ void print_region(std::ostream& out, const char* name, const Region& r) {
 }
 
 int run(const LabelOptions& o) {
-    const std::vector<Vec2> points = checked_points(o.at, "--at");
+    const std::vector<Rational2> points = checked_points(o.at, "--at");
     const std::optional<Box> view = checked_picture_options(o.picture, {o.file});
     InputWarnings warnings;
     const ForceSetFile parts = read_force_set_parts_text(read_json_file(o.file), &warnings);
@@ -63,7 +63,10 @@ int run(const LabelOptions& o) {
     }
     if (o.json) {
         nlohmann::json doc = {{"cone", to_json(f)}, {"labels", to_json(labels)}};
-        for (const Vec2& p : points) doc["at"].push_back({{"point", {p.x(), p.y()}}, {"label", to_string(labels.at(p))}});
+        for (const Rational2& p : points) {
+            const Vec2 rounded = to_double(p);
+            doc["at"].push_back({{"point", {rounded.x(), rounded.y()}}, {"label", to_string(labels.at(p))}});
+        }
         std::cout << doc.dump(2) << "\n";
         return 0;
     }
@@ -78,7 +81,7 @@ int run(const LabelOptions& o) {
     out << "moment labels:\n";
     print_region(out, "+", labels.plus());
     print_region(out, "-", labels.minus());
-    for (const Vec2& p : points) out << "  label at " << fmt(p, kDigits) << ": " << to_string(labels.at(p)) << "\n";
+    for (const Rational2& p : points) out << "  label at " << fmt(to_double(p), kDigits) << ": " << to_string(labels.at(p)) << "\n";
     std::cout << out.str();
     return 0;
 }

@@ -154,20 +154,34 @@ Labels::Labels(Cone forces)
 namespace {
 
 // The label of a point from the dual cone F*: its moment functional (or its negative) in F*.
-Label label_from_dual(const Cone& dual, const Vec2& point) {
-    if (!point.allFinite()) throw std::invalid_argument("the label's point must be finite");
-    const Vec3 lambda = moment_functional(point);
+// `lambda` is the functional (y, -x, 1) of the point, or a positive multiple of it.
+template <class Functional>
+Label label_from_dual(const Cone& dual, const Functional& lambda, const Functional& negated) {
     const bool plus = dual.has(lambda);
-    const bool minus = dual.has(Vec3(-lambda));
+    const bool minus = dual.has(negated);
     if (plus && minus) return Label::Both;
     if (plus) return Label::Plus;
     if (minus) return Label::Minus;
     return Label::None;
 }
 
+Label label_from_dual(const Cone& dual, const Vec2& point) {
+    if (!point.allFinite()) throw std::invalid_argument("the label's point must be finite");
+    const Vec3 lambda = moment_functional(point);
+    return label_from_dual(dual, lambda, Vec3(-lambda));
+}
+
 }  // namespace
 
 Label Labels::at(const Vec2& point) const { return label_from_dual(dual_, point); }
+
+Label Labels::at(const Rational2& point) const {
+    // The point P / d: the functional (P.y, -P.x, d), d > 0 times (y, -x, 1).
+    Dyadic d;
+    const std::vector<Dyadic> p = clear_denominators(point, &d);
+    const ExactVector lambda = ExactVector::from_exact({p[1], -p[0], d});
+    return label_from_dual(dual_, lambda, lambda.negated());
+}
 
 Label moment_label(const Cone& forces, const Vec2& point) { return label_from_dual(forces.dual(), point); }
 

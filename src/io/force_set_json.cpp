@@ -32,6 +32,76 @@ constexpr int kMaxDepth = 64;
 
 Cone read_set(const Value& s, const Path& path, InputWarnings* w, int depth);
 
+// Force sets of exact values (docs/design.md, "Numbers as typed"): each generator times a
+// positive number, its denominators cleared, so the same cone with Dyadic coordinates. A point
+// P / d (P integer, d > 0 their common denominator) and a direction cleared to integers N give
+// the force's wrench (N, (P / d) x N) times d: (d N, P x N).
+struct ClearedPoint {
+    std::vector<Dyadic> p;
+    Dyadic d;
+};
+
+ClearedPoint cleared_point(const Rational2& point) {
+    ClearedPoint out;
+    out.p = clear_denominators(point, &out.d);
+    return out;
+}
+
+Exact2 cleared_direction(const Rational2& direction) {
+    const std::vector<Dyadic> n = clear_denominators(direction);
+    return {n[0], n[1]};
+}
+
+ExactVector cleared_force(const ClearedPoint& at, const Exact2& n) {
+    return ExactVector::from_exact({at.d * n[0], at.d * n[1], at.p[0] * n[1] - at.p[1] * n[0]});
+}
+
+// The exact [x, y] of field `name` (after the double reader has checked it).
+Rational2 exact2(const Value& s, const Path& path, std::string_view name) { return exact_vec2(field(s, path, name)); }
+
+// The exact triples of a list (after vec3_list has checked it), each times a positive number.
+std::vector<ExactVector> cleared_triples(const Value& list) {
+    std::vector<ExactVector> out;
+    list.for_each_element([&](std::size_t, const Value& e) {
+        const std::vector<Dyadic> c = clear_denominators(exact_vec3(e));
+        out.push_back(ExactVector::from_exact({c[0], c[1], c[2]}));
+    });
+    return out;
+}
+
+// The force (or, `both`, the line of force) through `point` along `direction`, exactly as typed.
+Cone exact_force(const Rational2& point, const Rational2& direction, bool both) {
+    const ExactVector w = cleared_force(cleared_point(point), cleared_direction(direction));
+    if (!both) {
+        const ExactVector g[] = {w};
+        return Cone::from_generators(g);
+    }
+    const ExactVector g[] = {w, w.negated()};
+    return Cone::from_generators(g);
+}
+
+// All forces through the point P / d: (d, 0, -P.y), (0, d, P.x) and their negatives.
+Cone exact_forces_through(const Rational2& point) {
+    const ClearedPoint at = cleared_point(point);
+    const Dyadic zero;
+    const ExactVector ex = ExactVector::from_exact({at.d, zero, -at.p[1]});
+    const ExactVector ey = ExactVector::from_exact({zero, at.d, at.p[0]});
+    const ExactVector g[] = {ex, ex.negated(), ey, ey.negated()};
+    return Cone::from_generators(g);
+}
+
+// The Coulomb cone at `point`: with the normal cleared to integers N and mu = a / b, the edges
+// N +- mu t times b, b N +- a t, t = (N.y, -N.x).
+Cone exact_friction_cone(const Rational2& point, const Rational2& normal, const Rational& mu) {
+    const ClearedPoint at = cleared_point(point);
+    const Exact2 n = cleared_direction(normal);
+    Dyadic b;
+    const Dyadic a = clear_denominators(std::span<const Rational>(&mu, 1), &b).front();
+    const Exact2 t{n[1], -n[0]};
+    const ExactVector g[] = {cleared_force(at, b * n + a * t), cleared_force(at, b * n - a * t)};
+    return Cone::from_generators(g);
+}
+
 std::vector<Cone> read_sets(const Value& sets, const Path& path, InputWarnings* w, int depth) {
     if (depth > kMaxDepth) throw InputError(path.str(), "sets nested more than 64 deep");
     if (!sets.is_array()) throw InputError(path.str(), "expected a list of force sets");
@@ -59,27 +129,42 @@ Cone read_set(const Value& s, const Path& path, InputWarnings* w, int depth) {
     if (type == "wrenches") known_fields(s, path, {"type", "generators"}, w);
     if (type == "halfspaces") known_fields(s, path, {"type", "normals"}, w);
     if (type == "sum" || type == "intersection") known_fields(s, path, {"type", "sets"}, w);
-    if (type == "force") {
-        return force_ray(vec2(field(s, path, "point"), Path(path, "point")), nonzero2(s, path, "direction"));
+    // Each number as the decimal it spells; the double builders when every value is a double.
+    if (type == "force" || type == "line") {
+        const Vec2 point = vec2(field(s, path, "point"), Path(path, "point"));
+        const Vec2 direction = nonzero2(s, path, "direction");
+        const Rational2 p = exact2(s, path, "point"), d = exact2(s, path, "direction");
+        if (!is_double(p) || !is_double(d)) return exact_force(p, d, type == "line");
+        return type == "force" ? force_ray(point, direction) : line_of_force(point, direction);
     }
-    if (type == "line") {
-        return line_of_force(vec2(field(s, path, "point"), Path(path, "point")), nonzero2(s, path, "direction"));
+    if (type == "point") {
+        const Vec2 point = vec2(field(s, path, "point"), Path(path, "point"));
+        const Rational2 p = exact2(s, path, "point");
+        return is_double(p) ? forces_through_point(point) : exact_forces_through(p);
     }
-    if (type == "point") return forces_through_point(vec2(field(s, path, "point"), Path(path, "point")));
     if (type == "friction_cone") {
         const double mu = nonnegative(field(s, path, "mu"), Path(path, "mu"), "mu");
-        return friction_cone(vec2(field(s, path, "point"), Path(path, "point")), nonzero2(s, path, "normal"), mu);
+        const Vec2 point = vec2(field(s, path, "point"), Path(path, "point"));
+        const Vec2 normal = nonzero2(s, path, "normal");
+        const Rational2 p = exact2(s, path, "point"), n = exact2(s, path, "normal");
+        const Rational m = exact_number(field(s, path, "mu"));
+        if (!is_double(p) || !is_double(n) || !m.is_double()) return exact_friction_cone(p, n, m);
+        return friction_cone(point, normal, mu);
     }
     if (type == "moment") {
         const double sign = number(field(s, path, "sign"), Path(path, "sign"));
         if (sign != 1.0 && sign != -1.0 && sign != 0.0) throw InputError(Path(path, "sign").str(), "expected 1, -1 or 0");
         return pure_moments(static_cast<int>(sign));
     }
-    if (type == "wrenches") {
-        return Cone::from_generators(vec3_list(field(s, path, "generators"), Path(path, "generators")));
-    }
-    if (type == "halfspaces") {
-        return Cone::from_halfspaces(vec3_list(field(s, path, "normals"), Path(path, "normals")));
+    if (type == "wrenches" || type == "halfspaces") {
+        const char* name = type == "wrenches" ? "generators" : "normals";
+        const Value list = field(s, path, name);
+        const std::vector<Vec3> v = vec3_list(list, Path(path, name));
+        bool doubles = true;
+        list.for_each_element([&](std::size_t, const Value& e) { doubles = doubles && is_double(exact_vec3(e)); });
+        if (doubles) return type == "wrenches" ? Cone::from_generators(v) : Cone::from_halfspaces(v);
+        const std::vector<ExactVector> g = cleared_triples(list);
+        return type == "wrenches" ? Cone::from_generators(g) : Cone::from_halfspaces(g);
     }
     if (type == "sum" || type == "intersection") {
         return combine(read_sets(field(s, path, "sets"), Path(path, "sets"), w, depth + 1), type == "intersection");

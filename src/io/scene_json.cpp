@@ -52,6 +52,72 @@ Polygon polygon(const Value& v, const Path& path) {
     return p;
 }
 
+// x / m for m > 0, exactly: with x = xn / xd and m = mn / md, mn = M 2^e (M an odd integer),
+// x / m = (xn md 2^-e) / (xd M).
+Rational quotient(const Rational& x, const Rational& m) {
+    const std::int64_t e = m.num().binary_exponent();
+    return Rational((x.num() * m.den()).scaled(-e), x.den() * m.num().scaled(-e));
+}
+
+// The exact vertices of a polygon (as polygon() read them: 0.1 is 1/10).
+std::vector<Rational2> exact_polygon(const Value& v) {
+    std::vector<Rational2> out;
+    out.reserve(v.size());
+    v.for_each_element([&](std::size_t, const Value& e) { out.push_back(exact_vec2(e)); });
+    return out;
+}
+
+// The contacts found from the polygons (`exact`: their vertices as typed, the body's first), with
+// their exact values where the polygons' or the top-level mu's are not doubles (every contact when
+// `all`: the contacts were found on scaled polygons): the point the vertex as typed, the normal
+// the touched edge's perpendicular (exact: a difference of decimals) in the sense find_contacts
+// gave it, scaled so that its larger coordinate is 1 (docs/formats.md).
+void exact_found_contacts(Scene& scene, const std::vector<std::vector<Rational2>>& exact, const Rational& mu, bool all) {
+    for (std::size_t i = 0; i < scene.contacts.size(); ++i) {
+        const ContactOrigin& o = scene.origins[i];
+        const std::vector<Rational2>& touching = exact[o.body_vertex ? 0 : o.obstacle + 1];
+        const std::vector<Rational2>& touched = exact[o.body_vertex ? o.obstacle + 1 : 0];
+        const Rational2& v = touching[o.vertex];
+        const Rational2 &a = touched[o.edge], &b = touched[(o.edge + 1) % touched.size()];
+        Contact& c = scene.contacts[i];
+        if (!all && is_double(v) && is_double(a) && is_double(b)) {
+            if (!mu.is_double()) c = Contact::make(rational(c.point), rational(c.normal), mu, std::nullopt, c.name);
+            continue;
+        }
+        Rational2 n{b[1] - a[1], a[0] - b[0]};  // (d.y, -d.x) for the edge d = b - a
+        const Rational along = n[0] * Rational(c.normal.x()) + n[1] * Rational(c.normal.y());
+        if (along.sign() == Sign::Negative) n = {-n[0], -n[1]};
+        const Rational largest = compare(n[0] * n[0], n[1] * n[1]) >= 0 ? n[0] : n[1];
+        const Rational size = largest.sign() == Sign::Negative ? -largest : largest;
+        c = Contact::make(v, Rational2{quotient(n[0], size), quotient(n[1], size)}, mu, std::nullopt, c.name);
+    }
+}
+
+// The polygons times the least common denominator D of their exact coordinates (0.1 is 1/10),
+// when some coordinate is not a double and every product is one: overlap and contact are
+// unchanged by the scaling, and the products are exact. D receives the scale.
+std::optional<std::vector<Polygon>> scaled_polygons(const std::vector<std::vector<Rational2>>& exact, double& d) {
+    std::vector<Rational> all;
+    for (const auto& p : exact) {
+        for (const Rational2& v : p) all.insert(all.end(), v.begin(), v.end());
+    }
+    if (is_double(all)) return std::nullopt;
+    Dyadic common;
+    const std::vector<Dyadic> cleared = clear_denominators(all, &common);
+    if (!common.fits_double()) return std::nullopt;
+    for (const Dyadic& x : cleared) {
+        if (!x.fits_double()) return std::nullopt;
+    }
+    d = common.to_double();
+    std::vector<Polygon> out;
+    std::size_t at = 0;
+    for (const auto& p : exact) {
+        Polygon& q = out.emplace_back();
+        for (std::size_t i = 0; i < p.size(); ++i, at += 2) q.emplace_back(cleared[at].to_double(), cleared[at + 1].to_double());
+    }
+    return out;
+}
+
 Body read_body(const Value& b, const Path& path, InputWarnings* w) {
     if (!b.is_object()) throw InputError(path.str(), "expected an object with \"mass\", \"com\" and \"inertia\"");
     known_fields(b, path, {"mass", "com", "inertia", "radius_of_gyration", "polygon"}, w);
@@ -180,25 +246,35 @@ Scene read_scene(const Value& doc, InputWarnings* w) {
             options.mu = nonnegative(*mu, Path(root, "mu"), "mu");
             options.mu_kinetic = options.mu;
         }
+        // The vertices as typed: with decimals (0.1 is 1/10), the polygons scaled to exact doubles
+        // when they can be, so that touching and overlap are decided on the decimals.
+        std::vector<std::vector<Rational2>> exact;
+        exact.push_back(exact_polygon(*doc.find("body")->find("polygon")));
+        doc.find("obstacles")->for_each_element([&](std::size_t, const Value& o) { exact.push_back(exact_polygon(*o.find("polygon"))); });
+        double scale = 1.0;
+        const std::optional<std::vector<Polygon>> scaled = scaled_polygons(exact, scale);
+        std::vector<Polygon> scaled_obstacles;
+        if (scaled) scaled_obstacles.assign(scaled->begin() + 1, scaled->end());
+        const Polygon& body = scaled ? scaled->front() : scene.body->polygon;
+        const std::vector<Polygon>& obstacles = scaled ? scaled_obstacles : scene.obstacles;
         // Drawn touching, not overlapping: decided exactly (polygons_overlap), before the contacts.
-        for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
-            if (const std::optional<Vec2> x = polygons_overlap(scene.body->polygon, scene.obstacles[i])) {
+        for (std::size_t i = 0; i < obstacles.size(); ++i) {
+            if (const std::optional<Vec2> x = polygons_overlap(body, obstacles[i])) {
                 throw InputError("$.obstacles[" + std::to_string(i) + "].polygon",
-                                 "overlaps the body polygon ($.body.polygon), for instance at (" + json(x->x()).dump() + ", " +
-                                     json(x->y()).dump() + ") (expected them to touch, not overlap)");
+                                 "overlaps the body polygon ($.body.polygon), for instance at (" + json(x->x() / scale).dump() +
+                                     ", " + json(x->y() / scale).dump() + ") (expected them to touch, not overlap)");
             }
         }
         try {
             // The outlines were found simple as they were read (polygon()).
-            scene.contacts = detail::find_contacts_of_simple(scene.body->polygon, scene.obstacles, options, &scene.origins);
+            ContactFinding found = options;
+            found.distance *= scale;
+            scene.contacts = detail::find_contacts_of_simple(body, obstacles, found, &scene.origins);
         } catch (const std::invalid_argument& e) {
             throw InputError("$", e.what());
         }
-        // A decimal mu (0.3 is 3/10) for every contact found.
-        const Rational exact_mu = mu ? exact_number(*mu) : Rational();
-        if (!exact_mu.is_double()) {
-            for (Contact& c : scene.contacts) c = Contact::make(rational(c.point), rational(c.normal), exact_mu, std::nullopt, c.name);
-        }
+        // Decimal vertices and a decimal mu (0.3 is 3/10), exactly.
+        exact_found_contacts(scene, exact, mu ? exact_number(*mu) : Rational(), scaled.has_value());
         if (scene.contacts.empty()) {
             throw InputError("$", "the body polygon touches no obstacle (no contacts found)");
         }

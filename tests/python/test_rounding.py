@@ -6,6 +6,7 @@ it >= 0 (<= 0), and Python's float(Fraction) rounds it correctly."""
 
 import json
 import random
+from decimal import Decimal
 from fractions import Fraction
 
 import momentlab as ml
@@ -101,9 +102,13 @@ def test_label_text_is_the_exact_value_correctly_rounded(tmp_path):
     rng = random.Random(4646)
     checked = 0
     for n, forces in enumerate(midpoint_cases() + [random_forces(rng, 3) for _ in range(30)]):
-        doc = [{"type": "force", "point": [float(c) for c in p], "direction": [float(c) for c in d]} for p, d in forces]
+        # Each number written as the exact decimal of its double (the file's text is read as the
+        # decimal it spells: docs/design.md, "Numbers as typed").
+        written = lambda c: format(Decimal(float(c)), "f")
+        doc = "[" + ",".join(f'{{"type":"force","point":[{written(p[0])},{written(p[1])}],"direction":[{written(d[0])},{written(d[1])}]}}'
+                             for p, d in forces) + "]"
         path = tmp_path / f"forces{n}.json"
-        path.write_text(json.dumps(doc))
+        path.write_text(doc)
         text = cli("label", path).stdout
         for sign, name in ((1, "+ region"), (-1, "- region")):
             exact = oracle_vertices(forces, sign)

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "momentlab/core/rational.hpp"
 #include "momentlab/core/vec.hpp"
 #include "momentlab/geometry/cone.hpp"
 
@@ -71,6 +72,8 @@ public:
 
     /// The exact label of a point: + if every force of F has moment >= 0 about it, - if <= 0.
     [[nodiscard]] Label at(const Vec2& point) const;
+    /// The same for a point given exactly (a decimal as typed: 0.1 is 1/10).
+    [[nodiscard]] Label at(const Rational2& point) const;
 
     /// The force set represented by two regions (the inverse view). Exact on the homogeneous
     /// vertices. When both regions are empty the labels do not determine F (a line of pure
