@@ -91,14 +91,17 @@ Cone exact_forces_through(const Rational2& point) {
 }
 
 // The Coulomb cone at `point`: with the normal cleared to integers N and mu = a / b, the edges
-// N +- mu t times b, b N +- a t, t = (N.y, -N.x).
+// N +- mu t times b (friction_direction with a denominator).
 Cone exact_friction_cone(const Rational2& point, const Rational2& normal, const Rational& mu) {
     const ClearedPoint at = cleared_point(point);
     const Exact2 n = cleared_direction(normal);
     Dyadic b;
     const Dyadic a = clear_denominators(std::span<const Rational>(&mu, 1), &b).front();
-    const Exact2 t{n[1], -n[0]};
-    const ExactVector g[] = {cleared_force(at, b * n + a * t), cleared_force(at, b * n - a * t)};
+    const auto edge = [&](const Dyadic& c) {
+        const auto d = friction_direction(n[0], n[1], c, &b);
+        return cleared_force(at, Exact2{d[0], d[1]});
+    };
+    const ExactVector g[] = {edge(a), edge(-a)};
     return Cone::from_generators(g);
 }
 
