@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -234,27 +235,45 @@ void describe(PushCase& c, const std::vector<const PushPiece*>& chosen) {
 }
 
 // Which of the shown pieces push into the goal alone, and a unique best push when one, rounded,
-// still lies in E_goal's interior, in no other mode's set and where the finger is free.
+// still lies in E_goal's interior, in no other mode's set and where the finger is free: of the
+// unique parts' representatives (the mean of each part's extreme unit forces), the one farthest
+// from every boundary in the wrench metric when there is one, else the first.
 void tell_uniqueness(PushCase& c, const std::vector<const PushPiece*>& shown, const ModeForces& goal,
-                     std::span<const ModeForces> modes, const std::vector<Polygon>* obstacles) {
+                     std::span<const ModeForces> modes, const std::vector<Polygon>* obstacles, const WrenchMetric* metric) {
     c.uniqueness_known = true;
     std::vector<Cone> parts;
+    double best_depth = -1.0;
+    const auto consider = [&](const Push& push) {
+        const Vec3 e = push.wrench();
+        const bool alone = std::none_of(modes.begin(), modes.end(), [&](const ModeForces& m) {
+            return m.mode.letters != goal.mode.letters && m.applied.has(e);
+        });
+        if (!alone || !goal.applied.in_relative_interior(e) || (obstacles && in_obstacle(*obstacles, push.point))) return;
+        double depth = 0.0;
+        if (metric) {
+            const QueryMargins m = margins_of(modes, wrench_through(exact(push.point), exact(push.direction)), *metric);
+            depth = m.to_other.value_or(std::numeric_limits<double>::infinity());
+            for (const double inside : m.inside) depth = std::min(depth, inside);
+        }
+        if (!c.best_unique || depth > best_depth) {
+            c.best = push;
+            c.best_unique = true;
+            best_depth = depth;
+        }
+    };
     for (const PushPiece* piece : shown) {
         Uniqueness u = uniqueness(piece->solutions, modes, goal);
         c.shared = c.shared || u.shared;
         if (!u.unique) continue;
         c.unique = true;
-        for (Cone& part : u.parts) parts.push_back(std::move(part));
-        if (c.best_unique) continue;
-        const Push push = push_of(c.feature, u.representative->value());
-        const Vec3 e = push.wrench();
-        const bool alone = std::none_of(modes.begin(), modes.end(), [&](const ModeForces& m) {
-            return m.mode.letters != goal.mode.letters && m.applied.has(e);
-        });
-        if (alone && goal.applied.in_relative_interior(e) && !(obstacles && in_obstacle(*obstacles, push.point))) {
-            c.best = push;
-            c.best_unique = true;
+        if (metric || !c.best_unique) {
+            consider(push_of(c.feature, u.representative->value()));
+            for (const Cone& part : u.parts) {
+                if (!metric && c.best_unique) break;
+                consider(representative(c.feature, part));
+            }
         }
+        for (Cone& part : u.parts) parts.push_back(std::move(part));
     }
     std::vector<const Cone*> cones;
     for (const Cone& part : parts) cones.push_back(&part);
@@ -317,7 +336,7 @@ PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, c
     }
     describe(c, shown);
     if (!context.modes.empty() && !context.fixed && !shown.empty()) {
-        tell_uniqueness(c, shown, goal_mode, context.modes, free ? &obstacles : nullptr);
+        tell_uniqueness(c, shown, goal_mode, context.modes, free ? &obstacles : nullptr, context.metric ? &*context.metric : nullptr);
     }
     if (!context.modes.empty() && !context.fixed && context.metric && c.best) {
         c.best_margins = margins_of(context.modes, wrench_through(exact(c.best->point), exact(c.best->direction)), *context.metric);
