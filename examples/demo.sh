@@ -54,10 +54,12 @@ show "Five contacts: form closure" closure "$here/closure-five-contacts.json"
 show "Two frictional fingers nearly opposite: force closure, not form closure" closure "$here/closure-antipodal-fingers.json"
 
 # Assemblies (docs/assemblies.md works each by hand): several bodies under gravity; bodies 1..N, 0 the world.
-show "Two blocks of Modern Robotics (ch. 12): body 1 leans on body 2; with mu = 0.1 at its foot it needs 10/31, so it falls" \
+show "Two blocks of Modern Robotics (ch. 12): body 1 leans on body 2; with mu = 0.1 at its foot it needs 10/31, so it falls (its mechanism drawn below: out/assembly-falls)" \
     stand "$here/assembly-modern-robotics.json"
 show "A ladder on a frictionless wall, mu = 3/8 = 1 / (2 tan a) at the floor: it stands, on the boundary; gravity (gamma, -1) keeps it up for gamma in [0, 3/2]" \
     stand "$here/assembly-ladder.json" --tilt
+show "A three-block arch at mu = 0.3 (it needs (sqrt 29 - 3)/10 = 0.2385): it stands; drawn below with its forces (out/assembly-arch)" \
+    stand "$here/assembly-arch.json"
 
 # Planning (the paper's section 3): reaching the goal rr (slide along the wall, no turning).
 show "Tilting the block along the wall: which gravity directions slide it right (rr)" plan tilt "$here/figure-3-block-along-wall.json" --goal rr
@@ -117,6 +119,10 @@ figure push-vertex "Pushing the outboard trailing vertex, finger stuck (goal rr)
 figure comply "A compliance centre at (0, 0.5) (goal rr)" \
     plan comply "$here/figure-3-block-along-wall.json" --goal rr --centre 0 0.5
 figure rod-in-corner-modes "A rod in a corner: every contact mode" draw "$here/rod-in-corner.json" --what modes
+figure assembly-falls "Two blocks of Modern Robotics fall (mu = 0.1 at the foot < 10/31): a collapse mechanism" \
+    draw "$here/assembly-modern-robotics.json" --what stand
+figure assembly-arch "A three-block arch at mu = 0.3 stands: the forces of one equilibrium, each block's labels" \
+    draw "$here/assembly-arch.json" --what stand
 figure problem-ladder-slip "How the ladder slips, when it does (rr): it turns about (1, 1.73)" \
     draw "$here/problem-ladder.json" --mode rr
 figure problem-peg "A peg in a hole pushed through (0, 2): the directions that slide it in (rl)" \

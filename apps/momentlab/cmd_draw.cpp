@@ -1,9 +1,11 @@
-// `momentlab draw SCENE [--mode MODE]... [--what modes|forces|labels] -o FILE...`: pictures of a
-// scene (render layer).
+// `momentlab draw SCENE [--mode MODE]... [--what modes|forces|labels|closure|stand] -o FILE...`:
+// pictures of a scene (render layer).
 #include <iostream>
 #include <memory>
 
 #include "common.hpp"
+#include "momentlab/assembly/assembly_json.hpp"
+#include "momentlab/render/stand_pictures.hpp"
 
 namespace momentlab::cli {
 namespace {
@@ -41,6 +43,15 @@ int run(const DrawOptions& o) {
                       o.picture);
         return 0;
     }
+    if (what == "stand") {
+        InputWarnings warnings;
+        const Assembly assembly = read_assembly_text(read_json_file(o.file), &warnings);
+        for (const std::string& w : warnings) std::cerr << "momentlab: warning: " << printable(w) << "\n";
+        const StandResult r = stand(assembly);
+        const std::string heading = title.empty() ? name + (r.equilibrium.can_stand ? ": it can stand" : ": it cannot stand") : title;
+        write_picture(render::stand_figure(heading, assembly, r, view), o.picture);
+        return 0;
+    }
     TerminalProgress progress;
     Problem problem = open_problem(o.file, o.quasi_static, progress);
     const struct {
@@ -68,13 +79,14 @@ int run(const DrawOptions& o) {
 
 std::function<int()> add_draw_command(CLI::App& app) {
     auto opts = std::make_shared<DrawOptions>();
-    CLI::App* cmd = add_scene_command(app, opts, "draw", "Draw a scene: its modes, the forces of some modes, or its friction cones");
+    CLI::App* cmd = add_scene_command(app, opts, "draw", "Draw a scene: its modes, the forces of some modes, its friction cones, closure, or whether an assembly stands");
     cmd->add_option("--mode", opts->modes, "a mode's letters, e.g. rr (repeatable; default: every mode)")
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     cmd->add_option("--what", opts->what,
                     "modes: rotation centres of every mode; forces: F, T, E per mode (default with --mode); "
-                    "labels: the contacts' friction cones and their sum; closure: the labels that decide grasp closure")
-        ->check(CLI::IsMember({"modes", "forces", "labels", "closure"}));
+                    "labels: the contacts' friction cones and their sum; closure: the labels that decide grasp closure; "
+                    "stand: an assembly's equilibrium forces or collapse mechanism, and each body's labels")
+        ->check(CLI::IsMember({"modes", "forces", "labels", "closure", "stand"}));
     add_picture_options(cmd, opts->picture, true);
     cmd->add_flag("--quasi-static", opts->quasi_static, "neglect inertia: the applied wrench balances the contact wrench, E = -T (docs/design.md)");
     return [opts] { return run(*opts); };

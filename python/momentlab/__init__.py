@@ -43,10 +43,11 @@ from ._momentlab import (
 from . import _momentlab
 from .results import (
     Band, BestMargins, CentrePlan, Closure, ClosureTest, Compliance, DirectionPlan, Labelling, Magnitudes,
-    Margins, Push, PushCase, QueryAnswer, RegionData,
+    Margins, Push, PushCase, QueryAnswer, RegionData, BodyMotion, StandResult, TiltCone,
 )
 
 __all__ = [
+    "Assembly", "BodyMotion", "StandResult", "TiltCone", "stand",
     "Analysis", "Body", "Cone", "Contact", "Labels", "ModeSets", "Region", "Scene",
     "Band", "BestMargins", "CentrePlan", "Closure", "ClosureTest", "Compliance", "DirectionPlan", "Labelling",
     "Magnitudes", "Margins", "Push", "PushCase", "QueryAnswer", "RegionData",
@@ -515,3 +516,7 @@ def push_line(scene, point, direction, gravity=None, wrench=None, forces=None) -
     the "bands" of `momentlab query --push X Y DX DY --json`."""
     bands = _analysis_of(scene)._analysis.push_line(point, direction, gravity, wrench, _forces(forces))
     return [Band.from_json(b) for b in bands]
+
+
+# Assemblies of several bodies (docs/assemblies.md); last, as assembly.py reads the names above.
+from .assembly import Assembly, stand  # noqa: E402

@@ -2,6 +2,9 @@
 (docs/pictures.md): + regions orange, - regions blue, the +- set purple, forces as dark
 arrows with their dashed lines of action, friction cones green, obstacles grey.
 
+`stand` draws an assembly with the answer of momentlab.stand in magenta (ANSWER): the contact
+forces of its equilibrium, or its collapse mechanism, and each body's moment labels.
+
 Every function draws onto the `ax` it is given, so a notebook composes the pictures with its
 own plots; it returns the Axes (`push` and `comply` the plan they drew, `region` the polygon).
 Functions that take an analysis also take a Scene. Regions are cut to the view for drawing
@@ -21,7 +24,8 @@ import math
 
 import numpy as np
 
-from . import Analysis, Cone, Labels, Scene, analyze, plan_comply, plan_push, plan_tilt
+from . import Analysis, Assembly, Cone, Labels, Scene, analyze, plan_comply, plan_push, plan_tilt
+from . import stand as _stand
 
 # docs/pictures.md; the same values as include/momentlab/render/figure.hpp.
 PAPER = (1.0, 1.0, 1.0)
@@ -35,6 +39,7 @@ BODY = (0.35, 0.35, 0.38)
 OBSTACLE = (0.55, 0.55, 0.55)
 FRICTION = (0.180, 0.600, 0.310)
 GUIDE = (0.62, 0.62, 0.66)
+ANSWER = (0.827, 0.106, 0.447)
 MODE_COLOURS = [(0.651, 0.808, 0.890), (0.698, 0.875, 0.541), (0.984, 0.604, 0.600), (0.992, 0.749, 0.435),
                 (0.792, 0.698, 0.839), (1.000, 1.000, 0.600), (0.553, 0.827, 0.780), (0.988, 0.804, 0.898),
                 (0.851, 0.851, 0.851), (0.800, 0.922, 0.773), (0.737, 0.502, 0.741), (1.000, 0.929, 0.435)]
@@ -284,3 +289,100 @@ def comply(ax, analysis: Analysis, goal: str, centre=None, view=None):
 def figure_for(analysis_or_scene):
     """An Analysis from a Scene or Analysis (for the functions above)."""
     return analysis_or_scene if isinstance(analysis_or_scene, Analysis) else analyze(analysis_or_scene)
+
+
+def assembly_view(assembly: Assembly, pad: float = 0.25):
+    """A square box around the bodies (polygons and centres of mass) and the contacts."""
+    pts = [np.asarray(assembly.points).reshape(-1, 2)]
+    for b in assembly.bodies:
+        pts += [np.asarray(b["com"]).reshape(1, 2), np.asarray(b["polygon"]).reshape(-1, 2)]
+    p = np.vstack(pts)
+    lo, hi = p.min(axis=0), p.max(axis=0)
+    size = max(float((hi - lo).max()), 1.0 if not np.any(hi - lo) else 0.0)
+    c = (lo + hi) / 2
+    half = size * (0.5 + pad)
+    return (c[0] - half, c[1] - half, c[0] + half, c[1] + half)
+
+
+def assembly(ax, asm: Assembly, view=None, faint=False, outlined=None):
+    """Obstacles grey; each body's polygon (body `outlined`, 1..N, in ink) with its centre of mass
+    as a dot and its number; each contact with its friction cone and its normal into body a
+    (contact points only when faint)."""
+    box = assembly_view(asm) if view is None else tuple(view)
+    size = max(box[2] - box[0], box[3] - box[1])
+    for o in asm.obstacles:
+        ax.fill(o[:, 0], o[:, 1], color=OBSTACLE, alpha=0.2 if faint else 0.45, zorder=0.5)
+    for k, b in enumerate(asm.bodies, start=1):
+        poly, own = b["polygon"], outlined == k
+        if len(poly):
+            ax.fill(poly[:, 0], poly[:, 1], color=BODY, alpha=0.25 if own else (0.05 if faint else 0.15), zorder=0.6)
+            closed = np.vstack([poly, poly[:1]])
+            ax.plot(closed[:, 0], closed[:, 1], color=INK if own else BODY, lw=2.2 if own else 1.5, zorder=0.7)
+        ax.plot([b["com"][0]], [b["com"][1]], "o", color=INK, ms=4 if len(poly) else 7, zorder=7)
+        ax.annotate(f"{k} {b['name']}".strip(), b["com"], xytext=(0, 8), textcoords="offset points", ha="center",
+                    fontsize=8, fontweight="bold" if own else "normal", zorder=9)
+    for p, n, mu in zip(asm.points, asm.normals, asm.mu):
+        if faint:
+            ax.plot([p[0]], [p[1]], "o", color=FRICTION, ms=3, zorder=8)
+            continue
+        u = n / np.linalg.norm(n)
+        t = np.array([u[1], -u[0]])
+        length = 0.1 * size
+        cone = np.array([p, p + length * (u + mu * t) / np.linalg.norm(u + mu * t),
+                         p + length * (u - mu * t) / np.linalg.norm(u - mu * t)])
+        ax.fill(cone[:, 0], cone[:, 1], color=FRICTION, alpha=0.2, zorder=0.8)
+        ax.annotate("", xy=p + length * u, xytext=p, arrowprops=dict(arrowstyle="-|>", color=FRICTION, lw=1.0), zorder=8)
+    _setup(ax, box)
+    return ax
+
+
+def stand(axes, asm: Assembly, gravity=(0.0, -9.81), view=None):
+    """The picture of `momentlab draw SCENE --what stand`; returns momentlab.stand(asm, gravity).
+
+    On the first Axes (or the only one given): the assembly and, in magenta, the force on body a
+    at each contact of the equilibrium as an arrow from the contact (lengths in proportion; none
+    where the force is zero) when it can stand, else the collapse mechanism: each turning body's
+    rotation centre as a cross with its number and sense, and each moving body's velocity at its
+    centre of mass as an arrow. On each further Axes k (k = 1, 2, ...): the moment labels of the
+    wrenches body k's contacts can apply (Assembly.contact_wrenches) over the faint assembly."""
+    all_axes = list(np.ravel(axes)) if isinstance(axes, (list, tuple, np.ndarray)) else [axes]
+    result = _stand(asm, gravity)
+    box = assembly_view(asm) if view is None else tuple(view)
+    size = max(box[2] - box[0], box[3] - box[1])
+    ax = all_axes[0]
+    assembly(ax, asm, box)
+    if result.can_stand:
+        largest = max(float(np.linalg.norm(f)) for f in result.forces) if len(result.forces) else 0.0
+        carrying = 0
+        for p, f in zip(asm.points, result.forces):
+            if not np.any(f):
+                continue
+            carrying += 1
+            ax.annotate("", xy=p + 0.2 * size * f / largest, xytext=p,
+                        arrowprops=dict(arrowstyle="-|>", color=ANSWER, lw=2), zorder=10)
+        ax.set_title(f"stands: forces of one equilibrium ({carrying} of {len(result.forces)} contacts carry force)",
+                     fontsize=9)
+    else:
+        coms = [np.asarray(b["com"]) for b in asm.bodies]
+        velocity = [np.array([m.twist[0] - m.twist[2] * c[1], m.twist[1] + m.twist[2] * c[0]])
+                    for m, c in zip(result.mechanism, coms)]
+        fastest = max(float(np.linalg.norm(v)) for v in velocity)
+        for m, c, v in zip(result.mechanism, coms, velocity):
+            if np.any(v) and fastest > 0:
+                ax.annotate("", xy=c + 0.18 * size * v / fastest, xytext=c,
+                            arrowprops=dict(arrowstyle="-|>", color=ANSWER, lw=2), zorder=10)
+            if m.rotation_centre is not None:
+                r = m.rotation_centre
+                ax.plot([r[0]], [r[1]], "x", color=ANSWER, ms=9, mew=2, zorder=10)
+                sense = "\u21ba" if m.twist[2] > 0 else "\u21bb"
+                ax.annotate(f"{m.body} {sense}", r, xytext=(0, -12), textcoords="offset points", ha="center",
+                            color=ANSWER, fontsize=8, zorder=10)
+        ax.set_title("falls: a collapse mechanism", fontsize=9)
+    _setup(ax, box)
+    for k, lax in enumerate(all_axes[1:len(asm.bodies) + 1], start=1):
+        points = [p for (a, b), p in zip(asm.pairs, asm.points) if k in (a, b)]
+        labels(lax, asm.contact_wrenches(k), box, show_forces=False, title=f"body {k}: wrenches its contacts can apply")
+        assembly(lax, asm, box, faint=True, outlined=k)
+        for p in points:
+            lax.plot([p[0]], [p[1]], "o", color=INK, ms=3, zorder=8)
+    return result

@@ -14,11 +14,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, fields
+from fractions import Fraction
 from typing import Optional
+
+import numpy as np
 
 __all__ = [
     "Band", "BestMargins", "CentrePlan", "Closure", "ClosureTest", "Compliance", "DirectionPlan", "Labelling",
-    "Magnitudes", "Margins", "Push", "PushCase", "QueryAnswer", "RegionData",
+    "Magnitudes", "Margins", "Push", "PushCase", "QueryAnswer", "RegionData", "BodyMotion", "StandResult",
+    "TiltCone",
 ]
 
 
@@ -320,3 +324,85 @@ class Closure:
     def from_json(cls, doc: dict) -> "Closure":
         return _read(cls, doc, {"form": ClosureTest.from_json, "force": ClosureTest.from_json,
                                 "reference": _point, "length": float})
+
+
+def _frozen_array(v, shape) -> np.ndarray:
+    """A read-only float64 array of the given shape ((n, 2) or (3,)) from JSON numbers."""
+    a = np.array(v, dtype=np.float64).reshape(shape)
+    a.flags.writeable = False
+    return a
+
+
+def _exact(x) -> Fraction:
+    """A coordinate of a tilt edge: a JSON number (a double, exactly) or exact text "p/q"."""
+    if isinstance(x, bool) or not isinstance(x, (int, float, str)):
+        raise ValueError(f"TiltCone: expected a number or \"p/q\", got {x!r}")
+    return Fraction(x)
+
+
+@dataclass(frozen=True)
+class BodyMotion:
+    """One body's motion in a collapse mechanism (`stand --json`, its "mechanism"): body (1..N),
+    twist (vx, vy, omega) as an array of shape (3,) (lengths in the scene's unit per unit time,
+    omega in radians per unit time; only its direction matters, rounded), and rotation_centre
+    (x, y) = (-vy, vx) / omega when it turns, else None (it translates, or stays: twist 0)."""
+
+    body: int
+    twist: np.ndarray
+    rotation_centre: Optional[tuple] = None
+
+    @classmethod
+    def from_json(cls, doc: dict) -> "BodyMotion":
+        return _read(cls, doc, {"body": int, "twist": lambda v: _frozen_array(v, (3,)), "rotation_centre": _point})
+
+
+@dataclass(frozen=True)
+class TiltCone:
+    """The gravity vectors for which an assembly can stand, a closed convex cone of the plane
+    (`stand --tilt --json`, its "tilt"): kind 'empty', 'ray', 'wedge', 'halfplane', 'line' or
+    'plane', and directions, exact (x, y) pairs of Fractions scaled so that the larger coordinate
+    is +-1: ray [d]; wedge [d1, d2] counter-clockwise; halfplane [d, -d], swept
+    counter-clockwise from d; line [d, -d]; empty and plane []."""
+
+    kind: str
+    directions: list
+
+    @classmethod
+    def from_json(cls, doc: dict) -> "TiltCone":
+        return _read(cls, doc, {"directions": lambda v: [(_exact(x), _exact(y)) for x, y in v]})
+
+
+@dataclass(frozen=True)
+class StandResult:
+    """Will an assembly stand, how can it start to move, how far can it be tilted
+    (`momentlab stand --json`; docs/assemblies.md):
+
+    can_stand: an equilibrium exists (every body's gravity wrench plus its contact wrenches sum
+        to zero, every contact force in its friction cone), decided exactly.
+    forces: when it can, the force on body a at each contact of one equilibrium, an array of
+        shape (n, 2) in the units of mass times gravity (N for kg and m/s^2); else None.
+    mechanism: when it cannot, a BodyMotion per body: twists that every contact allows and
+        along which gravity does positive work; else None.
+    modes, verdict, motions, outcome: the contact modes (one letter per contact: s, f, r, l),
+        'unique' / 'ambiguous' / 'inconsistent', the modes with a motion from rest, and 'stands'
+        / 'may fall' / 'falls' / 'inconsistent'; all None when the modes were not enumerated,
+        with modes_reason saying why.
+    tilt: the TiltCone when asked for (tilt=True), else None.
+    """
+
+    can_stand: bool
+    forces: Optional[np.ndarray] = None
+    mechanism: Optional[list] = None
+    modes: Optional[list] = None
+    modes_reason: Optional[str] = None
+    verdict: Optional[str] = None
+    motions: Optional[list] = None
+    outcome: Optional[str] = None
+    tilt: Optional[TiltCone] = None
+
+    @classmethod
+    def from_json(cls, doc: dict) -> "StandResult":
+        return _read(cls, doc, {
+            "forces": lambda v: _frozen_array(v, (len(v), 2)), "mechanism": lambda v: [BodyMotion.from_json(m) for m in v],
+            "modes": list, "motions": list, "tilt": TiltCone.from_json,
+        })

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "momentlab/assembly/assembly_json.hpp"
 #include "momentlab/momentlab.hpp"
 
 namespace py = pybind11;
@@ -532,6 +533,91 @@ PYBIND11_MODULE(_momentlab, m) {
                  const Rational2 d = exact_vector_of<2>(direction, "direction");
                  return python_of(to_json(a.problem.push_line(p, d, load_of(gravity, wrench, forces)), a.modes));
              });
+
+    // Assemblies (docs/assemblies.md): read by read_assembly, answered by stand as `stand --json`.
+    py::class_<Assembly>(m, "_Assembly")
+        .def_static("from_json",
+                    [](const std::string& text) {
+                        InputWarnings warnings;
+                        Assembly a = read_assembly_text(text, &warnings);
+                        warn_all(warnings);
+                        return a;
+                    })
+        .def_static("from_file",
+                    [](const std::string& path) {
+                        InputWarnings warnings;
+                        Assembly a = read_assembly_text(read_json_file(path, "$"), &warnings);
+                        warn_all(warnings);
+                        return a;
+                    })
+        .def_static("from_doc",
+                    [](const py::handle& doc) {
+                        InputWarnings warnings;
+                        Assembly a = read_assembly(json_of(doc, "$"), &warnings);
+                        warn_all(warnings);
+                        return a;
+                    })
+        .def_static("from_scene",
+                    [](const Scene& s) {
+                        if (!s.body) throw InputError("$", "missing field \"body\": an assembly needs the bodies' masses");
+                        Assembly a = assembly_of(s);
+                        check_assembly(a);
+                        return a;
+                    })
+        .def_property_readonly("bodies", [](const Assembly& a) {
+            py::list out;
+            for (const AssemblyBody& b : a.bodies) {
+                py::dict d;
+                d["name"] = b.name;
+                d["mass"] = b.mass;
+                d["com"] = rows<2>(std::vector<Vec2>{b.com}).attr("reshape")(2);
+                d["inertia"] = b.inertia ? py::object(py::float_(*b.inertia)) : py::object(py::none());
+                d["radius_of_gyration"] = b.radius_of_gyration ? py::object(py::float_(*b.radius_of_gyration)) : py::object(py::none());
+                d["polygon"] = rows<2>(b.polygon);
+                out.append(d);
+            }
+            return out;
+        })
+        .def_property_readonly("pairs", [](const Assembly& a) {
+            py::array_t<std::int64_t> out({static_cast<py::ssize_t>(a.contacts.size()), static_cast<py::ssize_t>(2)});
+            auto r = out.mutable_unchecked<2>();
+            for (std::size_t j = 0; j < a.contacts.size(); ++j) {
+                r(static_cast<py::ssize_t>(j), 0) = static_cast<std::int64_t>(a.contacts[j].a);
+                r(static_cast<py::ssize_t>(j), 1) = static_cast<std::int64_t>(a.contacts[j].b);
+            }
+            return out;
+        })
+        .def_property_readonly("points", [](const Assembly& a) {
+            std::vector<Vec2> v;
+            for (const AssemblyContact& c : a.contacts) v.push_back(c.contact.point);
+            return rows<2>(v);
+        })
+        .def_property_readonly("normals", [](const Assembly& a) {
+            std::vector<Vec2> v;
+            for (const AssemblyContact& c : a.contacts) v.push_back(c.contact.normal);
+            return rows<2>(v);
+        })
+        .def_property_readonly("mu", [](const Assembly& a) {
+            std::vector<double> v;
+            for (const AssemblyContact& c : a.contacts) v.push_back(c.contact.mu);
+            return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
+        })
+        .def_property_readonly("names", [](const Assembly& a) {
+            std::vector<std::string> v;
+            for (const AssemblyContact& c : a.contacts) v.push_back(c.contact.name);
+            return v;
+        })
+        .def_property_readonly("obstacles", [](const Assembly& a) {
+            std::vector<Array> out;
+            for (const Polygon& p : a.obstacles) out.push_back(rows<2>(p));
+            return out;
+        });
+    m.def("stand", [](const Assembly& a, const py::handle& gravity, bool tilt) {
+        StandOptions options;
+        if (!gravity.is_none()) options.gravity = vector_of<2>(gravity, "gravity");
+        options.tilt = tilt;
+        return python_of(to_json(stand(a, options)));
+    }, py::arg("assembly"), py::arg("gravity") = py::none(), py::arg("tilt") = false);
 
     // Force sets of the paper's Figure 1, their combinations and files.
     m.def("force", [](const py::handle& p, const py::handle& d) {
