@@ -192,6 +192,7 @@ bench: build
 	$(BUILD)/bench/bench_cone
 	$(BUILD)/bench/bench_contact
 	$(BUILD)/bench/bench_python
+	$(BUILD)/bench/bench_stand
 
 clean:
 	rm -rf build out python/momentlab.egg-info
