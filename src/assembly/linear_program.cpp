@@ -126,32 +126,35 @@ DoubleProgram guidance(const Scaled<Interval>& s, const std::vector<double>& cos
     return d;
 }
 
-// The basis's columns as intervals (artificials: sign * e_i), and their midpoints.
-struct BasisColumns {
-    std::vector<SparseColumn<Interval>> columns;
-    std::vector<SparseColumn<double>> middles;
-};
-
-BasisColumns basis_columns(const Scaled<Interval>& s, const Basis& basis) {
+// The basis's columns as intervals (artificials: sign * e_i).
+std::vector<SparseColumn<Interval>> basis_columns(const Scaled<Interval>& s, const Basis& basis) {
     const auto n = static_cast<std::uint32_t>(s.columns.size());
-    BasisColumns b{std::vector<SparseColumn<Interval>>(s.rows), std::vector<SparseColumn<double>>(s.rows)};
+    std::vector<SparseColumn<Interval>> columns(s.rows);
     for (std::uint32_t p = 0; p < s.rows; ++p) {
         const std::uint32_t j = basis.basic[p];
         if (j < n) {
-            b.columns[p] = s.columns[j];
+            columns[p] = s.columns[j];
         } else {
-            b.columns[p].push_back({j - n, Interval(static_cast<double>(basis.artificial_sign[j - n]))});
+            columns[p].push_back({j - n, Interval(static_cast<double>(basis.artificial_sign[j - n]))});
         }
-        for (const SparseEntry<Interval>& e : b.columns[p]) b.middles[p].push_back({e.index, e.value.mid()});
     }
-    return b;
+    return columns;
+}
+
+std::vector<SparseColumn<double>> middles_of(const std::vector<SparseColumn<Interval>>& columns) {
+    std::vector<SparseColumn<double>> middles(columns.size());
+    for (std::size_t p = 0; p < columns.size(); ++p) {
+        for (const SparseEntry<Interval>& e : columns[p]) middles[p].push_back({e.index, e.value.mid()});
+    }
+    return middles;
 }
 
 // The basis factored in interval arithmetic along the pivots a double factorization of its
 // midpoints chooses. The widths grow with the elimination (the wrapping effect), so that on a
 // few hundred rows a pivot's interval often holds 0: then none.
 std::optional<SparseLu<Interval>> interval_factor(const Scaled<Interval>& s, const Basis& basis) {
-    const auto [columns, middles] = basis_columns(s, basis);
+    const std::vector<SparseColumn<Interval>> columns = basis_columns(s, basis);
+    const std::vector<SparseColumn<double>> middles = middles_of(columns);
     SparseLu<double> guide;
     if (!guide.factor(middles)) return std::nullopt;
     SparseLu<Interval> lu;
@@ -164,58 +167,6 @@ Interval magnitude(const Interval& a) { return Interval(std::max(std::abs(a.lo),
 // The largest basis solved by preconditioning (its m x m approximate inverse is stored).
 constexpr std::uint32_t kPreconditionedRows = 2000;
 
-// An enclosure of the solution of B x = b for every B and b inside the intervals (B by its
-// columns), without interval elimination: R the inverse of B's midpoint in doubles (its columns
-// solved with a double LU), x~ = R mid(b); when alpha = ||I - R B|| < 1 (infinity norm, in
-// interval arithmetic), every such B is regular and ||x - x~|| <= ||R (b - B x~)|| / (1 - alpha),
-// since B^-1 = (R B)^-1 R and ||(R B)^-1|| <= 1 / (1 - alpha) (Rump, "Verification methods:
-// rigorous results using floating-point arithmetic", Acta Numerica 19, 2010, section 10).
-// O(m^2 + m nnz(B)) work and m^2 doubles.
-std::optional<std::vector<Interval>> preconditioned_solve(const BasisColumns& b, const std::vector<Interval>& rhs) {
-    const auto m = static_cast<std::uint32_t>(b.columns.size());
-    if (m == 0 || m > kPreconditionedRows) return std::nullopt;
-    SparseLu<double> lu;
-    if (!lu.factor(b.middles)) return std::nullopt;
-    std::vector<double> r(static_cast<std::size_t>(m) * m);  // r[p m + i]: row p (a position), column i (a row of B)
-    for (std::uint32_t i = 0; i < m; ++i) {
-        std::vector<double> unit(m, 0.0);
-        unit[i] = 1.0;
-        const std::vector<double> column = lu.solve(std::move(unit));
-        for (std::uint32_t p = 0; p < m; ++p) r[static_cast<std::size_t>(p) * m + i] = column[p];
-    }
-    const auto at = [&](std::uint32_t p, std::uint32_t i) { return Interval(r[static_cast<std::size_t>(p) * m + i]); };
-    std::vector<Interval> row_sum(m, Interval(0.0));  // of |I - R B|
-    for (std::uint32_t q = 0; q < m; ++q) {
-        for (std::uint32_t p = 0; p < m; ++p) {
-            Interval c(p == q ? 1.0 : 0.0);
-            for (const SparseEntry<Interval>& e : b.columns[q]) c = c - at(p, e.index) * e.value;
-            row_sum[p] = row_sum[p] + magnitude(c);
-        }
-    }
-    double alpha = 0.0;
-    for (const Interval& v : row_sum) alpha = std::max(alpha, v.hi);
-    if (!(alpha < 1.0)) return std::nullopt;
-    std::vector<double> middle(m);
-    for (std::uint32_t i = 0; i < m; ++i) middle[i] = rhs[i].mid();
-    const std::vector<double> x = lu.solve(std::move(middle));
-    std::vector<Interval> residual = rhs;  // b - B x~
-    for (std::uint32_t q = 0; q < m; ++q) {
-        for (const SparseEntry<Interval>& e : b.columns[q]) residual[e.index] = residual[e.index] - e.value * Interval(x[q]);
-    }
-    double beta = 0.0;  // ||R (b - B x~)||
-    for (std::uint32_t p = 0; p < m; ++p) {
-        Interval z(0.0);
-        for (std::uint32_t i = 0; i < m; ++i) z = z + at(p, i) * residual[i];
-        beta = std::max(beta, magnitude(z).hi);
-    }
-    const Interval bound = Interval(beta) / (Interval(1.0) - Interval(alpha));
-    if (!std::isfinite(bound.hi)) return std::nullopt;
-    std::vector<Interval> out;
-    out.reserve(m);
-    for (std::uint32_t q = 0; q < m; ++q) out.push_back(Interval(x[q]) + Interval(-bound.hi, bound.hi));
-    return out;
-}
-
 Interval dot(const std::vector<Interval>& y, const SparseColumn<Interval>& column) {
     Interval s(0.0);
     for (const SparseEntry<Interval>& e : column) s += y[e.index] * e.value;
@@ -224,7 +175,7 @@ Interval dot(const std::vector<Interval>& y, const SparseColumn<Interval>& colum
 
 // Enclosures of every variable of the basis's point (the nonbasic ones at their bounds), or none
 // when an artificial is in the basis other than exactly 0 or the basis cannot be solved: by
-// interval elimination, or `preconditioned` (preconditioned_solve).
+// interval elimination, or `preconditioned` (enclose_solution).
 std::optional<std::vector<Interval>> enclose_point(const Scaled<Interval>& s, const SimplexResult& r, bool preconditioned) {
     const auto n = static_cast<std::uint32_t>(s.columns.size());
     std::optional<SparseLu<Interval>> lu;
@@ -243,7 +194,7 @@ std::optional<std::vector<Interval>> enclose_point(const Scaled<Interval>& s, co
     std::vector<Interval> xb;
     if (lu) {
         xb = lu->solve(std::move(rhs));
-    } else if (auto solved = preconditioned_solve(basis_columns(s, r.basis), rhs)) {
+    } else if (auto solved = enclose_solution(basis_columns(s, r.basis), rhs)) {
         xb = std::move(*solved);
     } else {
         return std::nullopt;
@@ -398,6 +349,58 @@ Program<T> restricted(const Program<T>& p, const std::vector<std::uint32_t>& row
 }
 
 }  // namespace
+
+// Without interval elimination: R the inverse of B's midpoint in doubles (its columns
+// solved with a double LU), x~ = R mid(b); when alpha = ||I - R B|| < 1 (infinity norm, in
+// interval arithmetic), every such B is regular and ||x - x~|| <= ||R (b - B x~)|| / (1 - alpha),
+// since B^-1 = (R B)^-1 R and ||(R B)^-1|| <= 1 / (1 - alpha) (Rump, "Verification methods:
+// rigorous results using floating-point arithmetic", Acta Numerica 19, 2010, section 10).
+// O(m^2 + m nnz(B)) work and m^2 doubles.
+std::optional<std::vector<Interval>> enclose_solution(const std::vector<SparseColumn<Interval>>& columns,
+                                                      const std::vector<Interval>& rhs) {
+    const auto m = static_cast<std::uint32_t>(columns.size());
+    if (m == 0 || m > kPreconditionedRows) return std::nullopt;
+    SparseLu<double> lu;
+    if (!lu.factor(middles_of(columns))) return std::nullopt;
+    std::vector<double> r(static_cast<std::size_t>(m) * m);  // r[p m + i]: row p (a position), column i (a row of B)
+    for (std::uint32_t i = 0; i < m; ++i) {
+        std::vector<double> unit(m, 0.0);
+        unit[i] = 1.0;
+        const std::vector<double> column = lu.solve(std::move(unit));
+        for (std::uint32_t p = 0; p < m; ++p) r[static_cast<std::size_t>(p) * m + i] = column[p];
+    }
+    const auto at = [&](std::uint32_t p, std::uint32_t i) { return Interval(r[static_cast<std::size_t>(p) * m + i]); };
+    std::vector<Interval> row_sum(m, Interval(0.0));  // of |I - R B|
+    for (std::uint32_t q = 0; q < m; ++q) {
+        for (std::uint32_t p = 0; p < m; ++p) {
+            Interval c(p == q ? 1.0 : 0.0);
+            for (const SparseEntry<Interval>& e : columns[q]) c = c - at(p, e.index) * e.value;
+            row_sum[p] = row_sum[p] + magnitude(c);
+        }
+    }
+    double alpha = 0.0;
+    for (const Interval& v : row_sum) alpha = std::max(alpha, v.hi);
+    if (!(alpha < 1.0)) return std::nullopt;
+    std::vector<double> middle(m);
+    for (std::uint32_t i = 0; i < m; ++i) middle[i] = rhs[i].mid();
+    const std::vector<double> x = lu.solve(std::move(middle));
+    std::vector<Interval> residual = rhs;  // b - B x~
+    for (std::uint32_t q = 0; q < m; ++q) {
+        for (const SparseEntry<Interval>& e : columns[q]) residual[e.index] = residual[e.index] - e.value * Interval(x[q]);
+    }
+    double beta = 0.0;  // ||R (b - B x~)||
+    for (std::uint32_t p = 0; p < m; ++p) {
+        Interval z(0.0);
+        for (std::uint32_t i = 0; i < m; ++i) z = z + at(p, i) * residual[i];
+        beta = std::max(beta, magnitude(z).hi);
+    }
+    const Interval bound = Interval(beta) / (Interval(1.0) - Interval(alpha));
+    if (!std::isfinite(bound.hi)) return std::nullopt;
+    std::vector<Interval> out;
+    out.reserve(m);
+    for (std::uint32_t q = 0; q < m; ++q) out.push_back(Interval(x[q]) + Interval(-bound.hi, bound.hi));
+    return out;
+}
 
 LpCounts& lp_counts() {
     thread_local LpCounts counts;

@@ -19,6 +19,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -73,6 +74,13 @@ struct Optimum {
 /// simplex's basis confirmed or repaired by the exact simplex.
 [[nodiscard]] Optimum maximize(const Program<Interval>& enclosures, const ExactBuilder& exact,
                                const std::vector<std::pair<std::uint32_t, int>>& objective);
+
+/// An enclosure of the solution of B x = b for every square B (by columns) and b inside the
+/// intervals, or none when B cannot be shown regular this way (or has more than 2000 rows): the
+/// inverse of B's midpoint as a preconditioner and a norm bound on the error, without the
+/// growth of interval elimination. O(m^2 + m nnz(B)) time, m^2 doubles.
+[[nodiscard]] std::optional<std::vector<Interval>> enclose_solution(const std::vector<SparseColumn<Interval>>& columns,
+                                                                    const std::vector<Interval>& rhs);
 
 /// How the decisions went (for tests and benchmarks): those certified by the intervals, and
 /// those that took the exact simplex, since the thread started.

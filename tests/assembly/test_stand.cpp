@@ -503,7 +503,7 @@ TEST(StandOracle, ArchesAndWallsAgreeWithExactOracle) {
                 scenes, decisions, boundary, at_tilt_ends, overhangs, thresholds, beyond, stands, skipped);
     EXPECT_GE(3 * boundary, decisions);
     EXPECT_GE(at_tilt_ends, testing::floor_of(count / 2));
-    EXPECT_GE(overhangs, testing::floor_of(count / 20));
+    EXPECT_GE(overhangs, testing::floor_of(count / 40));
     EXPECT_GE(thresholds, testing::floor_of(count / 40));
     EXPECT_GE(decisions - stands, testing::floor_of(count / 8));  // some fall
 }
