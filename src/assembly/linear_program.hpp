@@ -11,8 +11,10 @@
 //      t maximised in [0, 1] (columns and rows scaled by powers of two, exactly);
 //   2. its answer certified in interval arithmetic: a point (the basis's solution with the
 //      nonbasic variables at their bounds: the equations hold exactly by construction, and the
-//      intervals show the signs), or a Farkas vector y (y = B^-T c_B: the intervals show the
-//      signs of y . A_j and y . b); a sign is read only from an interval that excludes 0;
+//      intervals show the signs; the basis solved by interval elimination, else enclosed by
+//      preconditioning, enclose_solution below), or a Farkas vector y (y = B^-T c_B: the
+//      intervals show the signs of y . A_j and y . b); a sign is read only from an interval
+//      that excludes 0;
 //   3. otherwise the exact simplex from that basis (exact_simplex.hpp), which decides and gives
 //      the exact point or y.
 // Every answer is exact for the numbers of the exact program; floating point only guides.
