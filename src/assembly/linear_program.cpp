@@ -378,12 +378,15 @@ std::optional<std::vector<Interval>> enclose_solution(const std::vector<SparseCo
             row_sum[p] = row_sum[p] + magnitude(c);
         }
     }
-    double alpha = 0.0;
-    for (const Interval& v : row_sum) alpha = std::max(alpha, v.hi);
-    if (!(alpha < 1.0)) return std::nullopt;
+    double alpha = 0.0;  // (a NaN anywhere fails these comparisons: then none)
+    for (const Interval& v : row_sum) {
+        if (!(v.hi < 1.0)) return std::nullopt;
+        alpha = std::max(alpha, v.hi);
+    }
     std::vector<double> middle(m);
     for (std::uint32_t i = 0; i < m; ++i) middle[i] = rhs[i].mid();
     const std::vector<double> x = lu.solve(std::move(middle));
+    if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) return std::nullopt;
     std::vector<Interval> residual = rhs;  // b - B x~
     for (std::uint32_t q = 0; q < m; ++q) {
         for (const SparseEntry<Interval>& e : columns[q]) residual[e.index] = residual[e.index] - e.value * Interval(x[q]);
@@ -392,7 +395,9 @@ std::optional<std::vector<Interval>> enclose_solution(const std::vector<SparseCo
     for (std::uint32_t p = 0; p < m; ++p) {
         Interval z(0.0);
         for (std::uint32_t i = 0; i < m; ++i) z = z + at(p, i) * residual[i];
-        beta = std::max(beta, magnitude(z).hi);
+        const double size = magnitude(z).hi;
+        if (!std::isfinite(size)) return std::nullopt;
+        beta = std::max(beta, size);
     }
     const Interval bound = Interval(beta) / (Interval(1.0) - Interval(alpha));
     if (!std::isfinite(bound.hi)) return std::nullopt;
