@@ -27,7 +27,7 @@ export CMAKE_GENERATOR = $(if $(shell command -v ninja 2>/dev/null),Ninja,Unix M
 PREFIX ?= /usr/local
 
 APT_PACKAGES := g++ cmake make ccache libeigen3-dev libgmp-dev nlohmann-json3-dev libcli11-dev \
-                libboost-dev libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev libcairo2-dev pkg-config libbox2d-dev \
+                libboost-dev libgtest-dev libbenchmark-dev libcdd-dev libsiconos-numerics-dev libcairo2-dev pkg-config libbox2d-dev libglpk-dev \
                 clang libclang-rt-14-dev \
                 python3-dev pybind11-dev python3-numpy python3-matplotlib python3-pytest python3-pip \
                 python3-venv python3-setuptools python3-wheel ninja-build \
@@ -207,6 +207,7 @@ bench: build
 	$(BUILD)/bench/bench_cone
 	$(BUILD)/bench/bench_contact
 	$(BUILD)/bench/bench_python
+	$(BUILD)/bench/bench_stand
 
 clean:
 	rm -rf build out python/momentlab.egg-info

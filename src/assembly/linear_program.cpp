@@ -126,12 +126,10 @@ DoubleProgram guidance(const Scaled<Interval>& s, const std::vector<double>& cos
     return d;
 }
 
-// The basis's columns as intervals (artificials: sign * e_i), factored in interval arithmetic
-// along the pivots a double factorization of their midpoints chooses.
-std::optional<SparseLu<Interval>> interval_factor(const Scaled<Interval>& s, const Basis& basis) {
+// The basis's columns as intervals (artificials: sign * e_i).
+std::vector<SparseColumn<Interval>> basis_columns(const Scaled<Interval>& s, const Basis& basis) {
     const auto n = static_cast<std::uint32_t>(s.columns.size());
     std::vector<SparseColumn<Interval>> columns(s.rows);
-    std::vector<SparseColumn<double>> middles(s.rows);
     for (std::uint32_t p = 0; p < s.rows; ++p) {
         const std::uint32_t j = basis.basic[p];
         if (j < n) {
@@ -139,14 +137,35 @@ std::optional<SparseLu<Interval>> interval_factor(const Scaled<Interval>& s, con
         } else {
             columns[p].push_back({j - n, Interval(static_cast<double>(basis.artificial_sign[j - n]))});
         }
+    }
+    return columns;
+}
+
+std::vector<SparseColumn<double>> middles_of(const std::vector<SparseColumn<Interval>>& columns) {
+    std::vector<SparseColumn<double>> middles(columns.size());
+    for (std::size_t p = 0; p < columns.size(); ++p) {
         for (const SparseEntry<Interval>& e : columns[p]) middles[p].push_back({e.index, e.value.mid()});
     }
+    return middles;
+}
+
+// The basis factored in interval arithmetic along the pivots a double factorization of its
+// midpoints chooses. The widths grow with the elimination (the wrapping effect), so that on a
+// few hundred rows a pivot's interval often holds 0: then none.
+std::optional<SparseLu<Interval>> interval_factor(const Scaled<Interval>& s, const Basis& basis) {
+    const std::vector<SparseColumn<Interval>> columns = basis_columns(s, basis);
+    const std::vector<SparseColumn<double>> middles = middles_of(columns);
     SparseLu<double> guide;
     if (!guide.factor(middles)) return std::nullopt;
     SparseLu<Interval> lu;
     if (!lu.factor(columns, guide.pivots())) return std::nullopt;
     return lu;
 }
+
+Interval magnitude(const Interval& a) { return Interval(std::max(std::abs(a.lo), std::abs(a.hi))); }
+
+// The largest basis solved by preconditioning (its m x m approximate inverse is stored).
+constexpr std::uint32_t kPreconditionedRows = 2000;
 
 Interval dot(const std::vector<Interval>& y, const SparseColumn<Interval>& column) {
     Interval s(0.0);
@@ -155,11 +174,15 @@ Interval dot(const std::vector<Interval>& y, const SparseColumn<Interval>& colum
 }
 
 // Enclosures of every variable of the basis's point (the nonbasic ones at their bounds), or none
-// when an artificial is in the basis other than exactly 0 or the factorization fails.
-std::optional<std::vector<Interval>> enclose_point(const Scaled<Interval>& s, const SimplexResult& r) {
+// when an artificial is in the basis other than exactly 0 or the basis cannot be solved: by
+// interval elimination, or `preconditioned` (enclose_solution).
+std::optional<std::vector<Interval>> enclose_point(const Scaled<Interval>& s, const SimplexResult& r, bool preconditioned) {
     const auto n = static_cast<std::uint32_t>(s.columns.size());
-    const std::optional<SparseLu<Interval>> lu = interval_factor(s, r.basis);
-    if (!lu) return std::nullopt;
+    std::optional<SparseLu<Interval>> lu;
+    if (!preconditioned) {
+        lu = interval_factor(s, r.basis);
+        if (!lu) return std::nullopt;
+    }
     std::vector<Interval> values(n, Interval(0.0));
     std::vector<Interval> rhs = s.rhs;
     for (std::uint32_t j = 0; j < n; ++j) {
@@ -168,7 +191,14 @@ std::optional<std::vector<Interval>> enclose_point(const Scaled<Interval>& s, co
             for (const SparseEntry<Interval>& e : s.columns[j]) rhs[e.index] -= e.value * values[j];
         }
     }
-    const std::vector<Interval> xb = lu->solve(std::move(rhs));
+    std::vector<Interval> xb;
+    if (lu) {
+        xb = lu->solve(std::move(rhs));
+    } else if (auto solved = enclose_solution(basis_columns(s, r.basis), rhs)) {
+        xb = std::move(*solved);
+    } else {
+        return std::nullopt;
+    }
     for (std::uint32_t p = 0; p < s.rows; ++p) {
         const std::uint32_t j = r.basis.basic[p];
         if (j >= n) {
@@ -320,6 +350,63 @@ Program<T> restricted(const Program<T>& p, const std::vector<std::uint32_t>& row
 
 }  // namespace
 
+// Without interval elimination: R the inverse of B's midpoint in doubles (its columns
+// solved with a double LU), x~ = R mid(b); when alpha = ||I - R B|| < 1 (infinity norm, in
+// interval arithmetic), every such B is regular and ||x - x~|| <= ||R (b - B x~)|| / (1 - alpha),
+// since B^-1 = (R B)^-1 R and ||(R B)^-1|| <= 1 / (1 - alpha) (Rump, "Verification methods:
+// rigorous results using floating-point arithmetic", Acta Numerica 19, 2010, section 10).
+// O(m^2 + m nnz(B)) work and m^2 doubles.
+std::optional<std::vector<Interval>> enclose_solution(const std::vector<SparseColumn<Interval>>& columns,
+                                                      const std::vector<Interval>& rhs) {
+    const auto m = static_cast<std::uint32_t>(columns.size());
+    if (m == 0 || m > kPreconditionedRows) return std::nullopt;
+    SparseLu<double> lu;
+    if (!lu.factor(middles_of(columns))) return std::nullopt;
+    std::vector<double> r(static_cast<std::size_t>(m) * m);  // r[p m + i]: row p (a position), column i (a row of B)
+    for (std::uint32_t i = 0; i < m; ++i) {
+        std::vector<double> unit(m, 0.0);
+        unit[i] = 1.0;
+        const std::vector<double> column = lu.solve(std::move(unit));
+        for (std::uint32_t p = 0; p < m; ++p) r[static_cast<std::size_t>(p) * m + i] = column[p];
+    }
+    const auto at = [&](std::uint32_t p, std::uint32_t i) { return Interval(r[static_cast<std::size_t>(p) * m + i]); };
+    std::vector<Interval> row_sum(m, Interval(0.0));  // of |I - R B|
+    for (std::uint32_t q = 0; q < m; ++q) {
+        for (std::uint32_t p = 0; p < m; ++p) {
+            Interval c(p == q ? 1.0 : 0.0);
+            for (const SparseEntry<Interval>& e : columns[q]) c = c - at(p, e.index) * e.value;
+            row_sum[p] = row_sum[p] + magnitude(c);
+        }
+    }
+    double alpha = 0.0;  // (a NaN anywhere fails these comparisons: then none)
+    for (const Interval& v : row_sum) {
+        if (!(v.hi < 1.0)) return std::nullopt;
+        alpha = std::max(alpha, v.hi);
+    }
+    std::vector<double> middle(m);
+    for (std::uint32_t i = 0; i < m; ++i) middle[i] = rhs[i].mid();
+    const std::vector<double> x = lu.solve(std::move(middle));
+    if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) return std::nullopt;
+    std::vector<Interval> residual = rhs;  // b - B x~
+    for (std::uint32_t q = 0; q < m; ++q) {
+        for (const SparseEntry<Interval>& e : columns[q]) residual[e.index] = residual[e.index] - e.value * Interval(x[q]);
+    }
+    double beta = 0.0;  // ||R (b - B x~)||
+    for (std::uint32_t p = 0; p < m; ++p) {
+        Interval z(0.0);
+        for (std::uint32_t i = 0; i < m; ++i) z = z + at(p, i) * residual[i];
+        const double size = magnitude(z).hi;
+        if (!std::isfinite(size)) return std::nullopt;
+        beta = std::max(beta, size);
+    }
+    const Interval bound = Interval(beta) / (Interval(1.0) - Interval(alpha));
+    if (!std::isfinite(bound.hi)) return std::nullopt;
+    std::vector<Interval> out;
+    out.reserve(m);
+    for (std::uint32_t q = 0; q < m; ++q) out.push_back(Interval(x[q]) + Interval(-bound.hi, bound.hi));
+    return out;
+}
+
 LpCounts& lp_counts() {
     thread_local LpCounts counts;
     return counts;
@@ -364,9 +451,10 @@ FeasibilityAnswer decide(const Program<Interval>& enclosures, const ExactBuilder
         }
     } else if (r.status == SimplexStatus::Optimal) {
         const bool margin = !s.t || r.x[*s.t] > 1e-12;
-        if (margin) {
+        for (const bool preconditioned : {false, true}) {
+            if (!margin) break;
             // A point: every strict variable > 0, every other bounded one >= 0.
-            if (const auto v = enclose_point(s, r)) {
+            if (const auto v = enclose_point(s, r, preconditioned)) {
                 const Interval t = s.t ? (*v)[*s.t] : Interval(0.0);
                 bool holds = true;
                 for (std::uint32_t j = 0; j < enclosures.columns.size() && holds; ++j) {
@@ -382,7 +470,8 @@ FeasibilityAnswer decide(const Program<Interval>& enclosures, const ExactBuilder
                     return answer;
                 }
             }
-        } else if (homogeneous(s)) {
+        }
+        if (!margin && homogeneous(s)) {
             // max t <= y . b = 0 when every reduced cost has its sign (x = 0 is the point).
             if (const auto y = enclose_duals(s, r.basis, cost, 0.0)) {
                 bool holds = true;

@@ -11,14 +11,17 @@
 //      t maximised in [0, 1] (columns and rows scaled by powers of two, exactly);
 //   2. its answer certified in interval arithmetic: a point (the basis's solution with the
 //      nonbasic variables at their bounds: the equations hold exactly by construction, and the
-//      intervals show the signs), or a Farkas vector y (y = B^-T c_B: the intervals show the
-//      signs of y . A_j and y . b); a sign is read only from an interval that excludes 0;
+//      intervals show the signs; the basis solved by interval elimination, else enclosed by
+//      preconditioning, enclose_solution below), or a Farkas vector y (y = B^-T c_B: the
+//      intervals show the signs of y . A_j and y . b); a sign is read only from an interval
+//      that excludes 0;
 //   3. otherwise the exact simplex from that basis (exact_simplex.hpp), which decides and gives
 //      the exact point or y.
 // Every answer is exact for the numbers of the exact program; floating point only guides.
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -73,6 +76,13 @@ struct Optimum {
 /// simplex's basis confirmed or repaired by the exact simplex.
 [[nodiscard]] Optimum maximize(const Program<Interval>& enclosures, const ExactBuilder& exact,
                                const std::vector<std::pair<std::uint32_t, int>>& objective);
+
+/// An enclosure of the solution of B x = b for every square B (by columns) and b inside the
+/// intervals, or none when B cannot be shown regular this way (or has more than 2000 rows): the
+/// inverse of B's midpoint as a preconditioner and a norm bound on the error, without the
+/// growth of interval elimination. O(m^2 + m nnz(B)) time, m^2 doubles.
+[[nodiscard]] std::optional<std::vector<Interval>> enclose_solution(const std::vector<SparseColumn<Interval>>& columns,
+                                                                    const std::vector<Interval>& rhs);
 
 /// How the decisions went (for tests and benchmarks): those certified by the intervals, and
 /// those that took the exact simplex, since the thread started.

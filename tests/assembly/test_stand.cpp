@@ -12,6 +12,7 @@
 
 #include "../common/sizes.hpp"
 #include "assembly_oracle.hpp"
+#include "assembly_scenes.hpp"
 #include "momentlab/assembly/assembly_json.hpp"
 #include "momentlab/io/files.hpp"
 #include "momentlab/io/scene_json.hpp"
@@ -302,11 +303,11 @@ Generated random_contacts(Rng& r) {
     return g;
 }
 
-// The oracle's tilt cone against the library's: the same boundary rays, exactly.
-void expect_same_tilt(const assembly_oracle::QAssembly& q, const TiltCone& t, const std::string& what) {
-    using D = std::array<Q, 2>;
+// The oracle's tilt cone: whether some gravity stands, and its boundary rays (each once).
+using D = std::array<Q, 2>;
+std::vector<D> oracle_tilt_ends(const assembly_oracle::QAssembly& q, bool& feasible) {
     std::vector<D> ends;
-    bool feasible = false;
+    feasible = false;
     const int charts[4][2] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
     for (const auto& u : charts) {
         const assembly_oracle::Chart c = assembly_oracle::tilt_chart(q, u[0], u[1]);
@@ -317,6 +318,13 @@ void expect_same_tilt(const assembly_oracle::QAssembly& q, const TiltCone& t, co
             if (!known) ends.push_back(d);
         }
     }
+    return ends;
+}
+
+// The oracle's tilt cone against the library's: the same boundary rays, exactly.
+void expect_same_tilt(const assembly_oracle::QAssembly& q, const TiltCone& t, const std::string& what) {
+    bool feasible = false;
+    const std::vector<D> ends = oracle_tilt_ends(q, feasible);
     if (!feasible) {
         EXPECT_EQ(t.kind, TiltCone::Kind::Empty) << what;
         return;
@@ -392,6 +400,112 @@ TEST(StandOracle, RandomAssembliesAgreeWithExactOracle) {
         EXPECT_GT(stand_count, cases / 4);
         EXPECT_LT(stand_count, cases * 3 / 4);
     }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Arches and walls (the benchmark's scenes, assembly_scenes.hpp, small enough for the oracle):
+// can_stand and the tilt cone against the oracle. Boundaries: gravity along each end of the
+// oracle's tilt cone (integer vectors: only the direction matters); walls whose top brick
+// overhangs its support by exactly half its length, and walls tilted by gamma with friction
+// exactly gamma (each joint's resultant on the edge of its cone); each with a variant just
+// beyond (the brick 2^-20 further out, the friction 2^-30 less), which falls.
+
+// A rational direction as integers (exact doubles), when they fit in 53 bits.
+std::optional<Vec2> integer_direction(const D& d) {
+    const Q scale(mpz_class(d[0].get_den() * d[1].get_den()));
+    const Q x = d[0] * scale, y = d[1] * scale;
+    for (const Q& v : {x, y}) {
+        if (v.get_den() != 1 || mpz_sizeinbase(v.get_num().get_mpz_t(), 2) > 53) return std::nullopt;
+    }
+    return Vec2(x.get_d(), y.get_d());
+}
+
+TEST(StandOracle, ArchesAndWallsAgreeWithExactOracle) {
+    Rng r(1789);
+    int scenes = 0, decisions = 0, boundary = 0, stands = 0, at_tilt_ends = 0, overhangs = 0, thresholds = 0,
+        beyond = 0, skipped = 0;
+    const auto decide = [&](const Assembly& a, const assembly_oracle::QAssembly& q, const Vec2& g, bool on_boundary,
+                            const std::string& what) {
+        const bool expected = assembly_oracle::can_stand(q, Q(g.x()), Q(g.y()));
+        EXPECT_EQ(equilibrium(a, g).can_stand, expected) << what << ", gravity " << g.transpose();
+        ++decisions;
+        boundary += on_boundary;
+        stands += expected;
+        return expected;
+    };
+    const int count = sized(40);
+    for (int k = 0; k < count; ++k) {
+        Assembly a;
+        Vec2 gravity(0, -1);
+        std::string what;
+        int kind = -1;  // walls: 0 upright, 1 upright with the overhang, 2 tilted with friction gamma
+        if (k % 2 == 0) {
+            const int voussoirs = r.integer(2, 5);
+            const double thickness = r.pick(std::vector<double>{0.5, 1.0, 1.5}), mu = r.pick(std::vector<double>{0.25, 0.5, 1.0});
+            a = assembly_scenes::dyadic_arch(voussoirs, thickness, mu);
+            what = "arch of " + std::to_string(voussoirs) + ", thickness " + std::to_string(thickness) + ", mu " + std::to_string(mu);
+        } else {
+            const int per_row = r.integer(1, 3);
+            kind = r.integer(0, 2);
+            const double gamma = r.pick(std::vector<double>{0.125, 0.25});
+            const double mu = kind == 2 ? gamma : r.pick(std::vector<double>{0.25, 0.5});
+            // With the overhang, whole pairs of rows: the top brick is the last of an odd row.
+            const int bricks = kind == 1 ? 2 * per_row * r.integer(1, 2) : r.integer(2, 8);
+            a = assembly_scenes::running_bond_wall(bricks, per_row, mu, kind == 1, kind == 1 ? std::optional(0.0) : std::nullopt);
+            if (kind == 2) gravity = Vec2(gamma, -1);
+            what = "wall of " + std::to_string(bricks) + ", " + std::to_string(per_row) + " a row, kind " + std::to_string(kind);
+        }
+        // The scene's contacts are those where its polygons touch (in another order; the normals
+        // found are unit vectors, rounded: compared as directions to within rounding).
+        const std::vector<AssemblyContact> found = find_assembly_contacts(a.bodies, a.obstacles, {.distance = 1e-9});
+        ASSERT_EQ(found.size(), a.contacts.size()) << what;
+        for (const AssemblyContact& c : a.contacts) {
+            EXPECT_TRUE(std::any_of(found.begin(), found.end(), [&](const AssemblyContact& f) {
+                const Vec2 n = c.contact.normal.normalized(), m = f.contact.normal;
+                return f.a == c.a && f.b == c.b && f.contact.point == c.contact.point && std::abs(n.x() * m.y() - n.y() * m.x()) < 1e-12 &&
+                       n.dot(m) > 0;
+            })) << what << ": contact at " << c.contact.point.transpose();
+        }
+        const assembly_oracle::QAssembly q = assembly_oracle::exact(a);
+        const bool upright = decide(a, q, gravity, false, what);
+        if (kind == 1) {
+            ASSERT_TRUE(upright) << what;  // exactly on the boundary: it stands
+            ++overhangs;
+            ++boundary;
+            Assembly out = a;
+            out.bodies.back().com.x() += 0x1p-20;
+            EXPECT_FALSE(decide(out, assembly_oracle::exact(out), gravity, false, what + ", brick further out")) << what;
+            ++beyond;
+        }
+        if (kind == 2 && upright) {  // the friction at the threshold: on the boundary
+            ++thresholds;
+            ++boundary;
+            Assembly less = a;
+            for (AssemblyContact& c : less.contacts) c.contact.mu = c.contact.mu_kinetic = gravity.x() - 0x1p-30;
+            EXPECT_FALSE(decide(less, assembly_oracle::exact(less), gravity, false, what + ", less friction")) << what;
+            ++beyond;
+        }
+        expect_same_tilt(q, tilt_cone(a), what);
+        bool feasible = false;
+        for (const D& end : oracle_tilt_ends(q, feasible)) {
+            const std::optional<Vec2> g = integer_direction(end);
+            if (!g) {
+                ++skipped;
+                continue;
+            }
+            EXPECT_TRUE(decide(a, q, *g, true, what + ", at a tilt end")) << what;  // the cone is closed
+            ++at_tilt_ends;
+        }
+        ++scenes;
+    }
+    std::printf("arches and walls: %d scenes, %d can_stand decisions (%d exactly on a boundary: %d at tilt ends, %d overhangs, "
+                "%d friction thresholds; %d just beyond one), %d stand; %d tilt ends too large for doubles\n",
+                scenes, decisions, boundary, at_tilt_ends, overhangs, thresholds, beyond, stands, skipped);
+    EXPECT_GE(3 * boundary, decisions);
+    EXPECT_GE(at_tilt_ends, testing::floor_of(count / 2));
+    EXPECT_GE(overhangs, testing::floor_of(count / 40));
+    EXPECT_GE(thresholds, testing::floor_of(count / 40));
+    EXPECT_GE(decisions - stands, testing::floor_of(count / 8));  // some fall
 }
 
 // ---------------------------------------------------------------------------------------------
