@@ -53,7 +53,9 @@ TEST(StandPicture, HarmonicStackDrawsTheLoadAtTheFourOuterEnds) {
     const std::vector<std::pair<Vec2, double>> expected = {{Vec2(0, 0), 4}, {Vec2(3, 1), 3}, {Vec2(7, 2), 2}, {Vec2(13, 3), 1}};
     const double unit = (arrows[0].points[1] - arrows[0].points[0]).norm() /
                         std::find_if(expected.begin(), expected.end(), [&](const auto& e) { return e.first == arrows[0].points[0]; })->second;
-    for (const auto& [at, load] : expected) {
+    for (const auto& e : expected) {
+        const Vec2 at = e.first;
+        const double load = e.second;
         const auto arrow = std::find_if(arrows.begin(), arrows.end(), [&](const Shape& s) { return s.points[0] == at; });
         ASSERT_NE(arrow, arrows.end()) << at.transpose();
         const Vec2 d = arrow->points[1] - arrow->points[0];
