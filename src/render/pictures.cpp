@@ -367,11 +367,8 @@ Figure labels_figure(const std::string& title, const std::vector<ForcePanel>& pa
     return figure;
 }
 
-void add_scene(Panel& panel, const Scene& scene, SceneStyle style) {
-    const bool faint = style != SceneStyle::Full;
-    const Box v = scene_view(scene);
-    const double length = 0.16 * std::max(view_width(v), view_height(v));
-    for (const Polygon& o : scene.obstacles) {
+void add_obstacles(Panel& panel, const std::vector<Polygon>& obstacles, bool faint) {
+    for (const Polygon& o : obstacles) {
         Shape s;
         s.points = o;
         s.closed = true;
@@ -379,6 +376,13 @@ void add_scene(Panel& panel, const Scene& scene, SceneStyle style) {
         s.stroke = Stroke{palette::kObstacle, 1.0};
         panel.shapes.push_back(s);
     }
+}
+
+void add_scene(Panel& panel, const Scene& scene, SceneStyle style) {
+    const bool faint = style != SceneStyle::Full;
+    const Box v = scene_view(scene);
+    const double length = 0.16 * std::max(view_width(v), view_height(v));
+    add_obstacles(panel, scene.obstacles, faint);
     if (scene.body) {
         if (!scene.body->polygon.empty()) {
             Shape s;

@@ -31,14 +31,7 @@ Box assembly_view(const Assembly& a) {
 // Obstacles, bodies (outlined; `outlined` in ink), centres of mass and numbers, contacts.
 void add_assembly(Panel& panel, const Assembly& a, bool faint, std::optional<std::size_t> outlined = std::nullopt) {
     const double size = std::max(view_width(panel.view), view_height(panel.view));
-    for (const Polygon& o : a.obstacles) {
-        Shape s;
-        s.points = o;
-        s.closed = true;
-        s.fill = Fill{palette::kObstacle, faint ? 0.2 : 0.45};
-        s.stroke = Stroke{palette::kObstacle, 1.0};
-        panel.shapes.push_back(s);
-    }
+    add_obstacles(panel, a.obstacles, faint);
     for (std::size_t k = 0; k < a.bodies.size(); ++k) {
         const AssemblyBody& b = a.bodies[k];
         const bool own = outlined && *outlined == k;

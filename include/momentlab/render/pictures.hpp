@@ -54,6 +54,8 @@ enum class SceneStyle { Full, Faint, Outline };
 /// The scene (obstacles, body, centre of mass, contacts with their friction cones and names)
 /// drawn into `panel`.
 void add_scene(Panel& panel, const Scene& scene, SceneStyle style);
+/// The fixed polygons, filled (lighter when `faint`).
+void add_obstacles(Panel& panel, const std::vector<Polygon>& obstacles, bool faint);
 
 /// A view fitting the scene's body and contacts (or its obstacles when there is neither).
 [[nodiscard]] Box scene_view(const Scene& scene);
