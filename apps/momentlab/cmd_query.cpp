@@ -45,14 +45,6 @@ int run_push_line(const QueryOptions& o) {
                               {"direction", vector_json(at[1])},
                               {"fixed", vector_json(to_double(g))},
                               {"bands", to_json(bands, p.analysis())}};
-        // Where an end is not a double, its exact value too ("2943/1000": docs/formats.md).
-        for (std::size_t i = 0; i < bands.size(); ++i) {
-            const auto exact = [&](const Magnitude& m, const char* key) {
-                if (!(m.num == Dyadic(m.value()) * m.den)) out["bands"][i][key] = exact_text(m.num, m.den);
-            };
-            exact(bands[i].from, "from_exact");
-            if (bands[i].to) exact(*bands[i].to, "to_exact");
-        }
         std::cout << out.dump() << "\n";
         return 0;
     }

@@ -1,7 +1,6 @@
 // What the commands share (common.hpp).
 #include "common.hpp"
 
-#include <boost/multiprecision/cpp_int.hpp>
 
 #include "momentlab/core/rounding.hpp"
 
@@ -287,31 +286,6 @@ std::string fmt(const Vec2& v, int digits) { return "(" + fmt(v.x(), digits) + "
 
 std::string fmt(const Vec3& v, int digits) {
     return "(" + fmt(v.x(), digits) + ", " + fmt(v.y(), digits) + ", " + fmt(v.z(), digits) + ")";
-}
-
-namespace {
-
-using BigInteger = boost::multiprecision::cpp_int;
-
-// x = m 2^e as m and e (m an integer: its limbs).
-BigInteger integer_part(const Dyadic& x) {
-    BigInteger m = 0;
-    const auto limbs = x.limbs();
-    for (std::size_t i = limbs.size(); i-- > 0;) m = (m << 64) | BigInteger(limbs[i]);
-    return x.sign() == Sign::Negative ? BigInteger(-m) : m;
-}
-
-}  // namespace
-
-std::string exact_text(const Dyadic& num, const Dyadic& den) {
-    BigInteger p = integer_part(num), q = integer_part(den);
-    const std::int64_t e = num.binary_exponent() - den.binary_exponent();  // num / den = p / q 2^e
-    if (e > 0) p <<= static_cast<unsigned>(e);
-    if (e < 0) q <<= static_cast<unsigned>(-e);
-    if (q < 0) p = -p, q = -q;
-    const BigInteger g = boost::multiprecision::gcd(p, q);
-    if (g > 1) p /= g, q /= g;
-    return q == 1 ? p.str() : p.str() + "/" + q.str();
 }
 
 std::string fmt(const Dyadic& num, const Dyadic& den, int digits) {

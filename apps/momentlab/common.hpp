@@ -151,8 +151,6 @@ std::string fmt(const Vec3& v, int digits = 6);
 /// rounded (significant_digits, core/rounding.hpp); beyond the doubles an UnrepresentableError.
 std::string fmt(const Dyadic& num, const Dyadic& den, int digits = 6);
 std::string fmt(const Magnitude& m, int digits = 6);
-/// The exact quotient num / den in lowest terms: "2943/1000", "-2/3", "5" (den != 0).
-std::string exact_text(const Dyadic& num, const Dyadic& den);
 /// The homogeneous point (x, y, s), s != 0, as (x / s, y / s), each correctly rounded.
 std::string fmt_point(const ExactVector& homogeneous, int digits = 6);
 /// An angle in radians as degrees with two decimals and the degree sign.

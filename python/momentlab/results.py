@@ -277,7 +277,8 @@ class PushCase:
 class Band:
     """A band of magnitudes (N) of a push added to a fixed wrench (`momentlab query --push
     --json`, its "bands"): from from_ to to (math.inf for the last band), each end closed or
-    open, and the modes (sorted) and verdict all along it."""
+    open, and the modes (sorted) and verdict all along it. An end that is not exactly a double
+    also has its exact value, from_exact / to_exact (a Fraction; None otherwise)."""
 
     from_: float
     to: float
@@ -285,10 +286,13 @@ class Band:
     to_closed: bool
     modes: list
     verdict: str
+    from_exact: Optional[Fraction] = None
+    to_exact: Optional[Fraction] = None
 
     @classmethod
     def from_json(cls, doc: dict) -> "Band":
-        return _read(cls, doc, {"from_": float, "to": _distance, "modes": list})
+        return _read(cls, doc, {"from_": float, "to": _distance, "modes": list,
+                                "from_exact": Fraction, "to_exact": Fraction})
 
 
 @dataclass(frozen=True)

@@ -2,11 +2,22 @@
 
 #include <cmath>
 
+#include <boost/multiprecision/cpp_int.hpp>
+
 #include "momentlab/io/input_error.hpp"
 
 namespace momentlab {
 namespace {
 
+using BigInteger = boost::multiprecision::cpp_int;
+
+// x = m 2^e as m and e (m an integer: its limbs).
+BigInteger integer_part(const Dyadic& x) {
+    BigInteger m = 0;
+    const auto limbs = x.limbs();
+    for (std::size_t i = limbs.size(); i-- > 0;) m = (m << 64) | BigInteger(limbs[i]);
+    return x.sign() == Sign::Negative ? BigInteger(-m) : m;
+}
 
 template <class T>
 nlohmann::json list(const std::vector<T>& vs) {
@@ -88,8 +99,24 @@ nlohmann::json to_json(const std::vector<MagnitudeBand>& bands, std::span<const 
                        {"to_closed", b.to_closed},
                        {"modes", modes},
                        {"verdict", to_string(verdict_of(b.modes.size()))}});
+        const auto exact = [&](const Magnitude& m, const char* key) {
+            if (!(m.num == Dyadic(m.value()) * m.den)) out.back()[key] = exact_text(m.num, m.den);
+        };
+        exact(b.from, "from_exact");
+        if (b.to) exact(*b.to, "to_exact");
     }
     return out;
+}
+
+std::string exact_text(const Dyadic& num, const Dyadic& den) {
+    BigInteger p = integer_part(num), q = integer_part(den);
+    const std::int64_t e = num.binary_exponent() - den.binary_exponent();  // num / den = p / q 2^e
+    if (e > 0) p <<= static_cast<unsigned>(e);
+    if (e < 0) q <<= static_cast<unsigned>(-e);
+    if (q < 0) p = -p, q = -q;
+    const BigInteger g = boost::multiprecision::gcd(p, q);
+    if (g > 1) p /= g, q /= g;
+    return q == 1 ? p.str() : p.str() + "/" + q.str();
 }
 
 nlohmann::json to_json(const DirectionPlan& plan) {

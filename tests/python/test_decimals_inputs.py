@@ -247,3 +247,22 @@ def test_push_band_ends_give_their_exact_value(tmp_path):
             assert Fraction(text) != Fraction(value) and float(Fraction(text)) == value
     integer = cli("query", path, "--gravity", "0", "-10", "--push", "0", "0", "1", "0", "--json")["bands"]
     assert all("from_exact" not in b and "to_exact" not in b for b in integer if b["from"] in (0, 3))
+
+
+def test_python_push_line_bands_carry_the_exact_end(tmp_path):
+    """momentlab.push_line: mu = 0.3 read as typed, gravity the double nearest 9.81; the sliding
+    threshold is mu m g = (3/10) x 1 x double(9.81) exactly, which is not a double: the Band has it
+    as to_exact (a Fraction, computed here from the typed numbers), and .to is its rounding."""
+    import momentlab as ml
+    from test_decimals_oracle import THRESHOLDS, block
+
+    mu, m, h, _ = THRESHOLDS[0]
+    path = tmp_path / "block.json"
+    path.write_text(block(mu, m, h))
+    bands = ml.push_line(ml.Scene.from_file(path), (0, 0), (1, 0), gravity=(0, -9.81))
+    threshold = mu * m * Fraction(9.81)
+    assert float(threshold) != threshold
+    ends = [(b.to, b.to_exact) for b in bands] + [(b.from_, b.from_exact) for b in bands]
+    assert (float(threshold), threshold) in ends
+    for value, exact in ends:
+        assert exact is None or (exact != Fraction(value) and float(exact) == value)

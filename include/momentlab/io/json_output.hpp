@@ -3,6 +3,8 @@
 /// \file
 /// JSON views of cones and labels (the machine-readable output of the CLI).
 
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 #include "momentlab/geometry/cone.hpp"
@@ -48,7 +50,10 @@ namespace momentlab {
 /// {"inside": [d, ...], "to_other": d}: distances, "unbounded" for infinite ones (or no other set).
 [[nodiscard]] nlohmann::json to_json(const QueryMargins& margins);
 /// [{"from", "to", "from_closed", "to_closed", "modes": [letters], "verdict"}, ...]: the bands of
-/// magnitude_bands, "to" "unbounded" for the last.
+/// magnitude_bands, "to" "unbounded" for the last; an end that is not a double also as
+/// "from_exact" / "to_exact", its exact value in lowest terms ("2943/1000": docs/formats.md).
 [[nodiscard]] nlohmann::json to_json(const std::vector<MagnitudeBand>& bands, std::span<const ModeForces> analysis);
+/// The exact quotient num / den in lowest terms: "2943/1000", "-2/3", "5" (den != 0).
+[[nodiscard]] std::string exact_text(const Dyadic& num, const Dyadic& den);
 
 }  // namespace momentlab
