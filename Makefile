@@ -203,11 +203,15 @@ instructions: build
 	    $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq valgrind >/dev/null; }
 	bash tools/instructions.sh $(BUILD) build/degenerate
 
+# Every table of docs/benchmarks.md but the nearly degenerate scenes' (`make large-inputs`) and
+# the instruction counts (`make instructions`).
 bench: build
 	$(BUILD)/bench/bench_cone
 	$(BUILD)/bench/bench_contact
 	$(BUILD)/bench/bench_python
 	$(BUILD)/bench/bench_stand
+	@mkdir -p build/degenerate; for n in 1000 10000 100000; do [ -f build/degenerate/tangent_$$n.json ] || /usr/bin/python3 tools/families.py build/degenerate tangent $$n; done
+	$(BUILD)/bench/bench_io build/degenerate
 
 clean:
 	rm -rf build out python/momentlab.egg-info

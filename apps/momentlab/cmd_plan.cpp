@@ -15,12 +15,19 @@
 namespace momentlab::cli {
 namespace {
 
+// The finger's mu when --mu is not given.
+TypedNumber default_mu() {
+    TypedNumber mu;
+    mu.value = 0.5;
+    return mu;
+}
+
 struct PlanOptions {
     std::string file;
     std::string goal;
     bool json = false;
     PictureOptions picture;
-    double mu = 0.5;
+    TypedNumber mu = default_mu();  // exact as typed (0.1 is 1/10)
     std::optional<std::size_t> edge;
     std::optional<std::size_t> vertex;
     std::string slip;
@@ -223,7 +230,7 @@ int run_push(const PlanOptions& o) {
     TerminalProgress progress;
     Problem p = open_problem(o.file, o.quasi_static, progress);
     const Load load = load_of(o.gravity, o.fixed, o.forces);
-    PushRequest request{o.mu, o.ignore_interference, o.edge, o.vertex, std::nullopt};
+    PushRequest request{o.mu.rational(), o.ignore_interference, o.edge, o.vertex, std::nullopt};
     if (!o.slip.empty()) request.slip = contact_mode(o.slip[0]);
     const Scene& scene = p.scene();
     const std::vector<ModeForces>& analysis = p.analysis();
@@ -249,11 +256,11 @@ int run_push(const PlanOptions& o) {
     });
     if (o.json) {
         // The document as one nlohmann object would dump it: keys in order, "cases" first.
-        nlohmann::json rest = {{"goal", o.goal}, {"mu", o.mu}, {"interference", interference}};
+        nlohmann::json rest = {{"goal", o.goal}, {"mu", o.mu.value}, {"interference", interference}};
         if (fixed) rest["fixed"] = vector_json(to_double(*fixed));
         std::cout << "{\"cases\":[" << rows << "]," << rest.dump().substr(1) << "\n";
     } else {
-        std::cout << "pushing into mode " << o.goal << ": a point finger with mu = " << fmt(o.mu) << ", obstacles "
+        std::cout << "pushing into mode " << o.goal << ": a point finger with mu = " << fmt(o.mu.value) << ", obstacles "
                   << interference << "; " << feasible << " of " << count << " cases feasible\n";
         if (fixed) std::cout << "  with the fixed wrench " << fmt(to_double(*fixed)) << " (--gravity, --wrench) acting too\n";
         std::cout << "  " << std::left << std::setw(10) << "feature" << std::setw(6) << "slip" << std::setw(10) << "verdict";

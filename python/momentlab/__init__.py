@@ -472,6 +472,14 @@ def _number(x, what) -> float:
     return float(x)
 
 
+def _exact_number(x, what):
+    """A number with its exact meaning kept: a Fraction, a Decimal or a numeric string as it
+    reads (0.1 is 1/10), anything else as _number."""
+    if isinstance(x, (Fraction, Decimal, str)):
+        return x
+    return _number(x, what)
+
+
 def _analysis_of(what) -> Analysis:
     if isinstance(what, Analysis):
         return what
@@ -494,9 +502,9 @@ def plan_push(scene, goal: str, mu: float = 0.5, ignore_interference: bool = Fal
     """The pushing table for mode `goal`: one PushCase per feature (edge, vertex) and finger slip
     (l, f, r) with .verdict, .feasible, .touch, .directions (radians), .best, and whether the goal
     is .unique or .shared there, as the "cases" of `plan push --json` (docs/planning.md); mu is
-    the finger's friction. With `gravity` (GX, GY; m/s^2) and/or a fixed `wrench` acting besides
+    the finger's friction (a float its binary value; a Fraction, Decimal or string exactly). With `gravity` (GX, GY; m/s^2) and/or a fixed `wrench` acting besides
     the push: the pushes for which some magnitude works, with .best_magnitudes (N)."""
-    cases = _analysis_of(scene)._analysis.plan_push(_goal(goal), _number(mu, "mu"), bool(ignore_interference),
+    cases = _analysis_of(scene)._analysis.plan_push(_goal(goal), _exact_number(mu, "mu"), bool(ignore_interference),
                                                     gravity, wrench, _forces(forces))
     return [PushCase.from_json(c) for c in cases]
 

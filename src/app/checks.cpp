@@ -42,6 +42,12 @@ double checked_coefficient(double mu, const std::string& where) {
     return mu;
 }
 
+Rational checked_coefficient(const Rational& mu, const std::string& where) {
+    if (mu.sign() == Sign::Negative) (void)checked_coefficient(-1.0, where);
+    (void)checked_coefficient(mu.to_double(), where);
+    return mu;
+}
+
 double checked_length(double x, const std::string& where) {
     if (!(x > 0.0) || !std::isfinite(x) || !magnitude_in_range(x)) {
         throw InputError(where, "expected a length > 0, of magnitude " + std::string(kMagnitudeBounds));

@@ -178,7 +178,7 @@ DirectionPlan Problem::plan_tilt(const std::string& goal_letters, const Load& lo
 
 void Problem::plan_push(const std::string& goal_letters, const PushRequest& request, const Load& load,
                         const std::function<void(PushCase&&)>& each) {
-    const double mu = checked_coefficient(request.mu, names_.mu);
+    const Rational mu = checked_coefficient(request.mu, names_.mu);
     if (request.edge && request.vertex) throw InputError(names_.vertex, "give " + names_.edge + " or " + names_.vertex + ", not both");
     if (!scene_.body) throw missing_body("plan push needs its mass, com, inertia and polygon");
     const std::size_t n = scene_.body->polygon.size();

@@ -28,6 +28,10 @@ Exact2 friction_edge(const Exact2& n, double mu, bool left) {
 
 Exact2 friction_edge(const Vec2& normal, double mu, bool left) { return friction_edge(exact(normal), mu, left); }
 
+Exact2 friction_edge(const Exact2& n, const Rational& mu, bool left) {
+    return friction_direction(n[0], n[1], left ? mu.num() : -mu.num(), &mu.den());
+}
+
 std::array<ExactVector, 2> friction_cone_edges(const Vec2& point, const Vec2& normal, double mu) {
     // An edge whose direction is exactly doubles (axis-parallel normals, mu = 0) is kept as
     // ExactVector::wrench keeps it: no Dyadic numbers, and the predicates' filters for forces.

@@ -79,7 +79,7 @@ FreeParts free_parts(const Vec2& a, const Vec2& b, const std::vector<Polygon>& o
 // vertex) is split at the bisector, so that each part is convex. At a notch the sticking
 // finger touches both edges: the sum of their cones.
 std::vector<Cone> vertex_actions(const Vec2& v, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, ContactMode slip,
-                                 double mu, bool reflex) {
+                                 const Rational& mu, bool reflex) {
     if (reflex) {
         return {forces_across(v, v, {friction_edge(cw, mu, true), friction_edge(cw, mu, false),
                                      friction_edge(ccw, mu, true), friction_edge(ccw, mu, false)})};
@@ -124,7 +124,7 @@ Push representative(const PushFeature& f, const Cone& solutions) {
 namespace {
 
 // A finger's forces on the segment a-b with the exact inward normal `normal`.
-Cone edge_actions(const Vec2& a, const Vec2& b, const Exact2& normal, ContactMode slip, double mu) {
+Cone edge_actions(const Vec2& a, const Vec2& b, const Exact2& normal, ContactMode slip, const Rational& mu) {
     if (slip != ContactMode::Fixed) return forces_across(a, b, {friction_edge(normal, mu, opposing_friction(slip) > 0)});
     return forces_across(a, b, {friction_edge(normal, mu, true), friction_edge(normal, mu, false)});
 }
@@ -135,7 +135,7 @@ Cone push_actions(const Vec2& a, const Vec2& b, const Vec2& normal, ContactMode 
     if (slip == ContactMode::Separating) throw std::invalid_argument("push_actions: slip must be l, f or r");
     if (!(mu >= 0.0) || !std::isfinite(mu)) throw std::invalid_argument("push_actions: mu must be finite and >= 0");
     if (!normal.allFinite() || is_zero(normal)) throw std::invalid_argument("push_actions: the normal must be non-zero");
-    return edge_actions(a, b, exact(normal), slip, mu);
+    return edge_actions(a, b, exact(normal), slip, Rational(mu));
 }
 
 std::string PushFeature::name() const { return (kind == Kind::Edge ? "edge " : "vertex ") + std::to_string(index); }
@@ -157,7 +157,7 @@ namespace {
 
 // The pieces of one case on the given parts of its feature (parameters along an edge).
 std::vector<PushPiece> solve_pieces(const PushFeature& f, const Exact2& cw, const Exact2& ccw, const Exact2& bisector,
-                                    ContactMode slip, double mu,
+                                    ContactMode slip, const Rational& mu,
                                     const std::vector<std::pair<double, double>>& parts, const Cone& goal,
                                     const std::vector<Polygon>* obstacles, bool interior_possible) {
     std::vector<PushPiece> pieces;
@@ -297,7 +297,7 @@ void tell_uniqueness(PushCase& c, const std::vector<const PushPiece*>& shown, co
 
 thread_local std::size_t cases_solved = 0;
 
-PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, ContactMode slip, double mu,
+PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, ContactMode slip, const Rational& mu,
                     const std::optional<FreeParts>& free, const Cone& goal, const std::vector<Polygon>& obstacles,
                     const ModeForces& goal_mode, const PlanContext& context) {
     ++cases_solved;
@@ -364,7 +364,7 @@ std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, cons
 void plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options, const PlanContext& context,
                const std::function<void(PushCase&&)>& each) {
     if (!scene.body || scene.body->polygon.size() < 3) throw std::invalid_argument("plan_push: the body needs a polygon");
-    if (!(options.mu >= 0.0) || !std::isfinite(options.mu)) throw std::invalid_argument("plan_push: mu must be finite and >= 0");
+    if (options.mu.sign() == Sign::Negative) throw std::invalid_argument("plan_push: mu must be >= 0");
     const Polygon& poly = scene.body->polygon;
     const std::size_t n = poly.size();
     if (options.feature && options.feature->index >= n) {

@@ -1,8 +1,9 @@
 #pragma once
 
-// What the picture builders of src/render share (pictures.cpp, plan_pictures.cpp): marks, number
+// What the picture builders of src/render share (label_pictures.cpp, scene_pictures.cpp, plan_pictures.cpp): marks, number
 // formats and small shapes. Private to the render layer.
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -86,5 +87,16 @@ inline void set_caption(Panel& panel, const std::string& text) {
 /// the sets' corners near it by default), with the labels' and the scene's legend.
 Figure scene_sets_figure(const std::string& title, const Scene& scene, const std::vector<ForcePanel>& sets,
                          std::optional<Box> view);
+
+// Defined in label_pictures.cpp, used by the scene pictures too.
+// The part of the line p + s u inside the box (Liang-Barsky), if any.
+std::optional<std::array<Vec2, 2>> clip_line(const Vec2& p, const Vec2& u, const Box& box);
+// A region of labels: filled (interior), stroked (segment, ray, line) or a dot (point); edges cut
+// by the view are left open, with an arrow saying the region goes on.
+void draw_region(Panel& panel, const Region& region, const Colour& fill, const Colour& edge, double fill_alpha = 1.0);
+// Where a region's mark goes, with a page offset for regions without interior.
+Text mark_for(const Region& region, const Box& view, const std::string& text, const Colour& colour, double along = 0.8);
+// The points a force panel's view must hold.
+std::vector<Vec2> points_of(const ForcePanel& set);
 
 }  // namespace momentlab::render::drawing

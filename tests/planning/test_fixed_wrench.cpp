@@ -203,7 +203,7 @@ TEST(FixedWrench, PushPlanUnderGravityReportsMagnitudes) {
         }
         ASSERT_NE(m, nullptr);
         bool found = false;
-        for (const PushCase& c : plan_push(scene, *m, PushOptions{0.5, false}, context)) {
+        for (const PushCase& c : plan_push(scene, *m, PushOptions{Rational(0.5), false}, context)) {
             if (c.feature.kind != PushFeature::Kind::Edge || c.feature.index != 3 || c.slip != ContactMode::Fixed) continue;
             found = true;
             EXPECT_EQ(c.verdict, PushVerdict::Feasible) << goal;
@@ -252,7 +252,7 @@ TEST(FixedWrench, LowerDimensionalGoalsAreKnifeEdges) {
     ASSERT_TRUE(tilt.feasible());
     EXPECT_TRUE(tilt.knife_edge);
     EXPECT_EQ(tilt.margin, 0.0);
-    for (const PushCase& c : plan_push(scene, *ff, PushOptions{0.5, true}, context)) {
+    for (const PushCase& c : plan_push(scene, *ff, PushOptions{Rational(0.5), true}, context)) {
         EXPECT_NE(c.verdict, PushVerdict::Feasible) << c.feature.name() << " " << letter(c.slip);
     }
     const ComplyPlan comply = plan_comply(*ff, Vec2(0.5, 3.0), context);

@@ -66,7 +66,7 @@ TEST(Push, EdgeActionsAreTheSlipEdgesAtBothEnds) {
 // docs/planning.md; every row is checked: verdict, obstruction, touch segment and directions.
 TEST(Push, BlockAlongTheWallMatchesTheTwentyFourCasesDerivedByHand) {
     const Scene scene = testing::example_scene("figure-3-block-along-wall.json");
-    const std::vector<PushCase> cases = plan_push(scene, mode(analyze(scene), "rr"), PushOptions{0.5, false});
+    const std::vector<PushCase> cases = plan_push(scene, mode(analyze(scene), "rr"), PushOptions{Rational(0.5), false});
     std::ifstream in(MOMENTLAB_GOLDEN "/push-block-along-wall-rr.txt");
     ASSERT_TRUE(in) << "golden file missing";
     std::size_t k = 0;
@@ -107,8 +107,8 @@ TEST(Push, IgnoringInterferenceChangesNoVerdictOfTheBlockButMarksIt) {
     const Scene scene = testing::example_scene("figure-3-block-along-wall.json");
     const auto analysis = analyze(scene);
     const auto& rr = mode(analysis, "rr");
-    const auto with = plan_push(scene, rr, PushOptions{0.5, false});
-    const auto without = plan_push(scene, rr, PushOptions{0.5, true});
+    const auto with = plan_push(scene, rr, PushOptions{Rational(0.5), false});
+    const auto without = plan_push(scene, rr, PushOptions{Rational(0.5), true});
     ASSERT_EQ(with.size(), without.size());
     for (std::size_t i = 0; i < with.size(); ++i) {
         EXPECT_EQ(with[i].verdict, without[i].verdict) << with[i].feature.name() << " " << letter(with[i].slip);
@@ -130,7 +130,7 @@ TEST(Push, ObstaclesBlockSolutionsOrShortenTheTouchInterval) {
         throw std::logic_error("no case");
     };
     scene.obstacles.push_back({{-1, 0}, {0, 0}, {0, 0.5}, {-1, 0.5}});
-    auto cases = plan_push(scene, rr, PushOptions{0.5, false});
+    auto cases = plan_push(scene, rr, PushOptions{Rational(0.5), false});
     EXPECT_EQ(find(cases, "edge 3", 'l').verdict, PushVerdict::Blocked);
     EXPECT_EQ(find(cases, "edge 3", 'l').blocked, "all");
     EXPECT_EQ(find(cases, "vertex 3", 'f').verdict, PushVerdict::Blocked);
@@ -138,7 +138,7 @@ TEST(Push, ObstaclesBlockSolutionsOrShortenTheTouchInterval) {
     EXPECT_EQ(std::count_if(cases.begin(), cases.end(), [](const PushCase& c) { return c.feasible(); }), 0);
 
     scene.obstacles.back() = {{-1, 0}, {0, 0}, {0, 0.3}, {-1, 0.3}};
-    cases = plan_push(scene, rr, PushOptions{0.5, false});
+    cases = plan_push(scene, rr, PushOptions{Rational(0.5), false});
     const PushCase l = find(cases, "edge 3", 'l');
     EXPECT_EQ(l.verdict, PushVerdict::Feasible);
     EXPECT_EQ(l.blocked, "part");
@@ -187,7 +187,7 @@ TEST(Push, OneCaseAskedForIsTheTablesCase) {
     for (const bool with_modes : {false, true}) {
         PlanContext context;
         if (with_modes) context.modes = analysis;
-        const PushOptions all{0.5, false};
+        const PushOptions all{Rational(0.5), false};
         const std::vector<PushCase> table = plan_push(scene, rr, all, context);
         ASSERT_EQ(table.size(), 6 * n);
         std::vector<PushCase> streamed;
@@ -230,7 +230,7 @@ TEST(Push, OneCaseAskedForIsTheTablesCase) {
         ASSERT_EQ(three.size(), 3u);
         for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(three[k].verdict, table[3 * (n + 3) + k].verdict);
     }
-    PushOptions bad{0.5, false};
+    PushOptions bad{Rational(0.5), false};
     bad.feature = PushFeatureId{PushFeature::Kind::Edge, n};
     EXPECT_THROW((void)plan_push(scene, rr, bad), std::invalid_argument);
     bad.feature.reset();
@@ -263,7 +263,7 @@ TEST(Push, BestPushIsDeepInTheGoalsUniqueSet) {
         return d;
     };
     int checked = 0;
-    for (const PushCase& c : plan_push(scene, rr, PushOptions{mu, false}, context)) {
+    for (const PushCase& c : plan_push(scene, rr, PushOptions{Rational(mu), false}, context)) {
         if (c.verdict != PushVerdict::Feasible || !c.best_unique || c.feature.kind != PushFeature::Kind::Edge) continue;
         SCOPED_TRACE(c.feature.name() + " slip " + letter(c.slip));
         const std::optional<double> best = depth(c.best->point, c.best->direction);
@@ -310,7 +310,7 @@ TEST(Push, OneCaseAskedForSolvesOneCase) {
         EXPECT_EQ(given, push_cases_solved() - before);
         return push_cases_solved() - before;
     };
-    PushOptions one{0.5, false, PushFeatureId{PushFeature::Kind::Vertex, 5}, ContactMode::Fixed};
+    PushOptions one{Rational(0.5), false, PushFeatureId{PushFeature::Kind::Vertex, 5}, ContactMode::Fixed};
     EXPECT_EQ(solved(one), 1u);
     one.feature = PushFeatureId{PushFeature::Kind::Edge, n - 1};
     EXPECT_EQ(solved(one), 1u);
@@ -429,7 +429,7 @@ TEST(Push, EveryCaseAgreesWithPushesSampledFromTheDefinition) {
         for (const double mu : {0.0, 0.5, 1.5}) {
             for (const ModeForces& goal : analyze(scene)) {
                 const Cone& e = goal.applied;
-                for (const PushCase& c : plan_push(scene, goal, PushOptions{mu, true})) {
+                for (const PushCase& c : plan_push(scene, goal, PushOptions{Rational(mu), true})) {
                     SCOPED_TRACE(name + " mode " + goal.mode.letters + " " + c.feature.name() + " slip " + letter(c.slip) +
                                  " mu " + std::to_string(mu));
                     if (c.feature.reflex) continue;

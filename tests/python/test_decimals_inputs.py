@@ -266,3 +266,47 @@ def test_python_push_line_bands_carry_the_exact_end(tmp_path):
     assert (float(threshold), threshold) in ends
     for value, exact in ends:
         assert exact is None or (exact != Fraction(value) and float(exact) == value)
+
+
+FLOOR_BLOCK = """{"body": {"mass": 1, "com": [1, 0.5], "inertia": 0.5, "polygon": [[0, 0], [2, 0], [2, 1], [0, 1]]},
+ "contacts": [{"point": [0, 0], "normal": [0, 1], "mu": 0.1}, {"point": [2, 0], "normal": [0, 1], "mu": 0.1}]}"""
+# The exact decimal of the double nearest 0.1: a finger mu a hair above the floor's 1/10.
+DOUBLE_OF_TENTH = format(Fraction(0.1).numerator / Fraction(0.1).denominator, ".60f").rstrip("0")
+
+
+def sliding_finger_on_top(cases):
+    """The cases of the top edge (edge 2, from (2, 1) to (0, 1)) with a sliding finger (l, r)."""
+    return {c["slip"]: c for c in cases if c["feature"] == "edge 2" and c["slip"] in ("l", "r")}
+
+
+def test_plan_push_reads_the_finger_mu_as_typed(tmp_path):
+    """plan push --mu: a finger sliding on the top of a block whose floor has mu = 0.1 pushes along
+    n -+ mu_p t, (-+mu_p, -1). The floor holds it (goal ff: zero acceleration, contact forces in
+    their cones) exactly when mu_p <= 1/10 and its line meets the floor in [0, 2] (by hand). Typed
+    0.1, mu_p is 1/10: the push is on the edge of the floor's cones, verdict "boundary", from every
+    touch point x with x -+ 1/10 in [0, 2] (slip l: (2, 1) to (0.1, 1)). The double nearest 0.1 is
+    1/10 + 5.55e-18: verdict "no"."""
+    path = tmp_path / "block.json"
+    path.write_text(FLOOR_BLOCK)
+    assert Fraction(DOUBLE_OF_TENTH) == Fraction(0.1) and Fraction(0.1) > Fraction(1, 10)
+    typed = sliding_finger_on_top(cli("plan", "push", path, "--goal", "ff", "--mu", "0.1", "--json")["cases"])
+    assert {k: c["verdict"] for k, c in typed.items()} == {"l": "boundary", "r": "boundary"}, typed
+    assert typed["l"]["touch"] == [[[2, 1], [pytest.approx(0.1, abs=1e-15), 1]]]
+    assert typed["r"]["touch"] == [[[pytest.approx(1.9, abs=1e-15), 1], [0, 1]]]
+    double = sliding_finger_on_top(cli("plan", "push", path, "--goal", "ff", "--mu", DOUBLE_OF_TENTH, "--json")["cases"])
+    assert {k: c["verdict"] for k, c in double.items()} == {"l": "no", "r": "no"}, double
+
+
+def test_python_plan_push_mu_exact_or_binary(tmp_path):
+    """momentlab.plan_push: mu as a string, Fraction or Decimal is read exactly (1/10: "boundary"
+    for a sliding finger on the top, as above); mu as the float 0.1 is the double ("no")."""
+    import decimal
+    import momentlab as ml
+
+    path = tmp_path / "block.json"
+    path.write_text(FLOOR_BLOCK)
+    scene = ml.Scene.from_file(path)
+    top = lambda cases: sorted(c.verdict for c in cases if c.feature == "edge 2" and c.slip in "lr")
+    for mu in ("0.1", Fraction(1, 10), decimal.Decimal("0.1")):
+        assert top(ml.plan_push(scene, "ff", mu=mu)) == ["boundary", "boundary"], mu
+    assert top(ml.plan_push(scene, "ff", mu=0.1)) == ["no", "no"]

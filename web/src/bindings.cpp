@@ -172,7 +172,7 @@ public:
                                         const std::string& slip, const std::string& load_text) {
         return guarded([&] {
             const Load load = load_of(load_text);
-            PushRequest request{mu, ignore_interference, std::nullopt, std::nullopt, std::nullopt};
+            PushRequest request{Rational(checked_coefficient(mu, "mu")), ignore_interference, std::nullopt, std::nullopt, std::nullopt};
             if (edge >= 0) request.edge = static_cast<std::size_t>(edge);
             if (vertex >= 0) request.vertex = static_cast<std::size_t>(vertex);
             if (!slip.empty()) request.slip = contact_mode(slip[0]);

@@ -9,6 +9,7 @@
 
 #include <string>
 
+#include "momentlab/core/rational.hpp"
 #include "momentlab/core/vec.hpp"
 #include "momentlab/geometry/labels.hpp"
 #include "momentlab/io/input_error.hpp"
@@ -25,6 +26,8 @@ namespace momentlab {
 [[nodiscard]] Vec2 checked_direction(const Vec2& d, const std::string& where);
 /// A friction coefficient: a number >= 0.
 [[nodiscard]] double checked_coefficient(double mu, const std::string& where);
+/// The same for an exact mu (a decimal as typed): its rounding checked.
+[[nodiscard]] Rational checked_coefficient(const Rational& mu, const std::string& where);
 /// A length: a number > 0.
 [[nodiscard]] double checked_length(double x, const std::string& where);
 /// A view box (xmin, ymin, xmax, ymax): finite, xmin < xmax and ymin < ymax, its larger side of

@@ -51,7 +51,7 @@ struct Load {
 /// A push plan's request: the finger's mu, obstacles ignored or not, and, when given, one feature
 /// (an edge or a vertex of the body's outline) and one finger slip.
 struct PushRequest {
-    double mu = 0.5;
+    Rational mu = Rational(0.5);  ///< exact, as typed
     bool ignore_interference = false;
     std::optional<std::size_t> edge, vertex;
     std::optional<ContactMode> slip;

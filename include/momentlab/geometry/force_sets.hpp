@@ -7,6 +7,7 @@
 #include <array>
 #include <vector>
 
+#include "momentlab/core/rational.hpp"
 #include "momentlab/core/vec.hpp"
 #include "momentlab/geometry/cone.hpp"
 
@@ -40,6 +41,8 @@ template <class N>
 /// opposing sliding along -t) or n - mu t, t = (n.y, -n.x); exact.
 [[nodiscard]] Exact2 friction_edge(const Exact2& normal, double mu, bool left);
 [[nodiscard]] Exact2 friction_edge(const Vec2& normal, double mu, bool left);
+/// The same for an exact mu = num / den (a decimal as typed): den n + num t or den n - num t.
+[[nodiscard]] Exact2 friction_edge(const Exact2& normal, const Rational& mu, bool left);
 
 /// The Coulomb friction cone of a point contact (Figure 1c): forces n + s t with |s| <= mu,
 /// t = (n.y, -n.x), acting at `point`; `normal` points into the body and need not be unit.

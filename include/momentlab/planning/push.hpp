@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "momentlab/core/rational.hpp"
 #include "momentlab/geometry/cone.hpp"
 #include "momentlab/mechanics/analysis.hpp"
 #include "momentlab/mechanics/modes.hpp"
@@ -126,7 +127,9 @@ struct PushFeatureId {
 
 /// Options of plan_push.
 struct PushOptions {
-    double mu = 0.5;  ///< the finger's friction coefficient (>= 0)
+    /// The finger's friction coefficient (>= 0), exact: a decimal as typed keeps its meaning
+    /// (0.1 is 1/10); Rational(x) for a double x.
+    Rational mu = Rational(0.5);
     /// Ignore obstacles (as the paper does for Figure 6); otherwise a point of a feature lying
     /// in a closed obstacle polygon cannot be touched by the (point) finger.
     bool ignore_interference = false;
@@ -140,7 +143,7 @@ struct PushOptions {
 /// that order: 6 n cases for n vertices, or those of `options.feature` and `options.slip`. The
 /// cases chosen cost O(n) together (the polygon's orientation) plus each its own solution
 /// (docs/reliability.md, "Large inputs": one case of a 10^5-gon in the time of its analysis).
-/// Throws std::invalid_argument if the scene has no body polygon, mu is negative or not finite,
+/// Throws std::invalid_argument if the scene has no body polygon, mu is negative,
 /// the feature's index is not one of the polygon's, or the slip is s.
 [[nodiscard]] std::vector<PushCase> plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& options = {});
 
