@@ -211,7 +211,8 @@ bench: build
 	$(BUILD)/bench/bench_python
 	$(BUILD)/bench/bench_stand
 	@mkdir -p build/degenerate; for n in 1000 10000 100000; do [ -f build/degenerate/tangent_$$n.json ] || /usr/bin/python3 tools/families.py build/degenerate tangent $$n; done
-	$(BUILD)/bench/bench_io build/degenerate
+	GLIBC_TUNABLES=glibc.malloc.hugetlb=1:glibc.malloc.top_pad=268435456:glibc.malloc.trim_threshold=1073741824 \
+	    $(BUILD)/bench/bench_io build/degenerate  # the command's malloc settings for big files (apps/momentlab/main.cpp)
 
 clean:
 	rm -rf build out python/momentlab.egg-info

@@ -124,7 +124,7 @@ void BM_lemke(benchmark::State& state) {
 }
 BENCHMARK(BM_lemke)->DenseRange(2, 8, 2);
 
-// A new scene every time (docs/benchmarks.md, "A new scene"): a pool of 512 random scenes with
+// A new scene every time (docs/benchmarks.md, "Questions about a scene"): a pool of 512 random scenes with
 // one wrench each, taken in turn, so nothing about a scene is cached or reused. momentlab: every
 // mode with its sets (analyze), then the modes whose E holds the wrench (query, exact).
 constexpr int kPool = 512;

@@ -203,9 +203,8 @@ int main(int argc, char** argv) {
         }
         std::ostringstream s;
         s << in.rdbuf();
-        std::string text;
-        text.reserve(s.str().size() + simdjson::SIMDJSON_PADDING);  // simdjson reads past the end
-        text = s.str();
+        std::string text = s.str();
+        text.reserve(text.size() + simdjson::SIMDJSON_PADDING);  // simdjson reads past the end
         texts.push_back(std::move(text));
     }
     for (const auto& [name, reader] : momentlab::readers()) {

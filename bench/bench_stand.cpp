@@ -84,7 +84,9 @@ glp_prob* glpk_equilibrium(const Assembly& a, const Vec2& g) {
         }
     }
     glp_load_matrix(p, static_cast<int>(ia.size()) - 1, ia.data(), ja.data(), ar.data());
+    glp_term_out(GLP_OFF);  // glp_scale_prob reports its scaling on the terminal otherwise
     glp_scale_prob(p, GLP_SF_AUTO);
+    glp_term_out(GLP_ON);
     return p;
 }
 

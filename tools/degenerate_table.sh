@@ -63,7 +63,7 @@ row() {  # label, then the command; prints time, peak memory and the size of the
     [[ $modes == - ]] && letters=- || letters=$(( modes * contacts ))
     printf "%-44s %10.2f %12.1f %10s %14s\n" "$label" "$secs" "$(echo "$kb / 1024" | bc -l)" "$modes" "$letters"
 }
-for f in bowl bowl-exact; do
+for f in bowl bowl-exact bowl-near; do
     need $f 100000
     contacts=100000 count=analyze row "$f, 10^5 contacts, analyze --json" "$bin" analyze "$dir/${f}_100000.json" --json
 done
@@ -74,7 +74,7 @@ for f in collinear cradle tangent; do
     done
 done
 # One query: `modes` and `letters` are the answer's (the modes the wrench gives).
-for f in bowl bowl-exact; do
+for f in bowl bowl-exact bowl-near; do
     contacts=100000 count=query row "$f, 10^5 contacts, one query" "$bin" query "$dir/${f}_100000.json" --wrench 0.1 1 0.2 --json
 done
 for f in cradle tangent; do

@@ -46,7 +46,7 @@ int finish(int status) {
 
 // For a big input (an argument naming a file of 1 MB or more: a scene of about 10^4 contacts),
 // glibc's malloc is asked to back its memory with transparent huge pages and to keep what it
-// frees (docs/benchmarks.md, "Memory"): on the bowl of 10^5 contacts `analyze --json` touches
+// frees (docs/benchmarks.md, "Reading scene files"): on the bowl of 10^5 contacts `analyze --json` touches
 // about 340 MB, and a page touched the first time costs a page fault. glibc reads these settings
 // (GLIBC_TUNABLES) only when a program starts, so the command starts itself again once with
 // them added to any the caller set; a caller who set glibc.malloc.hugetlb is left alone, and
