@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "momentlab/io/scene_json.hpp"
+#include "momentlab/mechanics/advanced.hpp"
 
 namespace momentlab {
 namespace {
@@ -97,18 +98,9 @@ std::optional<Exact3> Problem::fixed_wrench(const Load& load) const {
 QueryAnswer Problem::query(const Load& load) {
     const std::optional<Rational3> w = wrench_of(load);
     if (!w) throw InputError(names_.wrench, "expected the applied wrench (or gravity, or forces at points)");
-    const Exact3 e = cleared(*w);
-    if (fits_doubles(e)) {
-        require_body(scene_, "query", AnalysisOptions{quasi_static_});
-        return momentlab::query(scene_, to_double(e), AnalysisOptions{quasi_static_, progress_});
-    }
-    const std::vector<ModeForces>& a = analysis("query");
-    const ExactVector v = ExactVector::from_exact(e);
-    std::vector<std::size_t> modes;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        if (a[i].applied.has(v)) modes.push_back(i);
-    }
-    return answer_of(a, std::move(modes));
+    require_body(scene_, "query", AnalysisOptions{quasi_static_});
+    // (a wrench beyond doubles is walked exactly too: no analysis of the scene)
+    return momentlab::query(scene_, cleared(*w), AnalysisOptions{quasi_static_, progress_});
 }
 
 MarginAnswer Problem::margins(const Load& load) {

@@ -16,9 +16,8 @@ namespace {
 // facet i is r_i x r_{i+1} (pointed_from_cycle), so w is in the cone when no det(r_i, r_{i+1}, w)
 // is negative. from[i] is g[i]'s index among the caller's generators (empty: the same).
 Held held_by_cycle(std::span<const ExactVector> g, std::span<const std::size_t> from, std::span<const int> c,
-                   const Vec3& wrench) {
+                   const ExactVector& w) {
     const auto origin = [&](int i) { return from.empty() ? static_cast<std::size_t>(i) : from[static_cast<std::size_t>(i)]; };
-    const ExactVector w = ExactVector::input(wrench);
     Held out;
     const std::size_t k = c.size();
     const auto ray = [&](std::size_t i) -> const ExactVector& { return g[static_cast<std::size_t>(c[i % k])]; };
@@ -71,17 +70,28 @@ void held_form(std::span<const ExactVector> g, std::vector<int>& cycle, std::opt
 
 // w against that form of cone(g), with a certificate.
 Held held_by(std::span<const ExactVector> g, std::span<const std::size_t> from, std::span<const int> cycle,
-             const std::optional<Cone>& cone, const Vec3& wrench) {
+             const std::optional<Cone>& cone, const ExactVector& wrench) {
     Held out;
     if (g.empty()) {  // {0}
         out.member = is_zero(wrench);
-        if (!out.member) out.separator = ExactVector::input(wrench).negated();
+        if (!out.member) out.separator = wrench.negated();
         return out;
     }
-    if (cone) {
-        Membership m = cone->contains(wrench);
-        out.member = m.member;
-        if (!m.member) out.separator = std::move(m.separator);
+    if (cone) {  // as Cone::contains decides, for an exact w: an equation or facet that separates
+        for (const ExactVector& e : cone->equations()) {
+            const Sign s = dot_sign(e, wrench);
+            if (s != Sign::Zero) {
+                out.separator = s == Sign::Positive ? e.negated() : e;
+                return out;
+            }
+        }
+        for (const ExactVector& f : cone->facets()) {
+            if (dot_sign(f, wrench) == Sign::Negative) {
+                out.separator = f;
+                return out;
+            }
+        }
+        out.member = true;
         return out;
     }
     return held_by_cycle(g, from, cycle, wrench);
@@ -90,6 +100,10 @@ Held held_by(std::span<const ExactVector> g, std::span<const std::size_t> from, 
 }  // namespace
 
 Held cone_holds(std::span<const ExactVector> generators, const Vec3& wrench) {
+    return cone_holds(generators, ExactVector::input(wrench));
+}
+
+Held cone_holds(std::span<const ExactVector> generators, const ExactVector& wrench) {
     // The nonzero generators, and where each came from; copied only when some are zero.
     std::span<const ExactVector> g = generators;
     std::vector<ExactVector> nonzero;
@@ -110,6 +124,6 @@ HeldCone::HeldCone(std::vector<ExactVector> generators) : generators_(std::move(
     held_form(generators_, cycle_, cone_);
 }
 
-Held HeldCone::holds(const Vec3& wrench) const { return held_by(generators_, from_, cycle_, cone_, wrench); }
+Held HeldCone::holds(const ExactVector& wrench) const { return held_by(generators_, from_, cycle_, cone_, wrench); }
 
 }  // namespace momentlab

@@ -29,6 +29,7 @@ struct Held {
     std::optional<std::array<std::size_t, 3>> triangle;
 };
 [[nodiscard]] Held cone_holds(std::span<const ExactVector> generators, const Vec3& w);
+[[nodiscard]] Held cone_holds(std::span<const ExactVector> generators, const ExactVector& w);
 
 /// cone(generators) kept for membership tests of many wrenches, found once as cone_holds finds
 /// it: a pointed full-dimensional cone as its extreme rays in cyclic order (no facets built),
@@ -36,7 +37,8 @@ struct Held {
 class HeldCone {
 public:
     explicit HeldCone(std::vector<ExactVector> generators);
-    [[nodiscard]] Held holds(const Vec3& w) const;
+    [[nodiscard]] Held holds(const ExactVector& w) const;
+    [[nodiscard]] Held holds(const Vec3& w) const { return holds(ExactVector::input(w)); }
 
 private:
     std::vector<ExactVector> generators_;  // the non-zero generators

@@ -77,13 +77,13 @@ bool Decider::has_piece(const Piece& p) const {
 }
 
 bool Decider::decide() {
-    if (is_zero(e_)) return true;  // in every closed cone
+    if (is_zero(wrench_)) return true;  // in every closed cone
     if (cell_->closed.empty()) {
         // The interior of a full-dimensional A, where no contact touches: E = M A, and e is in
         // it when adj(M) e is in A (M is positive definite: adj(M) = det(M) M^-1, det > 0).
         // Quasi-static, E = {0}.
         current_valid_ = false;
-        return m_ && a_.has(ExactVector::from_exact(adjugate_times(*m_, exact(e_))));
+        return m_ && a_.has(ExactVector::from_exact(adjugate_times(*m_, wrench_.exact())));
     }
     const auto inside = std::find_if(triangles_.begin(), triangles_.end(), [&](const std::array<Piece, 3>& t) {
         return has_piece(t[0]) && has_piece(t[1]) && has_piece(t[2]);
@@ -370,7 +370,7 @@ bool Decider::build() {
     for (const Generator& g : generators_) generators.push_back(g.negate ? g.vector->negated() : *g.vector);
     // Its facets are not built: only the one that separates, if any (cone_holds).
     tested_ += generators.size();
-    const Held held = cone_holds(generators, e_);
+    const Held held = cone_holds(generators, wrench_);
     if (held.member) {
         if (held.triangle) remember_triangle(*held.triangle, generators);
         return true;

@@ -40,8 +40,10 @@ namespace momentlab::detail {
 // facets), which gives the next certificate.
 class Decider {
 public:
-    Decider(const Cone& a, const std::optional<ExactMatrix>& m, const FrictionEdges& edges, const Vec3& e)
-        : a_(a), m_(m), edges_(edges), e_(e), wrench_(ExactVector::input(e)) {}
+    // e exact (a decimal wrench need not be doubles); e_ its rounding, for the wide plane's
+    // guess only (every plane is then checked against e exactly).
+    Decider(const Cone& a, const std::optional<ExactMatrix>& m, const FrictionEdges& edges, const ExactVector& e)
+        : a_(a), m_(m), edges_(edges), e_(e.value()), wrench_(e) {}
 
     [[nodiscard]] std::size_t built() const { return built_; }
     [[nodiscard]] std::size_t tested() const { return tested_; }

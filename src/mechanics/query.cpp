@@ -40,6 +40,13 @@ QueryAnswer query(const Scene& scene, const Vec3& e, const AnalysisOptions& opti
     return detail::canonical(query_scene(scene, e, options, &diagnostics));
 }
 
+QueryAnswer query(const Scene& scene, const Exact3& e, const AnalysisOptions& options) {
+    if (e[0].fits_double() && e[1].fits_double() && e[2].fits_double()) return query(scene, to_double(e), options);
+    if (!options.quasi_static) detail::check_body(scene, "query");
+    detail::check_contacts(scene.contacts);
+    return detail::canonical(query_scene(scene, e, options));
+}
+
 QueryAnswer query(const Scene& scene, const Vec3& e, const AnalysisOptions& options) {
     QueryDiagnostics diagnostics;
     return query(scene, e, options, diagnostics);

@@ -99,14 +99,14 @@ namespace {
 // its answers' letters only one answer at a time.
 class Batch {
 public:
-    Batch(SceneQuestions::State& s, std::span<const Vec3> wrenches)
+    Batch(SceneQuestions::State& s, std::span<const ExactVector> wrenches)
         : s_(s), wrenches_(wrenches), n_(s.n), q_(wrenches.size()),
           parts_(s.n >= detail::kTwoThreadContacts ? std::clamp<std::size_t>(s.walk.faces(), 1, kWalkParts) : 1),
           counts_(s.walk.faces()), everyone_(s.n), fixed_letters_(s.n, letter(ContactMode::Fixed)), fixed_holds_(q_, 0),
           closure_known_(s.fixed_closure != nullptr), caller_(std::this_thread::get_id()) {
         std::iota(everyone_.begin(), everyone_.end(), 0);
         fixed_deciders_.reserve(q_);
-        for (const Vec3& e : wrenches) fixed_deciders_.emplace_back(s.walk.feasible_twists(), s.m, s.edges, e);
+        for (const ExactVector& e : wrenches) fixed_deciders_.emplace_back(s.walk.feasible_twists(), s.m, s.edges, e);
     }
 
     // Tasks: 0 the all-f mode, 1 .. parts() the walk's parts.
@@ -178,7 +178,7 @@ private:
         Part& part = parts_[p];
         std::vector<Decider> deciders;
         deciders.reserve(q_);
-        for (const Vec3& e : wrenches_) deciders.emplace_back(walk.feasible_twists(), s_.m, s_.edges, e);
+        for (const ExactVector& e : wrenches_) deciders.emplace_back(walk.feasible_twists(), s_.m, s_.edges, e);
         part.members.resize(q_);
         TwistFilters filters;
         GroupedEdges groups(s_.edges);
@@ -337,7 +337,7 @@ private:
     }
 
     SceneQuestions::State& s_;
-    std::span<const Vec3> wrenches_;
+    std::span<const ExactVector> wrenches_;
     std::size_t n_, q_;
     std::vector<Part> parts_;
     std::atomic<std::size_t> faces_done_{0};
@@ -379,11 +379,28 @@ std::vector<SceneAnswer> SceneQuestions::answer(std::span<const Vec3> wrenches, 
     return answers;
 }
 
+SceneAnswer SceneQuestions::answer(const Exact3& e, QueryDiagnostics* diagnostics) {
+    std::vector<QueryDiagnostics> d;
+    const ExactVector w = ExactVector::from_exact(e);
+    std::optional<SceneAnswer> a;
+    answer_exact(std::span<const ExactVector>(&w, 1), [&](SceneAnswer&& x) { a = std::move(x); }, diagnostics ? &d : nullptr);
+    if (diagnostics) *diagnostics = d.front();
+    return std::move(*a);
+}
+
 void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<void(SceneAnswer&&)>& take,
                             std::vector<QueryDiagnostics>* diagnostics) {
     for (const Vec3& e : wrenches) {
         if (!e.allFinite()) throw std::invalid_argument("query_scene: the wrench must be finite");
     }
+    std::vector<ExactVector> exact;
+    exact.reserve(wrenches.size());
+    for (const Vec3& e : wrenches) exact.push_back(ExactVector::input(e));
+    answer_exact(exact, take, diagnostics);
+}
+
+void SceneQuestions::answer_exact(std::span<const ExactVector> wrenches, const std::function<void(SceneAnswer&&)>& take,
+                                  std::vector<QueryDiagnostics>* diagnostics) {
     Batch batch(*state_, wrenches);
     detail::for_each_index(batch.tasks(), state_->n >= detail::kTwoThreadContacts, [&](std::size_t task) { batch.run(task); });
     batch.finish(take, diagnostics);
@@ -391,6 +408,10 @@ void SceneQuestions::answer(std::span<const Vec3> wrenches, const std::function<
 
 SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions& options, QueryDiagnostics* diagnostics) {
     if (!e.allFinite()) throw std::invalid_argument("query_scene: the wrench must be finite");
+    return SceneQuestions(scene, options).answer(e, diagnostics);
+}
+
+SceneAnswer query_scene(const Scene& scene, const Exact3& e, const AnalysisOptions& options, QueryDiagnostics* diagnostics) {
     return SceneQuestions(scene, options).answer(e, diagnostics);
 }
 

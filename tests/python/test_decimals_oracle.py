@@ -223,3 +223,73 @@ def test_python_scene_of_decimals_and_fractions():
     assert set(ml.query(scene, [0, 0, 1]).modes) == oracle.query(doc, [0, 0, 1])
     with pytest.raises(ValueError, match="not a decimal"):
         ml.Scene(body=exact_doc["body"], contacts=[{"point": [Fraction(1, 3), 0], "normal": [0, 1]}])
+
+
+def odd_part_beyond_doubles(w):
+    """True when no positive multiple of the rational vector w is three doubles: w cleared to
+    coprime integers has a component whose odd part needs more than 53 bits."""
+    from math import gcd, lcm
+    den = lcm(*(Fraction(x).denominator for x in w))
+    ints = [int(Fraction(x) * den) for x in w]
+    g = 0
+    for i in ints:
+        g = gcd(g, i)
+    odd = lambda i: i // (i & -i) if i else 0
+    return any(abs(odd(i // g)) >= 2 ** 53 for i in ints)
+
+
+def test_wrenches_beyond_doubles_are_walked_exactly(tmp_path):
+    """query --wrench with decimals whose cleared values no double holds (17 significant digits):
+    the answer is the oracle's, on random decimal scenes of 1-3 contacts, many of the wrenches on
+    the face two friction edges of two contacts span (lambda e_j + e_k / 10, each edge n +- mu t
+    through its contact, by hand from the scene's numbers). Such a wrench is walked (query_scene with the exact wrench),
+    not answered from an analysis of the scene (docs/design.md, Numbers as typed)."""
+    rng = random.Random(1791)
+    lam = Fraction(12345678901234567, 10 ** 17)  # odd, > 2^53: its multiples are no doubles
+    one = lambda lo, hi: Fraction(rng.randint(lo * 10, hi * 10), 10)
+    edges = beyond = 0
+    for case in range(40):
+        contacts = []
+        for _ in range(rng.randint(1, 3)):
+            n = (one(-1, 1), one(-1, 1))
+            if n == (0, 0):
+                n = (Fraction(0), Fraction(1))
+            contacts.append(((one(-1, 1), one(-1, 1)), n, one(0, 1)))
+        body = (Fraction(1), (Fraction(3, 10), Fraction(1, 5)), Fraction(1, 10))
+        if case % 2 == 0 and len(contacts) >= 2:
+            # lam x an edge of one contact's cone plus 1/10 x an edge of another's: on the face
+            # the two edges span (n + s mu t, t = (ny, -nx), through the contact)
+            def edge(k, s):
+                (px, py), (nx, ny), mu = contacts[k]
+                fx, fy = nx + s * mu * ny, ny - s * mu * nx
+                return [fx, fy, px * fy - py * fx]
+            j, k = rng.sample(range(len(contacts)), 2)
+            a, b = edge(j, rng.choice((1, -1))), edge(k, rng.choice((1, -1)))
+            w = [lam * x + Fraction(1, 10) * y for x, y in zip(a, b)]
+        else:
+            w = [lam * one(-2, 2), lam * one(-2, 2) + Fraction(1, 10 ** 17), one(-2, 2)]
+        if not odd_part_beyond_doubles(w):
+            continue
+        beyond += 1
+        edges += case % 2 == 0 and len(contacts) >= 2
+        doc = {"body": {"mass": body[0], "com": list(body[1]), "inertia": body[2]},
+               "contacts": [{"point": list(p), "normal": list(n), "mu": mu} for p, n, mu in contacts]}
+        text = scene_text(body, contacts)
+        assert cli_query(tmp_path, text, w) == oracle.query(doc, w), (text, w)
+    print(f"wrenches beyond doubles: {beyond} ({edges} on two friction edges)")
+    assert beyond >= 30 and edges >= 8, (beyond, edges)
+
+
+def test_threshold_wrench_beyond_doubles_is_ambiguous(tmp_path):
+    """The block at the sliding threshold, a force (mu m g, -m g) with g = 9.8100000000000001
+    whose line meets the floor inside the support (torque -4.90000000000000000000000000000000007,
+    sharing no factor with the force): no multiple of the wrench is doubles, and a rounding of
+    it moves (fx, fy) off the ratio mu; read and walked exactly it gives ff and rr."""
+    mu, m, h, _ = THRESHOLDS[0]
+    g = Fraction("9.8100000000000001")
+    text = block(mu, m, h)
+    w = [mu * m * g, -m * g, Fraction("-4.90000000000000000000000000000000007")]
+    assert odd_part_beyond_doubles(w)
+    expected = oracle.query(as_decimals(text), w)
+    assert {"ff", "rr"} <= expected
+    assert cli_query(tmp_path, text, w) == expected

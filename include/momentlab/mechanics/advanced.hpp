@@ -55,6 +55,14 @@ struct SceneAnswer {
 /// std::invalid_argument for a non-finite wrench.
 [[nodiscard]] SceneAnswer query_scene(const Scene& scene, const Vec3& e, const AnalysisOptions& options = {},
                                       QueryDiagnostics* diagnostics = nullptr);
+/// The same for an exact wrench, which need not be doubles (a decimal one with its denominators
+/// cleared): the same walk, every decision against e exactly.
+[[nodiscard]] SceneAnswer query_scene(const Scene& scene, const Exact3& e, const AnalysisOptions& options = {},
+                                      QueryDiagnostics* diagnostics = nullptr);
+
+/// query(scene, e, options) for an exact wrench: the one-shot path when e is doubles, else the
+/// exact walk (query_scene), never an analysis of the scene.
+[[nodiscard]] QueryAnswer query(const Scene& scene, const Exact3& e, const AnalysisOptions& options = {});
 
 /// Questions about one scene not analysed, asked one after another: each answer is
 /// query_scene's, but what does not depend on the wrench is done once: the cone of motions A, its
@@ -76,6 +84,9 @@ public:
     /// query_scene(scene, e, options, diagnostics). Throws std::invalid_argument for a non-finite
     /// wrench.
     [[nodiscard]] SceneAnswer answer(const Vec3& e, QueryDiagnostics* diagnostics = nullptr);
+    /// The same for an exact wrench (a decimal one, with its denominators cleared, need not be
+    /// doubles).
+    [[nodiscard]] SceneAnswer answer(const Exact3& e, QueryDiagnostics* diagnostics = nullptr);
     /// The answers to several wrenches, in their order, from one walk of the cells: each is what
     /// answer(e) gives, and the walk itself (the cells and their letter changes) is paid once for
     /// the batch; every wrench still has its own certificates and E's tested. Each answer's work
@@ -95,6 +106,8 @@ public:
     struct State;  ///< the walk's set-up and the all-f mode's E (internal)
 
 private:
+    void answer_exact(std::span<const ExactVector> wrenches, const std::function<void(SceneAnswer&&)>& take,
+                      std::vector<QueryDiagnostics>* diagnostics);
     std::unique_ptr<State> state_;
 };
 
