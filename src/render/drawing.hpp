@@ -88,6 +88,13 @@ inline void set_caption(Panel& panel, const std::string& text) {
 Figure scene_sets_figure(const std::string& title, const Scene& scene, const std::vector<ForcePanel>& sets,
                          std::optional<Box> view);
 
+// A rotation centre's mark: a cross of arms `arm` at c.
+inline void rotation_cross(Panel& panel, const Vec2& c, double arm) {
+    for (const Vec2& d : {Vec2(1.0, 1.0), Vec2(1.0, -1.0)}) {
+        panel.shapes.push_back(polyline({c - arm * d, c + arm * d}, Stroke{palette::kAnswer, 2.0}));
+    }
+}
+
 // Defined in label_pictures.cpp, used by the scene pictures too.
 // The part of the line p + s u inside the box (Liang-Barsky), if any.
 std::optional<std::array<Vec2, 2>> clip_line(const Vec2& p, const Vec2& u, const Box& box);

@@ -79,10 +79,7 @@ void draw_rotation_centres(Panel& panel, const Mode& mode, std::vector<LegendEnt
             const Vec2 c = region->vertices.front();
             said.push_back("rotation about " + point_text(c) + " " + sense);
             if (region->clipped(panel.view).empty()) continue;
-            const double r = 0.025 * size;
-            for (const Vec2& d : {Vec2(1.0, 1.0), Vec2(1.0, -1.0)}) {
-                panel.shapes.push_back(polyline({c - r * d, c + r * d}, Stroke{palette::kAnswer, 2.0}));
-            }
+            rotation_cross(panel, c, 0.025 * size);
             Text t;
             t.at = c;
             t.offset = Vec2(0.0, -13.0);

@@ -121,10 +121,7 @@ void draw_mechanism(Panel& panel, const Equilibrium& e, const Assembly& a) {
             const char* sense = m.twist.z() > 0.0 ? kCounterClockwise : kClockwise;
             said.push_back(who + " turns about " + point_text(*m.rotation_centre) + " " + sense);
             const Vec2& r = *m.rotation_centre;
-            const double arm = 0.02 * size;
-            for (const Vec2& d : {Vec2(1.0, 1.0), Vec2(1.0, -1.0)}) {
-                panel.shapes.push_back(polyline({r - arm * d, r + arm * d}, Stroke{palette::kAnswer, 2.0}));
-            }
+            rotation_cross(panel, r, 0.02 * size);
             Text t;
             t.at = r;
             t.offset = Vec2(0.0, -13.0);
