@@ -97,11 +97,23 @@ void exact_found_contacts(Scene& scene, const std::vector<std::vector<Rational2>
 // when some coordinate is not a double and every product is one: overlap and contact are
 // unchanged by the scaling, and the products are exact. D receives the scale.
 std::optional<std::vector<Polygon>> scaled_polygons(const std::vector<std::vector<Rational2>>& exact, double& d) {
+    // Nothing to do when every coordinate is a double; nothing possible when a numerator is
+    // beyond doubles (a decimal of 17 digits: a cleared value is its numerator times a whole
+    // number). Both settled before any copy or product is made.
+    bool doubles = true;
+    for (const auto& p : exact) {
+        for (const Rational2& v : p) {
+            for (const Rational& x : v) {
+                if (!x.num().fits_double()) return std::nullopt;
+                doubles = doubles && x.is_double();
+            }
+        }
+    }
+    if (doubles) return std::nullopt;
     std::vector<Rational> all;
     for (const auto& p : exact) {
         for (const Rational2& v : p) all.insert(all.end(), v.begin(), v.end());
     }
-    if (is_double(all)) return std::nullopt;
     Dyadic common;
     const std::vector<Dyadic> cleared = clear_denominators(all, &common);
     if (!common.fits_double()) return std::nullopt;
