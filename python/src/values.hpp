@@ -94,8 +94,18 @@ std::array<Rational, K> exact_vector_of(const py::handle& value, const char* wha
         std::optional<Rational> r = exact_number(x);
         if (!r) {
             if (py::isinstance<py::str>(x) || !py::hasattr(x, "__float__")) throw InputError(what, "expected numbers");
-            const double d = x.attr("__float__")().cast<double>();
+            double d = 0.0;
+            try {
+                d = x.attr("__float__")().cast<double>();
+            } catch (const py::error_already_set&) {  // Decimal('sNaN')
+                throw InputError(what, "expected finite numbers");
+            }
             if (!std::isfinite(d)) throw InputError(what, "expected finite numbers");
+            // A non-zero value that rounds to 0 (a long double or a Decimal below the doubles'
+            // range) is refused, as in files: never read as 0.
+            if (d == 0.0 && py::bool_(py::reinterpret_borrow<py::object>(x)).cast<bool>()) {
+                throw InputError(what, "a number is too small for a double: it would be taken as 0");
+            }
             r = Rational(d);
         }
         rounded(k) = r->to_double();

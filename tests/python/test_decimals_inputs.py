@@ -310,3 +310,21 @@ def test_python_plan_push_mu_exact_or_binary(tmp_path):
     for mu in ("0.1", Fraction(1, 10), decimal.Decimal("0.1")):
         assert top(ml.plan_push(scene, "ff", mu=mu)) == ["boundary", "boundary"], mu
     assert top(ml.plan_push(scene, "ff", mu=0.1)) == ["no", "no"]
+
+
+def test_python_never_reads_a_tiny_exact_number_as_zero():
+    """A Decimal below exact reading's exponent range, or a long double below the doubles', in
+    a list read exactly (beside a Fraction), is refused, never taken as 0 (the torque 1e-200000
+    would otherwise give the zero wrench's modes); Decimal('sNaN') is refused naming the field."""
+    import decimal
+    import numpy as np
+    import momentlab as ml
+
+    scene = ml.Scene(body={"mass": 1, "com": [0, 1], "inertia": 1},
+                     contacts=[{"point": [-1, 0], "normal": [0, 1], "mu": 0.5},
+                               {"point": [1, 0], "normal": [0, 1], "mu": 0.5}])
+    for w in ([0, -1, decimal.Decimal("1e-200000")], [np.longdouble("1e-4000"), Fraction(0), 0]):
+        with pytest.raises(ValueError, match="too small for a double"):
+            ml.query(scene, w)
+    with pytest.raises(ValueError, match="wrench"):
+        ml.query(scene, [decimal.Decimal("sNaN"), Fraction(0), 0])
