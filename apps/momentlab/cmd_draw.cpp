@@ -1,4 +1,4 @@
-// `momentlab draw SCENE [--mode MODE]... [--what modes|forces|labels|closure|stand] -o FILE...`:
+// `momentlab draw SCENE [--mode MODE]... [--what modes|forces|labels|closure|stand] [--gravity GX GY] -o FILE...`:
 // pictures of a scene (render layer).
 #include <iostream>
 #include <memory>
@@ -16,6 +16,7 @@ struct DrawOptions {
     std::string what;
     PictureOptions picture;
     bool quasi_static = false;
+    std::vector<TypedNumber> gravity;
 };
 
 int run(const DrawOptions& o) {
@@ -23,6 +24,9 @@ int run(const DrawOptions& o) {
     const std::string what = !o.what.empty() ? o.what : (o.modes.empty() ? "modes" : "forces");
     if (what != "forces" && !o.modes.empty()) {
         throw InputError("--mode", "applies to --what forces (the " + what + " picture shows the whole scene)");
+    }
+    if (what != "stand" && !o.gravity.empty()) {
+        throw InputError("--gravity", "applies to --what stand (the other pictures have no load)");
     }
     const std::string name = stem(o.file);
     const std::string& title = o.picture.title;
@@ -47,7 +51,9 @@ int run(const DrawOptions& o) {
         InputWarnings warnings;
         const Assembly assembly = read_assembly_text(read_json_file(o.file), &warnings);
         for (const std::string& w : warnings) std::cerr << "momentlab: warning: " << printable(w) << "\n";
-        const StandResult r = stand(assembly);
+        StandOptions options;
+        if (!o.gravity.empty()) options.gravity = checked_points(o.gravity, "--gravity", 1).front();
+        const StandResult r = stand(assembly, options);
         const std::string heading = title.empty() ? name + (r.equilibrium.can_stand ? ": it can stand" : ": it cannot stand") : title;
         write_picture(render::stand_figure(heading, assembly, r, view), o.picture);
         return 0;
@@ -87,6 +93,9 @@ std::function<int()> add_draw_command(CLI::App& app) {
                     "labels: the contacts' friction cones and their sum; closure: the labels that decide grasp closure; "
                     "stand: an assembly's equilibrium forces or collapse mechanism, and each body's labels")
         ->check(CLI::IsMember({"modes", "forces", "labels", "closure", "stand"}));
+    cmd->add_option("--gravity", opts->gravity, "GX GY: with --what stand, gravity on every body (default 0 -9.81)")
+        ->expected(2, 2)
+        ->transform(number_check());
     add_picture_options(cmd, opts->picture, true);
     cmd->add_flag("--quasi-static", opts->quasi_static, "neglect inertia: the applied wrench balances the contact wrench, E = -T (docs/design.md)");
     return [opts] { return run(*opts); };

@@ -11,7 +11,7 @@ namespace {
 
 struct StandCommandOptions {
     std::string file;
-    std::vector<double> gravity;
+    std::vector<TypedNumber> gravity;
     bool tilt = false;
     bool json = false;
 };

@@ -126,11 +126,13 @@ def _assembly_of(scene) -> Assembly:
     raise ValueError("stand: expected a momentlab.Assembly (or a Scene with a body)")
 
 
-def stand(scene, gravity=(0.0, -9.81), tilt: bool = False) -> StandResult:
+def stand(scene, gravity=None, tilt: bool = False) -> StandResult:
     """Will the assembly stand under `gravity` (gx, gy, acting on every body at its centre of
-    mass; only its direction matters), how can it start to move, and (tilt=True) for which
-    gravity vectors does it stand: a StandResult with the fields of `momentlab stand --json`,
-    every decision exact (docs/assemblies.md). `scene` is an Assembly, or a Scene with a body
-    (the assembly of one body)."""
+    mass; only its direction matters; default (0, -9.81), the decimal, as the command line's),
+    how can it start to move, and (tilt=True) for which gravity vectors does it stand: a
+    StandResult with the fields of `momentlab stand --json`, every decision exact
+    (docs/assemblies.md). Floats are their binary values; Fractions, Decimals and numeric
+    strings their exact ones. `scene` is an Assembly, or a Scene with a body (the assembly of
+    one body)."""
     a = _assembly_of(scene)
     return StandResult.from_json(_momentlab.stand(a._assembly, gravity, _flag(tilt, "tilt")))

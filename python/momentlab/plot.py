@@ -336,8 +336,9 @@ def assembly(ax, asm: Assembly, view=None, faint=False, outlined=None):
     return ax
 
 
-def stand(axes, asm: Assembly, gravity=(0.0, -9.81), view=None):
-    """The picture of `momentlab draw SCENE --what stand`; returns momentlab.stand(asm, gravity).
+def stand(axes, asm: Assembly, gravity=None, view=None):
+    """The picture of `momentlab draw SCENE --what stand`; returns momentlab.stand(asm, gravity)
+    (gravity as momentlab.stand takes it: by default (0, -9.81), the decimal).
 
     On the first Axes (or the only one given): the assembly and, in magenta, the force on body a
     at each contact of the equilibrium as an arrow from the contact (lengths in proportion; none

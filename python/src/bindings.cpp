@@ -369,7 +369,7 @@ PYBIND11_MODULE(_momentlab, m) {
         });
     m.def("stand", [](const Assembly& a, const py::handle& gravity, bool tilt) {
         StandOptions options;
-        if (!gravity.is_none()) options.gravity = vector_of<2>(gravity, "gravity");
+        if (!gravity.is_none()) options.gravity = exact_vector_of<2>(gravity, "gravity");
         options.tilt = tilt;
         return python_of(to_json(stand(a, options)));
     }, py::arg("assembly"), py::arg("gravity") = py::none(), py::arg("tilt") = false);

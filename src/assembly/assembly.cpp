@@ -5,6 +5,7 @@
 #include <string>
 
 #include "momentlab/geometry/polygon.hpp"
+#include "momentlab/mechanics/find_contacts.hpp"
 #include "momentlab/io/input_error.hpp"
 
 namespace momentlab {
@@ -39,6 +40,28 @@ double box_margin(double distance) { return distance * 2.0 + 1e-9; }
 
 }  // namespace
 
+const BodyValues* AssemblyBody::exact_values() const {
+    if (!exact) return nullptr;
+    const BodyValues& v = *exact;
+    const bool current = v.mass_double == mass && v.com_double == com && v.inertia_double == inertia.value_or(0.0) &&
+                         v.radius_double == radius_of_gyration;
+    return current ? &v : nullptr;
+}
+
+const std::vector<std::vector<Rational2>>* Assembly::exact_polygons_in_force() const {
+    if (!exact_polygons) return nullptr;
+    const std::vector<std::vector<Rational2>>& exact = *exact_polygons;
+    if (exact.size() != bodies.size() + obstacles.size()) return nullptr;
+    for (std::size_t k = 0; k < exact.size(); ++k) {
+        const Polygon& p = k < bodies.size() ? bodies[k].polygon : obstacles[k - bodies.size()];
+        if (p.size() != exact[k].size()) return nullptr;
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            if (to_double(exact[k][i]) != p[i]) return nullptr;
+        }
+    }
+    return &exact;
+}
+
 Assembly assembly_of(const Scene& scene) {
     if (!scene.body) throw std::invalid_argument("the scene has no body (an assembly needs its mass and centre of mass)");
     Assembly a;
@@ -51,6 +74,11 @@ Assembly assembly_of(const Scene& scene) {
         b.inertia = scene.body->inertia;
     }
     b.polygon = scene.body->polygon;
+    if (const BodyValues* v = scene.body->exact_values()) {
+        BodyValues values = *v;
+        values.inertia_double = b.inertia.value_or(0.0);
+        b.exact = std::make_shared<const BodyValues>(std::move(values));
+    }
     a.bodies.push_back(std::move(b));
     for (const Contact& c : scene.contacts) a.contacts.push_back({1, 0, c});
     a.obstacles = scene.obstacles;
@@ -59,27 +87,39 @@ Assembly assembly_of(const Scene& scene) {
 }
 
 std::vector<AssemblyContact> find_assembly_contacts(const std::vector<AssemblyBody>& bodies,
-                                                    const std::vector<Polygon>& obstacles, const ContactFinding& options) {
+                                                    const std::vector<Polygon>& obstacles, const ContactFinding& options,
+                                                    std::vector<ContactOrigin>* origins) {
     std::vector<AssemblyContact> found;
     const double margin = box_margin(options.distance);
     std::vector<AxisBox> boxes;
     for (const AssemblyBody& b : bodies) boxes.push_back(b.polygon.empty() ? AxisBox{} : box_of(b.polygon, margin));
     std::vector<AxisBox> obstacle_boxes;
     for (const Polygon& o : obstacles) obstacle_boxes.push_back(box_of(o, margin));
+    std::vector<ContactOrigin> where;
+    // The contacts of body a with `others` (the obstacles at `index`, or body b alone).
+    const auto add = [&](std::size_t a, std::size_t b, const std::vector<Polygon>& others, const std::vector<std::size_t>& index) {
+        where.clear();
+        for (Contact& c : find_contacts(bodies[a].polygon, others, options, &where)) found.push_back({a + 1, b, std::move(c)});
+        if (!origins) return;
+        for (ContactOrigin o : where) {
+            o.obstacle = index[o.obstacle];
+            origins->push_back(o);
+        }
+    };
     for (std::size_t a = 0; a < bodies.size(); ++a) {
         if (bodies[a].polygon.empty()) continue;
         std::vector<Polygon> near;
+        std::vector<std::size_t> index;
         for (std::size_t k = 0; k < obstacles.size(); ++k) {
-            if (boxes_meet(boxes[a], obstacle_boxes[k])) near.push_back(obstacles[k]);
+            if (boxes_meet(boxes[a], obstacle_boxes[k])) {
+                near.push_back(obstacles[k]);
+                index.push_back(k);
+            }
         }
-        if (!near.empty()) {
-            for (Contact& c : find_contacts(bodies[a].polygon, near, options)) found.push_back({a + 1, 0, std::move(c)});
-        }
+        if (!near.empty()) add(a, 0, near, index);
         for (std::size_t b = 0; b < a; ++b) {
             if (bodies[b].polygon.empty() || !boxes_meet(boxes[a], boxes[b])) continue;
-            for (Contact& c : find_contacts(bodies[a].polygon, {bodies[b].polygon}, options)) {
-                found.push_back({a + 1, b + 1, std::move(c)});
-            }
+            add(a, b + 1, {bodies[b].polygon}, {0});
         }
     }
     return found;
@@ -131,24 +171,31 @@ void check_assembly(const Assembly& assembly) {
             }
         }
     }
-    // Overlaps: pairs whose boxes meet.
-    const double margin = box_margin(distance);
-    std::vector<AxisBox> boxes(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        if (!assembly.bodies[k].polygon.empty()) boxes[k] = box_of(assembly.bodies[k].polygon, margin);
+    // Overlaps: pairs whose boxes meet, decided on the polygons as typed when they are decimals
+    // (scaled_polygons: every coordinate times D, exactly), else on their doubles.
+    std::vector<Polygon> outlines;
+    for (const AssemblyBody& b : assembly.bodies) outlines.push_back(b.polygon);
+    outlines.insert(outlines.end(), assembly.obstacles.begin(), assembly.obstacles.end());
+    double scale = 1.0;
+    if (const auto* exact = assembly.exact_polygons_in_force()) {
+        if (std::optional<std::vector<Polygon>> scaled = scaled_polygons(*exact, scale)) outlines = std::move(*scaled);
+    }
+    const double margin = box_margin(distance * scale);
+    std::vector<AxisBox> boxes(outlines.size());
+    for (std::size_t k = 0; k < outlines.size(); ++k) {
+        if (!outlines[k].empty()) boxes[k] = box_of(outlines[k], margin);
     }
     for (std::size_t a = 0; a < n; ++a) {
-        const Polygon& pa = assembly.bodies[a].polygon;
+        const Polygon& pa = outlines[a];
         if (pa.empty()) continue;
         for (std::size_t k = 0; k < assembly.obstacles.size(); ++k) {
-            const Polygon& o = assembly.obstacles[k];
-            if (boxes_meet(boxes[a], box_of(o, margin)) && polygons_overlap(pa, o)) {
+            if (boxes_meet(boxes[a], boxes[n + k]) && polygons_overlap(pa, outlines[n + k])) {
                 throw InputError(at("$.bodies", a) + ".polygon", "overlaps obstacle " + std::to_string(k) +
                                                                      " (bodies may touch the obstacles, not overlap them)");
             }
         }
         for (std::size_t b = 0; b < a; ++b) {
-            const Polygon& pb = assembly.bodies[b].polygon;
+            const Polygon& pb = outlines[b];
             if (!pb.empty() && boxes_meet(boxes[a], boxes[b]) && polygons_overlap(pa, pb)) {
                 throw InputError(at("$.bodies", a) + ".polygon", "overlaps the polygon of body " + std::to_string(b + 1) +
                                                                      " (bodies may touch, not overlap)");

@@ -1,159 +1,228 @@
 #include "momentlab/assembly/assembly_json.hpp"
 
 #include <cmath>
+#include <memory>
+#include <optional>
 
 #include "momentlab/geometry/polygon.hpp"
 #include "momentlab/io/scene_json.hpp"
+#include "momentlab/mechanics/find_contacts.hpp"
+#include "../io/json_read.hpp"
 
 namespace momentlab {
 namespace {
 
 using nlohmann::json;
+using json_read::Path;
+using json_read::Schema;
+using json_read::Value;
+using namespace json_read;
 
-std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+// What the reader keeps of an assembly's document (any other field is a warning).
+constexpr Schema::Member kBodyFields[] = {{"name", &kScalar},   {"mass", &kScalar},
+                                          {"com", &kPair},      {"inertia", &kScalar},
+                                          {"radius_of_gyration", &kScalar}, {"polygon", &kPairs}};
+constexpr Schema kBody{kBodyFields};
+constexpr Schema kBodies{{}, &kBody};
+constexpr Schema::Member kContactFields[] = {{"bodies", &kPair}, {"point", &kPair},      {"normal", &kPair},
+                                             {"mu", &kScalar},   {"mu_kinetic", &kScalar}, {"name", &kScalar}};
+constexpr Schema kContact{kContactFields};
+constexpr Schema kContacts{{}, &kContact};
+constexpr Schema::Member kObstacleFields[] = {{"polygon", &kPairs}};
+constexpr Schema kObstacle{kObstacleFields};
+constexpr Schema kObstacles{{}, &kObstacle};
+constexpr Schema::Member kAssemblyFields[] = {{"bodies", &kBodies},           {"body", &kBody},   {"contacts", &kContacts},
+                                              {"obstacles", &kObstacles},      {"contact_distance", &kScalar},
+                                              {"mu", &kScalar}};
+constexpr Schema kAssembly{kAssemblyFields};
 
-void known(const json& obj, const std::string& path, std::initializer_list<const char*> names, InputWarnings* w) {
-    if (!w) return;
-    for (const auto& [key, value] : obj.items()) {
-        bool found = false;
-        for (const char* n : names) found = found || key == n;
-        if (!found) w->push_back(path + "." + key + ": unknown field, ignored");
-    }
-}
-
-const json& field(const json& obj, const std::string& path, const char* name) {
-    if (!obj.contains(name)) throw InputError(path, std::string("missing field \"") + name + "\"");
-    return obj.at(name);
-}
-
-double number(const json& v, const std::string& path) {
-    if (!v.is_number()) throw InputError(path, "expected a number");
-    const double x = v.get<double>();
-    if (!std::isfinite(x) || !magnitude_in_range(std::abs(x))) {
-        throw InputError(path, "expected a finite number, " + std::string(kMagnitudeRange));
-    }
-    return x;
-}
-
-double positive(const json& v, const std::string& path) {
+double positive(const Value& v, const Path& path) {
     const double x = number(v, path);
-    if (!(x > 0.0)) throw InputError(path, "expected a number > 0");
+    if (!(x > 0.0)) throw InputError(path.str(), "expected a number > 0");
     return x;
 }
 
-double nonnegative(const json& v, const std::string& path) {
-    const double x = number(v, path);
-    if (x < 0.0) throw InputError(path, "expected a number >= 0");
-    return x;
-}
-
-Vec2 vec2(const json& v, const std::string& path) {
-    if (!v.is_array() || v.size() != 2) throw InputError(path, "expected [x, y]");
-    const Vec2 p(number(v[0], path + "[0]"), number(v[1], path + "[1]"));
-    return p;
-}
-
-Polygon polygon(const json& v, const std::string& path) {
-    if (!v.is_array()) throw InputError(path, "expected a list of [x, y]");
-    Polygon p;
-    for (std::size_t i = 0; i < v.size(); ++i) p.push_back(vec2(v[i], at(path, i)));
+Polygon polygon(const Value& v, const Path& path) {
+    Polygon p = vec2_list(v, path);
     const std::string problem = polygon_problem(p);
-    if (!problem.empty()) throw InputError(path, problem);
+    if (!problem.empty()) throw InputError(path.str(), problem);
     return p;
 }
 
-std::size_t body_index(const json& v, const std::string& path) {
-    if (!v.is_number_integer() && !(v.is_number() && std::floor(v.get<double>()) == v.get<double>())) {
-        throw InputError(path, "expected a body index: 0 (the world) or 1..N");
-    }
-    const double x = v.get<double>();
-    if (x < 0.0 || x > 1e9) throw InputError(path, "expected a body index: 0 (the world) or 1..N");
-    return static_cast<std::size_t>(x);
-}
-
-AssemblyBody read_body(const json& b, const std::string& path, InputWarnings* w) {
-    if (!b.is_object()) throw InputError(path, "expected an object with \"mass\" and \"com\"");
-    known(b, path, {"name", "mass", "com", "inertia", "radius_of_gyration", "polygon"}, w);
-    AssemblyBody body;
-    if (b.contains("name")) {
-        if (!b.at("name").is_string()) throw InputError(path + ".name", "expected a string");
-        body.name = b.at("name").get<std::string>();
-    }
-    if (!b.contains("mass")) throw InputError(path, "missing field \"mass\" (every body needs its mass: gravity acts on it)");
-    body.mass = positive(b.at("mass"), path + ".mass");
-    body.com = vec2(field(b, path, "com"), path + ".com");
-    if (b.contains("inertia")) body.inertia = positive(b.at("inertia"), path + ".inertia");
-    if (b.contains("radius_of_gyration")) {
-        if (body.inertia) {
-            throw InputError(path + ".radius_of_gyration", "give either \"inertia\" or \"radius_of_gyration\", not both");
-        }
-        body.radius_of_gyration = positive(b.at("radius_of_gyration"), path + ".radius_of_gyration");
-    }
-    if (b.contains("polygon")) body.polygon = polygon(b.at("polygon"), path + ".polygon");
-    return body;
-}
-
-AssemblyContact read_contact(const json& c, const std::string& path, InputWarnings* w) {
-    if (!c.is_object()) throw InputError(path, "expected an object with \"bodies\", \"point\" and \"normal\"");
-    known(c, path, {"bodies", "point", "normal", "mu", "mu_kinetic", "name"}, w);
-    const json& pair = field(c, path, "bodies");
-    if (!pair.is_array() || pair.size() != 2) throw InputError(path + ".bodies", "expected [a, b]: body a (1..N), body b (0 the world, or 1..N)");
-    AssemblyContact out;
-    out.a = body_index(pair[0], path + ".bodies[0]");
-    out.b = body_index(pair[1], path + ".bodies[1]");
-    const Vec2 point = vec2(field(c, path, "point"), path + ".point");
-    const Vec2 normal = vec2(field(c, path, "normal"), path + ".normal");
-    if (normal.x() == 0.0 && normal.y() == 0.0) throw InputError(path + ".normal", "expected a non-zero normal");
-    const double mu = c.contains("mu") ? nonnegative(c.at("mu"), path + ".mu") : 0.0;
-    std::optional<double> kinetic;
-    if (c.contains("mu_kinetic")) kinetic = nonnegative(c.at("mu_kinetic"), path + ".mu_kinetic");
-    std::string name;
-    if (c.contains("name")) {
-        if (!c.at("name").is_string()) throw InputError(path + ".name", "expected a string");
-        name = c.at("name").get<std::string>();
-    }
-    out.contact = Contact::make(point, normal, mu, kinetic, name);
+// The exact vertices of a polygon polygon() accepted (0.1 is 1/10).
+std::vector<Rational2> exact_polygon(const Value& v) {
+    std::vector<Rational2> out;
+    v.for_each_element([&](std::size_t, const Value& e) { out.push_back(exact_vec2(e)); });
     return out;
 }
 
-Assembly read_bodies(const json& doc, InputWarnings* w) {
-    known(doc, "$", {"bodies", "contacts", "obstacles", "contact_distance", "mu"}, w);
-    Assembly a;
-    const json& bodies = doc.at("bodies");
-    if (!bodies.is_array() || bodies.empty()) throw InputError("$.bodies", "expected a non-empty list of bodies");
-    for (std::size_t i = 0; i < bodies.size(); ++i) a.bodies.push_back(read_body(bodies[i], at("$.bodies", i), w));
-    if (doc.contains("obstacles")) {
-        const json& obstacles = doc.at("obstacles");
-        if (!obstacles.is_array()) throw InputError("$.obstacles", "expected a list of obstacles");
-        for (std::size_t i = 0; i < obstacles.size(); ++i) {
-            const std::string p = at("$.obstacles", i);
-            if (!obstacles[i].is_object()) throw InputError(p, "expected an object with \"polygon\"");
-            known(obstacles[i], p, {"polygon"}, w);
-            a.obstacles.push_back(polygon(field(obstacles[i], p, "polygon"), p + ".polygon"));
+std::size_t body_index(const Value& v, const Path& path) {
+    const char* expected = "expected a body index: 0 (the world) or 1..N";
+    if (!v.is_number()) throw InputError(path.str(), expected);
+    const double x = v.number().value;
+    if (std::floor(x) != x || x < 0.0 || x > 1e9) throw InputError(path.str(), expected);
+    return static_cast<std::size_t>(x);
+}
+
+AssemblyBody read_body(const Value& b, const Path& path, InputWarnings* w) {
+    if (!b.is_object()) throw InputError(path.str(), "expected an object with \"mass\" and \"com\"");
+    known_fields(b, path, {"name", "mass", "com", "inertia", "radius_of_gyration", "polygon"}, w);
+    AssemblyBody body;
+    if (const std::optional<Value> name = b.find("name")) {
+        if (!name->is_string()) throw InputError(Path(path, "name").str(), "expected a string");
+        body.name = std::string(name->string());
+    }
+    const std::optional<Value> mass = b.find("mass");
+    if (!mass) throw InputError(path.str(), "missing field \"mass\" (every body needs its mass: gravity acts on it)");
+    body.mass = positive(*mass, Path(path, "mass"));
+    const Value com = field(b, path, "com");
+    body.com = vec2(com, Path(path, "com"));
+    const std::optional<Value> inertia = b.find("inertia"), radius = b.find("radius_of_gyration");
+    if (inertia) body.inertia = positive(*inertia, Path(path, "inertia"));
+    if (radius) {
+        if (inertia) throw InputError(Path(path, "radius_of_gyration").str(), "give either \"inertia\" or \"radius_of_gyration\", not both");
+        body.radius_of_gyration = positive(*radius, Path(path, "radius_of_gyration"));
+    }
+    if (const std::optional<Value> p = b.find("polygon")) body.polygon = polygon(*p, Path(path, "polygon"));
+    // The exact values, kept beside the doubles when some are not doubles (0.1 is 1/10).
+    BodyValues v;
+    v.mass = exact_number(*mass);
+    v.com = exact_vec2(com);
+    if (inertia) v.inertia = exact_number(*inertia);
+    if (radius) v.radius_of_gyration = exact_number(*radius);
+    if (!v.mass.is_double() || !is_double(v.com) || !v.inertia.is_double() || (v.radius_of_gyration && !v.radius_of_gyration->is_double())) {
+        v.mass_double = body.mass;
+        v.com_double = body.com;
+        v.inertia_double = body.inertia.value_or(0.0);
+        v.radius_double = body.radius_of_gyration;
+        body.exact = std::make_shared<const BodyValues>(std::move(v));
+    }
+    return body;
+}
+
+AssemblyContact read_contact(const Value& c, const Path& path, InputWarnings* w) {
+    if (!c.is_object()) throw InputError(path.str(), "expected an object with \"bodies\", \"point\" and \"normal\"");
+    known_fields(c, path, {"bodies", "point", "normal", "mu", "mu_kinetic", "name"}, w);
+    const Path pair_path(path, "bodies");
+    const Value pair = field(c, path, "bodies");
+    if (!pair.is_array() || pair.size() != 2) throw InputError(pair_path.str(), "expected [a, b]: body a (1..N), body b (0 the world, or 1..N)");
+    AssemblyContact out;
+    pair.for_each_element([&](std::size_t i, const Value& e) { (i == 0 ? out.a : out.b) = body_index(e, Path(pair_path, i)); });
+    out.contact = contact_of(c, path);
+    return out;
+}
+
+// The polygons as typed, bodies' then obstacles', when some vertex is not a double.
+std::shared_ptr<const std::vector<std::vector<Rational2>>> exact_polygons(const std::vector<Value>& bodies, const std::optional<Value>& obstacles) {
+    auto exact = std::make_shared<std::vector<std::vector<Rational2>>>();
+    for (const Value& b : bodies) {
+        const std::optional<Value> p = b.find("polygon");
+        exact->push_back(p ? exact_polygon(*p) : std::vector<Rational2>{});
+    }
+    if (obstacles) obstacles->for_each_element([&](std::size_t, const Value& o) { exact->push_back(exact_polygon(*o.find("polygon"))); });
+    for (const auto& p : *exact) {
+        for (const Rational2& v : p) {
+            if (!is_double(v)) return exact;
         }
     }
+    return nullptr;
+}
+
+// The contacts found from the polygons, as typed (contact_as_typed): on the polygons scaled to
+// exact doubles when they are decimals (scaled_polygons), else on their doubles.
+std::vector<AssemblyContact> found_contacts(const Assembly& a, ContactFinding finding, const Rational& mu) {
+    const std::size_t n = a.bodies.size();
+    double scale = 1.0;
+    std::optional<std::vector<Polygon>> scaled;
+    if (a.exact_polygons) scaled = scaled_polygons(*a.exact_polygons, scale);
+    std::vector<AssemblyBody> bodies = a.bodies;
+    std::vector<Polygon> obstacles = a.obstacles;
+    if (scaled) {
+        for (std::size_t k = 0; k < n; ++k) bodies[k].polygon = (*scaled)[k];
+        obstacles.assign(scaled->begin() + static_cast<std::ptrdiff_t>(n), scaled->end());
+        finding.distance *= scale;
+    }
+    std::vector<ContactOrigin> origins;
+    std::vector<AssemblyContact> found = find_assembly_contacts(bodies, obstacles, finding, &origins);
+    for (std::size_t i = 0; i < found.size(); ++i) {
+        AssemblyContact& c = found[i];
+        const ContactOrigin& o = origins[i];
+        const auto exact = [&](std::size_t body) -> std::vector<Rational2> {  // polygon of body 0..N (0: obstacle o.obstacle)
+            const std::size_t k = body == 0 ? n + o.obstacle : body - 1;
+            if (a.exact_polygons) return (*a.exact_polygons)[k];
+            std::vector<Rational2> out;
+            for (const Vec2& v : body == 0 ? a.obstacles[o.obstacle] : a.bodies[body - 1].polygon) out.push_back(rational(v));
+            return out;
+        };
+        const std::vector<Rational2> touching = exact(o.body_vertex ? c.a : c.b), touched = exact(o.body_vertex ? c.b : c.a);
+        c.contact = contact_as_typed(c.contact, touching[o.vertex], touched[o.edge], touched[(o.edge + 1) % touched.size()], mu,
+                                     scaled.has_value());
+    }
+    return found;
+}
+
+Assembly read_bodies(const Value& doc, InputWarnings* w) {
+    const Path root("$");
+    known_fields(doc, root, {"bodies", "contacts", "obstacles", "contact_distance", "mu"}, w);
+    Assembly a;
+    const Path bodies_path(root, "bodies");
+    const Value list = field(doc, root, "bodies");
+    if (!list.is_array() || list.size() == 0) throw InputError(bodies_path.str(), "expected a non-empty list of bodies");
+    std::vector<Value> bodies;
+    list.for_each_element([&](std::size_t i, const Value& b) {
+        a.bodies.push_back(read_body(b, Path(bodies_path, i), w));
+        bodies.push_back(b);
+    });
+    const std::optional<Value> obstacles = doc.find("obstacles");
+    if (obstacles) {
+        const Path obstacles_path(root, "obstacles");
+        if (!obstacles->is_array()) throw InputError(obstacles_path.str(), "expected a list of obstacles");
+        obstacles->for_each_element([&](std::size_t i, const Value& o) {
+            const Path p(obstacles_path, i);
+            if (!o.is_object()) throw InputError(p.str(), "expected an object with \"polygon\"");
+            known_fields(o, p, {"polygon"}, w);
+            a.obstacles.push_back(polygon(field(o, p, "polygon"), Path(p, "polygon")));
+        });
+    }
+    a.exact_polygons = exact_polygons(bodies, obstacles);
     ContactFinding finding;
-    if (doc.contains("contact_distance")) {
-        finding.distance = nonnegative(doc.at("contact_distance"), "$.contact_distance");
+    if (const std::optional<Value> distance = doc.find("contact_distance")) {
+        finding.distance = nonnegative(*distance, Path(root, "contact_distance"), "a distance");
         a.contact_distance = finding.distance;
     }
-    if (doc.contains("contacts")) {
-        const json& contacts = doc.at("contacts");
-        if (!contacts.is_array()) throw InputError("$.contacts", "expected a list of contacts");
-        for (std::size_t i = 0; i < contacts.size(); ++i) a.contacts.push_back(read_contact(contacts[i], at("$.contacts", i), w));
-        if (doc.contains("mu") && w) w->push_back("$.mu: ignored: it applies to contacts found from the polygons");
+    const std::optional<Value> mu = doc.find("mu");
+    if (const std::optional<Value> contacts = doc.find("contacts")) {
+        const Path contacts_path(root, "contacts");
+        if (!contacts->is_array()) throw InputError(contacts_path.str(), "expected a list of contacts");
+        contacts->for_each_element([&](std::size_t i, const Value& c) { a.contacts.push_back(read_contact(c, Path(contacts_path, i), w)); });
+        if (mu && w) w->push_back("$.mu: ignored: it applies to contacts found from the polygons");
     } else {
-        if (doc.contains("mu")) {
-            finding.mu = nonnegative(doc.at("mu"), "$.mu");
+        if (mu) {
+            finding.mu = nonnegative(*mu, Path(root, "mu"), "mu");
             finding.mu_kinetic = finding.mu;
         }
         check_assembly(a);  // the polygons must not overlap before contacts are looked for
         try {
-            a.contacts = find_assembly_contacts(a.bodies, a.obstacles, finding);
+            a.contacts = found_contacts(a, finding, mu ? exact_number(*mu) : Rational());
         } catch (const std::invalid_argument& e) {
             throw InputError("$", e.what());
         }
     }
+    check_assembly(a);
+    return a;
+}
+
+Assembly read_assembly(const Document& doc, const Scene* single, InputWarnings* warnings) {
+    const Value root = doc.root();
+    if (!root.is_object()) throw InputError("$", "expected a scene object with \"bodies\" (or \"body\")");
+    if (root.contains("bodies") && root.contains("body")) throw InputError("$", "give either \"body\" or \"bodies\", not both");
+    if (root.contains("bodies")) return read_bodies(root, warnings);
+    if (!single || !single->body) throw InputError("$", "missing field \"bodies\" (or \"body\"): stand needs the bodies' masses");
+    Assembly a = assembly_of(*single);
+    // The polygons as typed: overlap decided on them (the scene reader found its contacts so).
+    std::vector<Value> body;
+    if (const std::optional<Value> b = root.find("body")) body.push_back(*b);
+    a.exact_polygons = exact_polygons(body, root.find("obstacles"));
     check_assembly(a);
     return a;
 }
@@ -163,29 +232,17 @@ json xy(const Vec2& v) { return json::array({output_value(v.x()), output_value(v
 }  // namespace
 
 Assembly read_assembly(const json& doc, InputWarnings* warnings) {
-    if (!doc.is_object()) throw InputError("$", "expected a scene object with \"bodies\" (or \"body\")");
-    if (doc.contains("bodies") && doc.contains("body")) throw InputError("$", "give either \"body\" or \"bodies\", not both");
-    if (doc.contains("bodies")) return read_bodies(doc, warnings);
-    Assembly a = assembly_of([&] {
-        Scene s = read_scene(doc, warnings);
-        if (!s.body) throw InputError("$", "missing field \"bodies\" (or \"body\"): stand needs the bodies' masses");
-        return s;
-    }());
-    check_assembly(a);
-    return a;
+    const Document d = document_of(doc, kAssembly);
+    const bool single = d.root().is_object() && !d.root().contains("bodies") && d.root().contains("body");
+    const std::optional<Scene> scene = single ? std::optional<Scene>(read_scene(doc, warnings)) : std::nullopt;
+    return read_assembly(d, scene ? &*scene : nullptr, warnings);
 }
 
 Assembly read_assembly_text(const std::string& text, InputWarnings* warnings) {
-    if (const std::optional<std::string> bad = underflowing_number(text)) {
-        throw InputError("$", "the number " + *bad + " is too small for a double (it would be taken as 0)");
-    }
-    json doc;
-    try {
-        doc = json::parse(text);
-    } catch (const json::parse_error& e) {
-        throw InputError("$", std::string("not valid JSON: ") + e.what());
-    }
-    return read_assembly(doc, warnings);
+    const Document d = json_read::read(text, kAssembly);
+    const bool single = d.root().is_object() && !d.root().contains("bodies") && d.root().contains("body");
+    const std::optional<Scene> scene = single ? std::optional<Scene>(read_scene_text(text, warnings)) : std::nullopt;
+    return read_assembly(d, scene ? &*scene : nullptr, warnings);
 }
 
 json to_json(const TiltCone& tilt) {

@@ -18,9 +18,9 @@ namespace {
 
 class ModeSearch {
 public:
-    ModeSearch(const Assembly& assembly, const Vec2& gravity)
+    ModeSearch(const Assembly& assembly, const Rational2& gravity)
         : assembly_(assembly), gravity_(gravity), d_(assembly_data<Interval>(assembly)),
-          gx_(gravity.x()), gy_(gravity.y()) {}
+          gx_(number<Interval>(gravity[0])), gy_(number<Interval>(gravity[1])) {}
 
     AssemblyModes run() {
         AssemblyModes out;
@@ -37,8 +37,8 @@ private:
         if (!exact_) exact_ = assembly_data<assembly_detail::Rational>(assembly_);
         return *exact_;
     }
-    assembly_detail::Rational egx() { return exact_value(gravity_.x()); }
-    assembly_detail::Rational egy() { return exact_value(gravity_.y()); }
+    assembly_detail::Rational egx() { return exact_value(gravity_[0]); }
+    assembly_detail::Rational egy() { return exact_value(gravity_[1]); }
 
     bool cell_nonempty(const std::string& letters) {
         if (letters.find_first_not_of('f') == std::string::npos) return true;  // x = 0
@@ -116,7 +116,7 @@ private:
     }
 
     const Assembly& assembly_;
-    Vec2 gravity_;
+    Rational2 gravity_;
     AssemblyData<Interval> d_;
     std::optional<AssemblyData<assembly_detail::Rational>> exact_;
     Interval gx_, gy_;
@@ -125,7 +125,7 @@ private:
 
 }  // namespace
 
-AssemblyModes assembly_modes(const Assembly& assembly, const Vec2& gravity) {
+AssemblyModes assembly_modes(const Assembly& assembly, const Rational2& gravity) {
     check_assembly(assembly);
     for (std::size_t k = 0; k < assembly.bodies.size(); ++k) {
         const AssemblyBody& b = assembly.bodies[k];

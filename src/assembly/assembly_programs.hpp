@@ -34,8 +34,8 @@ using Index = std::uint32_t;
 template <class T>
 using Wrench = std::array<T, 3>;
 
-/// A number of the scene: a double is exact in both types (a decimal read as written would be
-/// enclosed here, and exact in the Rational one).
+/// A number of the scene: a double is exact in both types; a decimal as typed (0.1 is 1/10) is
+/// enclosed in the Interval one and exact in the Rational one.
 template <class T>
 T number(double x) {
     if constexpr (std::is_same_v<T, Interval>) {
@@ -43,6 +43,37 @@ T number(double x) {
     } else {
         return exact_value(x);
     }
+}
+
+template <class T>
+T number(const momentlab::Rational& x) {
+    if constexpr (std::is_same_v<T, Interval>) {
+        return enclose(x);
+    } else {
+        return exact_value(x);
+    }
+}
+
+/// A contact's numbers exactly: its exact values, or its doubles when those are exact.
+inline ContactValues values_of(const Contact& c) {
+    if (const ContactValues* v = c.exact_values()) return *v;
+    ContactValues v;
+    v.point = rational(c.point);
+    v.normal = rational(c.normal);
+    v.mu = momentlab::Rational(c.mu);
+    v.mu_kinetic = momentlab::Rational(c.mu_kinetic);
+    return v;
+}
+
+/// A body's numbers exactly (as values_of(Contact)); the inertia 0 when the body has none.
+inline BodyValues values_of(const AssemblyBody& b) {
+    if (const BodyValues* v = b.exact_values()) return *v;
+    BodyValues v;
+    v.mass = momentlab::Rational(b.mass);
+    v.com = rational(b.com);
+    if (b.inertia) v.inertia = momentlab::Rational(*b.inertia);
+    if (b.radius_of_gyration) v.radius_of_gyration = momentlab::Rational(*b.radius_of_gyration);
+    return v;
 }
 
 template <class T>
@@ -117,13 +148,14 @@ AssemblyData<T> assembly_data(const Assembly& assembly) {
     d.bodies = static_cast<Index>(assembly.bodies.size());
     for (const AssemblyBody& b : assembly.bodies) {
         BodyData<T> out;
-        const T m = number<T>(b.mass), cx = number<T>(b.com.x()), cy = number<T>(b.com.y());
+        const BodyValues v = values_of(b);
+        const T m = number<T>(v.mass), cx = number<T>(v.com[0]), cy = number<T>(v.com[1]);
         const T zero(number<T>(0.0));
         out.gravity_x = {m, zero, zero - m * cy};
         out.gravity_y = {zero, m, m * cx};
         if (b.inertia || b.radius_of_gyration) {
-            T ic = b.radius_of_gyration ? m * number<T>(*b.radius_of_gyration) * number<T>(*b.radius_of_gyration)
-                                        : number<T>(*b.inertia);
+            T ic = v.radius_of_gyration ? m * number<T>(*v.radius_of_gyration) * number<T>(*v.radius_of_gyration)
+                                        : number<T>(v.inertia);
             out.inertia = inertia_matrix(m, cx, cy, ic);
             const T one = number<T>(1.0);
             const T im = one / m, ii = one / ic;
@@ -134,36 +166,36 @@ AssemblyData<T> assembly_data(const Assembly& assembly) {
         }
         d.body.push_back(std::move(out));
     }
+    std::vector<ContactValues> values;
+    values.reserve(assembly.contacts.size());
     for (const AssemblyContact& ac : assembly.contacts) {
-        const Contact& c = ac.contact;
+        const ContactValues& v = values.emplace_back(values_of(ac.contact));
         ContactData<T> out;
         out.a = static_cast<Index>(ac.a);
         out.b = static_cast<Index>(ac.b);
-        const T px = number<T>(c.point.x()), py = number<T>(c.point.y());
-        const T nx = number<T>(c.normal.x()), ny = number<T>(c.normal.y());
+        const T px = number<T>(v.point[0]), py = number<T>(v.point[1]);
+        const T nx = number<T>(v.normal[0]), ny = number<T>(v.normal[1]);
         const T tx = ny, ty = number<T>(0.0) - nx;
         out.normal = force_wrench(px, py, nx, ny);
         out.tangent = force_wrench(px, py, tx, ty);
         const auto edge = [&](const T& k) { const auto dir = friction_direction(nx, ny, k); return force_wrench(px, py, dir[0], dir[1]); };
-        const T mu = number<T>(c.mu), muk = number<T>(c.mu_kinetic);
-        if (c.mu == 0.0) {
+        const T mu = number<T>(v.mu), muk = number<T>(v.mu_kinetic);
+        if (v.mu.is_zero()) {
             out.cone = {out.normal};
         } else {
             out.cone = {edge(mu), edge(number<T>(0.0) - mu)};
         }
         out.slide_r = edge(number<T>(opposing_friction(ContactMode::SlidingRight)) * muk);
         out.slide_l = edge(number<T>(opposing_friction(ContactMode::SlidingLeft)) * muk);
-        out.kinetic_outside = c.mu_kinetic > c.mu;
+        out.kinetic_outside = compare(v.mu_kinetic, v.mu) > 0;
         // Same pair and same normal as an earlier contact: the wrenches are equal exactly when
-        // p x n (for N) or p . n (for T = (t, -p . n)) are; an interval that is a point decides.
+        // p x n (for N) or p . n (for T = (t, -p . n)) are, decided on the numbers as read.
         for (Index k = 0; k < d.contacts.size(); ++k) {
             const AssemblyContact& o = assembly.contacts[k];
-            if (o.a != ac.a || o.b != ac.b || o.contact.normal != c.normal) continue;
-            const Interval n0(c.normal.x()), n1(c.normal.y());
-            const Interval dx = Interval(c.point.x()) - Interval(o.contact.point.x());
-            const Interval dy = Interval(c.point.y()) - Interval(o.contact.point.y());
-            if (is_exact_zero(dx * n1 - dy * n0)) out.same_normal.push_back(k);
-            if (is_exact_zero(dx * n0 + dy * n1)) out.same_tangent.push_back(k);
+            if (o.a != ac.a || o.b != ac.b || !(values[k].normal == v.normal)) continue;
+            const momentlab::Rational dx = v.point[0] - values[k].point[0], dy = v.point[1] - values[k].point[1];
+            if ((dx * v.normal[1] - dy * v.normal[0]).is_zero()) out.same_normal.push_back(k);
+            if ((dx * v.normal[0] + dy * v.normal[1]).is_zero()) out.same_tangent.push_back(k);
         }
         d.contacts.push_back(std::move(out));
     }

@@ -29,15 +29,15 @@ BodyMotion body_motion(const Vec3& twist) {
 
 }  // namespace
 
-Equilibrium equilibrium(const Assembly& assembly, const Vec2& gravity) {
+Equilibrium equilibrium(const Assembly& assembly, const Rational2& gravity) {
     check_assembly(assembly);
-    if (!std::isfinite(gravity.x()) || !std::isfinite(gravity.y())) throw std::invalid_argument("gravity: expected finite numbers");
+    if (!to_double(gravity).allFinite()) throw std::invalid_argument("gravity: expected finite numbers");
     const AssemblyData<Interval> d = assembly_data<Interval>(assembly);
     std::vector<ForceColumn> columns;
-    const Program<Interval> p = equilibrium_program(d, Interval(gravity.x()), Interval(gravity.y()), &columns);
+    const Program<Interval> p = equilibrium_program(d, number<Interval>(gravity[0]), number<Interval>(gravity[1]), &columns);
     const FeasibilityAnswer answer = decide(p, [&] {
         const AssemblyData<assembly_detail::Rational> e = assembly_data<assembly_detail::Rational>(assembly);
-        return equilibrium_program(e, exact_value(gravity.x()), exact_value(gravity.y()));
+        return equilibrium_program(e, exact_value(gravity[0]), exact_value(gravity[1]));
     });
     Equilibrium out;
     out.can_stand = answer.status != Feasibility::Infeasible;

@@ -14,6 +14,21 @@ Rational exact_value(double x) {
     return times_power_of_two(Rational(Integer(mantissa)), static_cast<std::int64_t>(e) - 53);
 }
 
+namespace {
+
+// The dyadic number d exactly: its limbs (least significant first) times 2^binary_exponent.
+Rational dyadic_value(const Dyadic& d) {
+    Integer m = 0;
+    const std::span<const Dyadic::Limb> limbs = d.limbs();
+    for (std::size_t i = limbs.size(); i-- > 0;) m = (m << 64) | Integer(limbs[i]);
+    if (d.sign() == Sign::Negative) m = -m;
+    return times_power_of_two(Rational(m), d.binary_exponent());
+}
+
+}  // namespace
+
+Rational exact_value(const momentlab::Rational& x) { return dyadic_value(x.num()) / dyadic_value(x.den()); }
+
 Rational times_power_of_two(const Rational& x, std::int64_t k) {
     if (k == 0 || x == 0) return x;
     Integer p = numerator(x), q = denominator(x);

@@ -3,12 +3,13 @@
 // The exact numbers of the assembly layer: integers and rationals of any size (Boost.Multiprecision's
 // header-only cpp_int and cpp_rational, which compile to WebAssembly: no GMP). Every number of a
 // scene enters here, exactly: a double is the dyadic rational it stores (exact_value); a decimal
-// read as written (0.1 = 1/10) would enter as the rational it names, and nothing downstream changes.
+// read as typed (0.1 = 1/10) enters as the rational it names, and nothing downstream changes.
 
 #include <boost/multiprecision/cpp_int.hpp>
 #include <cstdint>
 #include <string>
 
+#include "momentlab/core/rational.hpp"
 #include "momentlab/core/sign.hpp"
 
 namespace momentlab::assembly_detail {
@@ -21,6 +22,8 @@ using Rational = boost::multiprecision::number<boost::multiprecision::rational_a
 
 /// The double x exactly (x finite).
 [[nodiscard]] Rational exact_value(double x);
+/// A scene's number exactly (a decimal as typed: 0.1 is 1/10).
+[[nodiscard]] Rational exact_value(const momentlab::Rational& x);
 /// x rounded to a double (for printing and for the floating-point guidance; decides nothing).
 [[nodiscard]] double approximate(const Rational& x);
 /// The exact sign.

@@ -46,6 +46,14 @@ struct Interval {
     [[nodiscard]] double mid() const { return lo * 0.5 + hi * 0.5; }
 };
 
+/// A scene's number enclosed (a decimal as typed): its correct rounding, and the doubles on
+/// either side of it unless it is exact (the value lies within half an ulp of its rounding).
+[[nodiscard]] inline Interval enclose(const momentlab::Rational& x) {
+    const double d = x.to_double();
+    if (x.is_double()) return Interval(d);
+    return {next_down(d), next_up(d)};
+}
+
 /// The rational x enclosed: its rounding, widened by one double on each side unless exact.
 [[nodiscard]] inline Interval enclose(const Rational& x) {
     const double d = approximate(x);

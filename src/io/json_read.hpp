@@ -46,6 +46,7 @@
 #include "momentlab/io/input_error.hpp"
 
 namespace momentlab {
+struct Contact;
 struct Scene;
 }
 
@@ -308,6 +309,10 @@ Vec2 nonzero(const Vec2& v, const Path& path);
 /// order of their keys.
 void known_fields(const Value& obj, const Path& path, std::initializer_list<std::string_view> known,
                   InputWarnings* warnings);
+
+/// The contact of a kept object's "point", "normal", "mu" (default 0), "mu_kinetic" (default mu)
+/// and "name", with its exact values (0.1 is 1/10); its other members are not looked at.
+[[nodiscard]] Contact contact_of(const Value& c, const Path& path);
 
 /// What the scene reader keeps, and the scene of such a document (scene_json.cpp; for the
 /// benchmark's other readers).

@@ -52,13 +52,6 @@ Polygon polygon(const Value& v, const Path& path) {
     return p;
 }
 
-// x / m for m > 0, exactly: with x = xn / xd and m = mn / md, mn = M 2^e (M an odd integer),
-// x / m = (xn md 2^-e) / (xd M).
-Rational quotient(const Rational& x, const Rational& m) {
-    const std::int64_t e = m.num().binary_exponent();
-    return Rational((x.num() * m.den()).scaled(-e), x.den() * m.num().scaled(-e));
-}
-
 // The exact vertices of a polygon (as polygon() read them: 0.1 is 1/10).
 std::vector<Rational2> exact_polygon(const Value& v) {
     std::vector<Rational2> out;
@@ -67,67 +60,16 @@ std::vector<Rational2> exact_polygon(const Value& v) {
     return out;
 }
 
-// The contacts found from the polygons (`exact`: their vertices as typed, the body's first), with
-// their exact values where the polygons' or the top-level mu's are not doubles (every contact when
-// `all`: the contacts were found on scaled polygons): the point the vertex as typed, the normal
-// the touched edge's perpendicular (exact: a difference of decimals) in the sense find_contacts
-// gave it, scaled so that its larger coordinate is 1 (docs/formats.md).
-void exact_found_contacts(Scene& scene, const std::vector<std::vector<Rational2>>& exact, const Rational& mu, bool all) {
+// The contacts found from the polygons (`exact`: their vertices as typed, the body's first), as
+// typed (contact_as_typed): `scaled` when they were found on the scaled polygons.
+void exact_found_contacts(Scene& scene, const std::vector<std::vector<Rational2>>& exact, const Rational& mu, bool scaled) {
     for (std::size_t i = 0; i < scene.contacts.size(); ++i) {
         const ContactOrigin& o = scene.origins[i];
         const std::vector<Rational2>& touching = exact[o.body_vertex ? 0 : o.obstacle + 1];
         const std::vector<Rational2>& touched = exact[o.body_vertex ? o.obstacle + 1 : 0];
-        const Rational2& v = touching[o.vertex];
-        const Rational2 &a = touched[o.edge], &b = touched[(o.edge + 1) % touched.size()];
-        Contact& c = scene.contacts[i];
-        if (!all && is_double(v) && is_double(a) && is_double(b)) {
-            if (!mu.is_double()) c = Contact::make(rational(c.point), rational(c.normal), mu, std::nullopt, c.name);
-            continue;
-        }
-        Rational2 n{b[1] - a[1], a[0] - b[0]};  // (d.y, -d.x) for the edge d = b - a
-        const Rational along = n[0] * Rational(c.normal.x()) + n[1] * Rational(c.normal.y());
-        if (along.sign() == Sign::Negative) n = {-n[0], -n[1]};
-        const Rational largest = compare(n[0] * n[0], n[1] * n[1]) >= 0 ? n[0] : n[1];
-        const Rational size = largest.sign() == Sign::Negative ? -largest : largest;
-        c = Contact::make(v, Rational2{quotient(n[0], size), quotient(n[1], size)}, mu, std::nullopt, c.name);
+        scene.contacts[i] = contact_as_typed(scene.contacts[i], touching[o.vertex], touched[o.edge],
+                                             touched[(o.edge + 1) % touched.size()], mu, scaled);
     }
-}
-
-// The polygons times the least common denominator D of their exact coordinates (0.1 is 1/10),
-// when some coordinate is not a double and every product is one: overlap and contact are
-// unchanged by the scaling, and the products are exact. D receives the scale.
-std::optional<std::vector<Polygon>> scaled_polygons(const std::vector<std::vector<Rational2>>& exact, double& d) {
-    // Nothing to do when every coordinate is a double; nothing possible when a numerator is
-    // beyond doubles (a decimal of 17 digits: a cleared value is its numerator times a whole
-    // number). Both settled before any copy or product is made.
-    bool doubles = true;
-    for (const auto& p : exact) {
-        for (const Rational2& v : p) {
-            for (const Rational& x : v) {
-                if (!x.num().fits_double()) return std::nullopt;
-                doubles = doubles && x.is_double();
-            }
-        }
-    }
-    if (doubles) return std::nullopt;
-    std::vector<Rational> all;
-    for (const auto& p : exact) {
-        for (const Rational2& v : p) all.insert(all.end(), v.begin(), v.end());
-    }
-    Dyadic common;
-    const std::vector<Dyadic> cleared = clear_denominators(all, &common);
-    if (!common.fits_double()) return std::nullopt;
-    for (const Dyadic& x : cleared) {
-        if (!x.fits_double()) return std::nullopt;
-    }
-    d = common.to_double();
-    std::vector<Polygon> out;
-    std::size_t at = 0;
-    for (const auto& p : exact) {
-        Polygon& q = out.emplace_back();
-        for (std::size_t i = 0; i < p.size(); ++i, at += 2) q.emplace_back(cleared[at].to_double(), cleared[at + 1].to_double());
-    }
-    return out;
 }
 
 Body read_body(const Value& b, const Path& path, InputWarnings* w) {
@@ -168,6 +110,14 @@ Body read_body(const Value& b, const Path& path, InputWarnings* w) {
 Contact read_contact(const Value& c, const Path& path, InputWarnings* w) {
     if (!c.is_object()) throw InputError(path.str(), "expected an object with \"point\" and \"normal\"");
     known_fields(c, path, {"point", "normal", "mu", "mu_kinetic", "name"}, w);
+    return json_read::contact_of(c, path);
+}
+
+}  // namespace
+
+namespace json_read {
+
+Contact contact_of(const Value& c, const Path& path) {
     static constexpr std::array<std::string_view, 5> kFields = {"point", "normal", "mu", "mu_kinetic", "name"};
     const auto [given_point, given_normal, mu, mu_kinetic, name] = c.find(kFields);
     if (!given_point) throw InputError(path.str(), "missing field \"point\"");
@@ -195,6 +145,10 @@ Contact read_contact(const Value& c, const Path& path, InputWarnings* w) {
     v.mu_kinetic_double = kinetic.value_or(friction);
     return Contact::make(std::move(v), std::move(text));
 }
+
+}  // namespace json_read
+
+namespace {
 
 Scene read_scene(const Value& doc, InputWarnings* w) {
     const Path root("$");

@@ -87,10 +87,65 @@ void check_distance(const ContactFinding& options) {
     if (!(options.distance >= 0.0)) throw std::invalid_argument("find_contacts: distance must be >= 0");
 }
 
+// x / m for m > 0, exactly: with x = xn / xd and m = mn / md, mn = M 2^e (M an odd integer),
+// x / m = (xn md 2^-e) / (xd M).
+Rational quotient(const Rational& x, const Rational& m) {
+    const std::int64_t e = m.num().binary_exponent();
+    return Rational((x.num() * m.den()).scaled(-e), x.den() * m.num().scaled(-e));
+}
+
 }  // namespace
 
+Contact contact_as_typed(const Contact& found, const Rational2& v, const Rational2& a, const Rational2& b, const Rational& mu,
+                         bool scaled) {
+    if (!scaled && is_double(v) && is_double(a) && is_double(b)) {
+        if (mu.is_double()) return found;
+        return Contact::make(rational(found.point), rational(found.normal), mu, std::nullopt, found.name);
+    }
+    Rational2 n{b[1] - a[1], a[0] - b[0]};  // (d.y, -d.x) for the edge d = b - a
+    const Rational along = n[0] * Rational(found.normal.x()) + n[1] * Rational(found.normal.y());
+    if (along.sign() == Sign::Negative) n = {-n[0], -n[1]};
+    const Rational largest = compare(n[0] * n[0], n[1] * n[1]) >= 0 ? n[0] : n[1];
+    const Rational size = largest.sign() == Sign::Negative ? -largest : largest;
+    return Contact::make(v, Rational2{quotient(n[0], size), quotient(n[1], size)}, mu, std::nullopt, found.name);
+}
+
+std::optional<std::vector<Polygon>> scaled_polygons(const std::vector<std::vector<Rational2>>& exact, double& d) {
+    // Nothing to do when every coordinate is a double; nothing possible when a numerator is
+    // beyond doubles (a decimal of 17 digits: a cleared value is its numerator times a whole
+    // number). Both settled before any copy or product is made.
+    bool doubles = true;
+    for (const auto& p : exact) {
+        for (const Rational2& v : p) {
+            for (const Rational& x : v) {
+                if (!x.num().fits_double()) return std::nullopt;
+                doubles = doubles && x.is_double();
+            }
+        }
+    }
+    if (doubles) return std::nullopt;
+    std::vector<Rational> all;
+    for (const auto& p : exact) {
+        for (const Rational2& v : p) all.insert(all.end(), v.begin(), v.end());
+    }
+    Dyadic common;
+    const std::vector<Dyadic> cleared = clear_denominators(all, &common);
+    if (!common.fits_double()) return std::nullopt;
+    for (const Dyadic& x : cleared) {
+        if (!x.fits_double()) return std::nullopt;
+    }
+    d = common.to_double();
+    std::vector<Polygon> out;
+    std::size_t at = 0;
+    for (const auto& p : exact) {
+        Polygon& q = out.emplace_back();
+        for (std::size_t i = 0; i < p.size(); ++i, at += 2) q.emplace_back(cleared[at].to_double(), cleared[at + 1].to_double());
+    }
+    return out;
+}
+
 std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygon>& obstacles,
-                                   const ContactFinding& options) {
+                                   const ContactFinding& options, std::vector<ContactOrigin>* origins) {
     check_distance(options);
     for (std::size_t i = 0; i <= obstacles.size(); ++i) {
         const Polygon& p = i == 0 ? body : obstacles[i - 1];
@@ -105,7 +160,7 @@ std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygo
                                         ", for instance at (" + shortest(x->x()) + ", " + shortest(x->y()) + ")");
         }
     }
-    return detail::find_contacts_of_simple(body, obstacles, options);
+    return detail::find_contacts_of_simple(body, obstacles, options, origins);
 }
 
 std::vector<Contact> detail::find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,

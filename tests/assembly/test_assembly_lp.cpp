@@ -11,6 +11,7 @@
 #include <random>
 
 #include "../common/sizes.hpp"
+#include "assembly/interval.hpp"
 #include "assembly/linear_program.hpp"
 
 namespace momentlab::assembly_detail {
@@ -338,6 +339,31 @@ TEST(LinearProgram, PreconditionedEnclosuresHoldTheExactSolution) {
     // Two equal columns: singular, not shown regular.
     std::vector<SparseColumn<Interval>> singular = {{{0, Interval(1.0)}, {1, Interval(2.0)}}, {{0, Interval(1.0)}, {1, Interval(2.0)}}};
     EXPECT_FALSE(enclose_solution(singular, {Interval(1.0), Interval(1.0)}));
+}
+
+// A decimal that is not a double (0.1 as typed) enters the interval programs as an interval that
+// holds it: shrunk to its rounding, the exact value would lie outside. Decimals of 1..19 digits
+// and their negatives, checked with GMP against the interval's ends.
+TEST(Interval, DecimalsAreEnclosed) {
+    Rng r(2026);
+    int strict = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const int digits = r.integer(1, 19), scale = r.integer(0, 25);
+        std::string text = trial % 2 ? "-" : "";
+        for (int i = 0; i < digits; ++i) text += static_cast<char>('0' + r.integer(i == 0 ? 1 : 0, 9));
+        text += "e-" + std::to_string(scale);
+        const std::optional<momentlab::Rational> x = momentlab::Rational::parse(text);
+        ASSERT_TRUE(x) << text;
+        const Interval i = enclose(*x);
+        mpq_class exact(std::string(text.substr(0, text.find('e'))));
+        mpz_class ten;
+        mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(scale));
+        exact /= ten;
+        EXPECT_LE(mpq_class(i.lo), exact) << text;
+        EXPECT_GE(mpq_class(i.hi), exact) << text;
+        strict += mpq_class(i.lo) < exact && exact < mpq_class(i.hi);
+    }
+    EXPECT_GT(strict, 1500);  // most are not doubles: strictly inside
 }
 
 }  // namespace

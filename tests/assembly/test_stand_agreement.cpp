@@ -210,13 +210,13 @@ TEST(StandOracle, RandomAssembliesAgreeWithExactOracle) {
         const std::string what = std::string(g.family) + " case " + std::to_string(k);
         const assembly_oracle::QAssembly q = assembly_oracle::exact(g.assembly);
         const Vec2 gravity(0, -1);
-        const Equilibrium e = equilibrium(g.assembly, gravity);
+        const Equilibrium e = equilibrium(g.assembly, rational(gravity));
         ASSERT_EQ(e.can_stand, assembly_oracle::can_stand(q, 0, -1)) << what;
         stand_count += e.can_stand;
         expect_same_tilt(q, tilt_cone(g.assembly), what);
         ++tilts;
         if (g.assembly.contacts.size() <= 6) {
-            const AssemblyModes m = assembly_modes(g.assembly, gravity);
+            const AssemblyModes m = assembly_modes(g.assembly, rational(gravity));
             const std::set<std::string> expected = assembly_oracle::modes(q, 0, -1);
             ASSERT_EQ(std::set<std::string>(m.modes.begin(), m.modes.end()), expected) << what;
             EXPECT_EQ(m.verdict, verdict_of(expected.size())) << what;
@@ -273,7 +273,7 @@ TEST(StandOracle, ArchesAndWallsAgreeWithExactOracle) {
     const auto decide = [&](const Assembly& a, const assembly_oracle::QAssembly& q, const Vec2& g, bool on_boundary,
                             const std::string& what) {
         const bool expected = assembly_oracle::can_stand(q, Q(g.x()), Q(g.y()));
-        EXPECT_EQ(equilibrium(a, g).can_stand, expected) << what << ", gravity " << g.transpose();
+        EXPECT_EQ(equilibrium(a, rational(g)).can_stand, expected) << what << ", gravity " << g.transpose();
         ++decisions;
         boundary += on_boundary;
         stands += expected;
@@ -384,7 +384,7 @@ TEST(StandOneBody, ModesAreThoseOfQueryOnRandomScenes) {
         std::vector<std::string> expected;
         for (const Mode& mode : answer.modes) expected.push_back(mode.letters);
         std::sort(expected.begin(), expected.end());
-        const AssemblyModes got = assembly_modes(assembly_of(s), Vec2(0, -1));
+        const AssemblyModes got = assembly_modes(assembly_of(s), rational(Vec2(0, -1)));
         std::vector<std::string> letters = got.modes;
         std::sort(letters.begin(), letters.end());
         ASSERT_EQ(letters, expected) << "case " << k;

@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 import momentlab as ml
+import oracle
 from conftest import EXAMPLES, cli
 
 MR = EXAMPLES / "assembly-modern-robotics.json"
@@ -24,6 +25,11 @@ G = 9.81
 
 def doc_of(path):
     return json.loads(path.read_text())
+
+
+def as_typed(text):
+    """A scene's text as Python values with the meaning the file has: decimals as Decimals."""
+    return json.loads(text, parse_float=Decimal)
 
 
 def assembly(doc):
@@ -163,13 +169,18 @@ def arch_stands(mu):
 
 def test_arch():
     doc = doc_of(ARCH)
-    mu = Fraction(doc["contacts"][0]["mu"])  # the double nearest 0.3, exactly
+    mu = json.loads(ARCH.read_text(), parse_float=Fraction)["contacts"][0]["mu"]  # 3/10, as typed
     k = (2 - mu) / (1 + 2 * mu)
     gamma = k * (5 * mu - k) / (5 * k - mu)
+    assert gamma == Fraction(595, 6416)
     r = ml.stand(ml.Assembly.from_file(ARCH), tilt=True)
     assert r.can_stand and r.outcome == "stands" and "ffffffff" in r.modes and r.motions == []
     assert r.tilt.kind == "wedge" and r.tilt.directions == wedge(-gamma, gamma)
-    assert float(gamma) == pytest.approx(595 / 6416, rel=1e-15)
+    # the same numbers as Python floats: mu the double nearest 0.3, a little below 3/10
+    binary = Fraction(0.3)
+    k = (2 - binary) / (1 + 2 * binary)
+    binary_gamma = k * (5 * binary - k) / (5 * k - binary)
+    assert binary_gamma < gamma and ml.stand(assembly(doc), tilt=True).tilt.directions == wedge(-binary_gamma, binary_gamma)
     check_equilibrium(doc, r, (0.0, -G))
     for m in (0.2385, 0.2386, 0.25, 0.2):
         for c in doc["contacts"]:
@@ -257,7 +268,7 @@ def same_as_cli(path, python_result, *options):
 @pytest.mark.parametrize("path", ASSEMBLIES, ids=lambda p: p.stem)
 def test_examples_equal_the_cli(path):
     same_as_cli(path, ml.stand(ml.Assembly.from_file(path), tilt=True), "--tilt")
-    same_as_cli(path, ml.stand(assembly(doc_of(path)), gravity=(1, -3)), "--gravity", "1", "-3")
+    same_as_cli(path, ml.stand(assembly(as_typed(path.read_text())), gravity=(1, -3)), "--gravity", "1", "-3")
 
 
 def test_one_body_scene_equals_the_cli():
@@ -287,7 +298,7 @@ def test_random_assemblies_equal_the_cli(tmp_path):
         path = tmp_path / f"random-{i}.json"
         path.write_text(json.dumps(doc))
         g = (rng.choice([-1, 0, 0.5, 1]), -rng.randint(1, 4))
-        r = ml.stand(assembly(doc), gravity=g, tilt=True)
+        r = ml.stand(assembly(as_typed(path.read_text())), gravity=g, tilt=True)
         same_as_cli(path, r, "--gravity", *map(str, g), "--tilt")
         outcomes.add(r.can_stand)
     assert outcomes == {True, False}
@@ -415,3 +426,159 @@ def test_cli_draws_the_stand_picture(tmp_path):
     assert falls.returncode == 0 and "falls: a collapse mechanism" in (tmp_path / "mr.svg").read_text()
     bad = cli("draw", EXAMPLES / "figure-1a-force.json", "--what", "stand", "-o", tmp_path / "bad.svg", check=False)
     assert bad.returncode == 2 and bad.stderr.startswith("momentlab: $") and not (tmp_path / "bad.svg").exists()
+
+
+# -- numbers as typed (docs/design.md): decimals in files and --gravity are the decimals they spell --
+
+# A unit-ish block on the ramp y = 0.3 x (integer corners (0, 0), (10, 3)), its bottom corners
+# (2, 0.6) and (4, 1.2) on the ramp exactly in decimals; in doubles 0.6 is below the line.
+RAMP = {"bodies": [{"mass": 1, "com": [2.85, 1.4], "inertia": 1,
+                    "polygon": [[2, 0.6], [4, 1.2], [3.7, 2.2], [1.7, 1.6]]}],
+        "obstacles": [{"polygon": [[0, 0], [10, 0], [10, 3]]}]}
+
+
+def ramp_text(mu):
+    return json.dumps(RAMP)[:-1] + f', "mu": {mu}}}'
+
+
+def test_block_on_a_decimal_ramp_at_its_friction_limit(tmp_path):
+    # The ramp's normal n = (-0.3, 1), t = (1, 0.3): the cone edge n + mu t = (0, 1 + 0.09) at
+    # mu = 0.3 is vertical, so the weight lies on the cone's edge: it stands, on the boundary;
+    # any less friction and it slides. Its com (2.85) is over the base [2, 4].
+    for mu, stands in (("0.3", True), ("0.29", False), ("0.31", True)):
+        path = tmp_path / f"ramp-{mu}.json"
+        path.write_text(ramp_text(mu))
+        r = cli("stand", path, "--json")
+        assert r["can_stand"] is stands, mu
+        assert r["outcome"] == ("stands" if stands else "falls"), mu
+        # the contacts as found: the two bottom corners, the ramp's normal exactly
+        a = ml.Assembly.from_file(path)
+        assert a.points.tolist() == [[2.0, 0.6], [4.0, 1.2]] and a.normals.tolist() == [[-0.3, 1.0], [-0.3, 1.0]]
+        assert ml.stand(a).can_stand is stands
+        # Python's exact values read the same: Decimals and Fractions as typed
+        exact = json.loads(ramp_text(mu), parse_float=Decimal)
+        assert ml.stand(assembly(exact)).can_stand is stands
+
+
+def test_typed_gravity_exactly_at_the_friction_limit(tmp_path):
+    # A block on the floor (two corners, mu = 0.3 typed): it stands exactly when |gx| <= 0.3 |gy|.
+    doc = {"bodies": [{"mass": 2, "com": [1, 0.5], "inertia": 1, "polygon": [[0, 0], [2, 0], [2, 1], [0, 1]]}],
+           "obstacles": [{"polygon": [[-5, -1], [5, -1], [5, 0], [-5, 0]]}], "mu": 0.3}
+    path = tmp_path / "block.json"
+    path.write_text(json.dumps(doc))
+    # (19 digits: within an ulp of 0.9, on either side; their doubles are 0.9's, and the
+    # enclosures of the decimals must leave the decision to the exact path)
+    for gx in ("0.9", "0.91", "-0.9", "0.89", "0.8999999999999999999", "0.9000000000000000001"):
+        stands = abs(Fraction(gx)) <= Fraction(3, 10) * 3
+        assert cli("stand", path, "--gravity", gx, "-3", "--json")["can_stand"] is stands, gx
+        a = ml.Assembly.from_file(path)
+        assert ml.stand(a, gravity=(Decimal(gx), -3)).can_stand is stands, gx
+        assert ml.stand(a, gravity=(gx, "-3")).can_stand is stands, gx
+        # a float is its binary value: 0.9 is a little above 9/10
+        binary = abs(Fraction(float(gx))) <= Fraction(3, 10) * 3
+        assert ml.stand(a, gravity=(float(gx), -3)).can_stand is binary, gx
+    assert Fraction(0.9) > Fraction(9, 10)  # so the float 0.9 slides where the decimal stands
+    picture = tmp_path / "block.svg"
+    falls = cli("draw", path, "--what", "stand", "--gravity", "0.91", "-3", "-o", picture)
+    assert falls.returncode == 0 and "falls: a collapse mechanism" in picture.read_text()
+    cli("draw", path, "--what", "stand", "--gravity", "0.9", "-3", "-o", picture)
+    assert "falls" not in picture.read_text()
+    bad = cli("draw", path, "--what", "modes", "--gravity", "0", "-1", "-o", picture, check=False)
+    assert bad.returncode == 2 and bad.stderr.startswith("momentlab: --gravity")
+
+
+def equilibrium_exists(doc, gravity):
+    """The oracle: some contact forces in their cones balance every body's weight, decided by an
+    exact phase-1 simplex (tests/python/oracle.py) on the scene's numbers read as Fractions from
+    their text. Columns: each contact's cone edges n +- mu t (n alone at mu = 0) as wrenches
+    through its point, on body a's rows and negated on body b's."""
+    bodies, rows = doc["bodies"], 3 * len(doc["bodies"])
+    gx, gy = gravity
+    b = [Fraction(0)] * rows
+    for k, body in enumerate(bodies):
+        m, (cx, cy) = body["mass"], body["com"]
+        b[3 * k:3 * k + 3] = [-m * gx, -m * gy, -(cx * m * gy - cy * m * gx)]
+    columns = []
+    for c in doc["contacts"]:
+        (px, py), (nx, ny), mu = c["point"], c["normal"], c.get("mu", Fraction(0))
+        tx, ty = ny, -nx
+        for s in ((mu, -mu) if mu else (0,)):
+            fx, fy = nx + s * tx, ny + s * ty
+            col = [Fraction(0)] * rows
+            a, bb = c["bodies"]
+            for body, sign in ((a, 1), (bb, -1)):
+                if body:
+                    col[3 * (body - 1):3 * body] = [sign * fx, sign * fy, sign * (px * fy - py * fx)]
+            columns.append(col)
+    A = [[Fraction(col[i]) for col in columns] for i in range(rows)]  # Fractions: no int division
+    return oracle._nonneg_solution(A, [Fraction(v) for v in b]) is not None
+
+
+def decimal_stack(rng, gravity):
+    """1-3 blocks stacked on a ramp of decimal slope s, with listed contacts: each block's bottom
+    corners on the block below (or the ramp) at decimal points a d + h n (d = (1, s), n = (-s, 1));
+    mu per interface a decimal, often s itself (the weight of a block alone then lies on its
+    cone's edge); its com often on the line along gravity through a corner, corner + 0.5 (-gx, 1)
+    for gravity (gx, -1) (on that block's tipping boundary: a relation among decimals that their
+    doubles miss), else in the middle of its base or anywhere above it."""
+    s = Fraction(rng.choice(range(-5, 6)), 10)
+    d, n = (1, s), (-s, 1)
+    at = lambda a, h: [a * d[0] + h * n[0], a * d[1] + h * n[1]]
+    bodies, contacts, lo, hi, h = [], [], Fraction(0), Fraction(4), Fraction(0)
+    for k in range(rng.randint(1, 3)):
+        lo2 = lo + Fraction(rng.randint(-10, 10), 10)
+        hi2 = lo2 + Fraction(rng.randint(5, 30), 10)
+        a1, a2 = max(lo, lo2), min(hi, hi2)  # the overlap with the block below
+        if a1 >= a2:
+            break
+        mu = rng.choice([abs(s), abs(s), Fraction(rng.randint(0, 8), 10)])
+        for a in (a1, a2):
+            contacts.append({"bodies": [k + 1, k], "point": at(a, h), "normal": list(n), "mu": mu})
+        corner = at(rng.choice([a1, a2]), h)
+        tipping = [corner[0] - gravity[0] / 2, corner[1] + Fraction(1, 2)]
+        com = rng.choice([tipping, tipping,
+                          at((lo2 + hi2) / 2, h + Fraction(1, 2)),
+                          at(Fraction(rng.randint(int(10 * lo2), int(10 * hi2)), 10), h + Fraction(1, 2))])
+        bodies.append({"mass": Fraction(rng.randint(1, 30), 10), "com": com, "inertia": 1})
+        on_tipping_line = [com[0] - corner[0], com[1] - corner[1]] == [-gravity[0] / 2, Fraction(1, 2)]
+        lo, hi, h = lo2, hi2, h + 1
+    return {"bodies": bodies, "contacts": contacts}, bool(bodies) and on_tipping_line
+
+
+def decimal_text(x):
+    """A Fraction whose denominator divides a power of ten, as its decimal text."""
+    k = 0
+    while (x * 10 ** k).denominator != 1:
+        k += 1
+    v = x * 10 ** k
+    return f"{v.numerator}e-{k}" if k else str(v.numerator)
+
+
+def test_random_decimal_stacks_agree_with_an_exact_oracle(tmp_path):
+    rng = random.Random(4647)
+    counts = {"scenes": 0, "stands": 0, "top block on its tipping line": 0, "binary differs": 0}
+    for i in range(60):
+        gravity = (Fraction(rng.choice([0, 0, 1, -1, 3]), 10), Fraction(-1))
+        doc, boundary = decimal_stack(rng, gravity)
+        while not doc["bodies"]:
+            doc, boundary = decimal_stack(rng, gravity)
+        expected = equilibrium_exists(doc, gravity)
+        text = json.dumps(doc, default=lambda x: "@" + decimal_text(x) + "@").replace('"@', "").replace('@"', "")
+        path = tmp_path / f"stack-{i}.json"
+        path.write_text(text)
+        g = [decimal_text(x) for x in gravity]
+        assert cli("stand", path, "--gravity", *g, "--json")["can_stand"] is expected, text
+        assert ml.stand(ml.Assembly.from_json(text), gravity=tuple(g)).can_stand is expected, text
+        # The same numbers as binary doubles are another scene: the oracle on their exact values.
+        binary = json.loads(text)
+        as_doubles = json.loads(text, parse_float=lambda t: Fraction(float(t)))
+        float_gravity = tuple(float(x) for x in gravity)
+        binary_expected = equilibrium_exists(as_doubles, tuple(Fraction(x) for x in float_gravity))
+        assert ml.stand(assembly(binary), gravity=float_gravity).can_stand is binary_expected, text
+        counts["scenes"] += 1
+        counts["stands"] += expected
+        counts["top block on its tipping line"] += boundary
+        counts["binary differs"] += expected != binary_expected
+    print(counts)
+    assert counts["stands"] not in (0, counts["scenes"]) and counts["binary differs"] > 0
+    assert 3 * counts["top block on its tipping line"] >= counts["scenes"]

@@ -8,6 +8,7 @@
 /// force. A one-body scene is the assembly with N = 1 and every contact (1, 0).
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +29,13 @@ struct AssemblyBody {
     /// When given instead, the inertia is exactly mass * radius_of_gyration^2.
     std::optional<double> radius_of_gyration;
     Polygon polygon;
+    /// The exact values of mass, com, inertia (0 when not given) and radius of gyration when
+    /// some are not the doubles above (a decimal as typed), the doubles being their correct
+    /// roundings; none when the doubles are exact (as Body::exact).
+    std::shared_ptr<const BodyValues> exact = nullptr;
+    /// The exact values in force: `exact` while the doubles are still its roundings, else none
+    /// (then the doubles are the exact values).
+    [[nodiscard]] const BodyValues* exact_values() const;
 };
 
 /// A point contact of body `a` (1..N) with body `b` (0: the world, or 1..N other than a): the
@@ -45,6 +53,12 @@ struct Assembly {
     std::vector<Polygon> obstacles;
     /// How far apart polygons may be and still touch (scene files' "contact_distance"), when given.
     std::optional<double> contact_distance;
+    /// The polygons' vertices as typed, the bodies' (empty for a body without one) then the
+    /// obstacles', when some are not doubles (0.1 is 1/10): overlap is then decided on them
+    /// (scaled_polygons), while the doubles above are still their roundings.
+    std::shared_ptr<const std::vector<std::vector<Rational2>>> exact_polygons = nullptr;
+    /// exact_polygons while the polygons' doubles are still their roundings, else none.
+    [[nodiscard]] const std::vector<std::vector<Rational2>>* exact_polygons_in_force() const;
 };
 
 /// The one-body scene as an assembly: body 1 (the scene's body), every contact (1, 0), the same
@@ -55,10 +69,13 @@ struct Assembly {
 /// each body a = 1..N, its contacts with the obstacles (b = 0), then with each earlier body
 /// b = 1..a-1, each pair's contacts as find_contacts gives them (the normal into a; a stack listed
 /// from the bottom up has its normals pointing up). Bodies without a polygon touch nothing.
-/// Throws std::invalid_argument as find_contacts does.
+/// Throws std::invalid_argument as find_contacts does. When `origins` is given, it receives
+/// where each contact was found (ContactOrigin: the vertex of body a's polygon or of the other's,
+/// `obstacle` the obstacle's index when b = 0), one per contact.
 [[nodiscard]] std::vector<AssemblyContact> find_assembly_contacts(const std::vector<AssemblyBody>& bodies,
                                                                   const std::vector<Polygon>& obstacles,
-                                                                  const ContactFinding& options = {});
+                                                                  const ContactFinding& options = {},
+                                                                  std::vector<ContactOrigin>* origins = nullptr);
 
 /// Checks an assembly: at least one body; each body's mass finite and > 0, its centre of mass
 /// finite, its inertia or radius of gyration (at most one of them) finite and > 0, its polygon

@@ -18,9 +18,10 @@
 namespace momentlab {
 
 /// Gravity acts on every body at its centre of mass: the body's gravity wrench is
-/// (m g, c x m g). The default is (0, -9.81); only its direction matters for every answer here
-/// (each condition is homogeneous in it), so any units do.
-inline const Vec2 kDefaultGravity = Vec2(0.0, -9.81);
+/// (m g, c x m g), exactly as given (decimals as typed: -9.81 is -981/100). The default is
+/// (0, -9.81); only its direction matters for every answer here (each condition is homogeneous
+/// in it), so any units do.
+inline const Rational2 kDefaultGravity = {Rational(), Rational(Dyadic(-981.0), Dyadic(100.0))};
 
 /// One body's motion in a collapse mechanism: its twist (vx, vy, omega) (rounded) and, when it
 /// turns, its rotation centre (x, y) = (-vy, vx) / omega.
@@ -45,7 +46,7 @@ struct Equilibrium {
 };
 
 /// Decides equilibrium under `gravity`. Throws as check_assembly does.
-[[nodiscard]] Equilibrium equilibrium(const Assembly& assembly, const Vec2& gravity = kDefaultGravity);
+[[nodiscard]] Equilibrium equilibrium(const Assembly& assembly, const Rational2& gravity = kDefaultGravity);
 
 /// An exact direction of the plane, given by its two coordinates scaled so that the larger in
 /// magnitude is +-1: each as exact text ("1", "-3/7") and rounded.
@@ -89,7 +90,7 @@ struct AssemblyModes {
 /// Enumerates the modes. Needs every body's inertia. For one body the modes and the verdict are
 /// those of query(analyze(scene), gravity wrench). Throws as check_assembly does, and
 /// std::invalid_argument for a body without inertia (naming it).
-[[nodiscard]] AssemblyModes assembly_modes(const Assembly& assembly, const Vec2& gravity = kDefaultGravity);
+[[nodiscard]] AssemblyModes assembly_modes(const Assembly& assembly, const Rational2& gravity = kDefaultGravity);
 
 /// What a user asks of an assembly at rest under gravity.
 enum class Outcome {
@@ -107,7 +108,7 @@ enum class Outcome {
 
 /// Options of stand().
 struct StandOptions {
-    Vec2 gravity = kDefaultGravity;
+    Rational2 gravity = kDefaultGravity;
     /// Also the tilt cone.
     bool tilt = false;
     /// The modes are enumerated up to this many contacts (the search over letter strings can

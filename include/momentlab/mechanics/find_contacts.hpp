@@ -3,6 +3,7 @@
 /// \file
 /// Contacts from geometry: a body polygon touching fixed polygons.
 
+#include <optional>
 #include <vector>
 
 #include "momentlab/mechanics/scene.hpp"
@@ -35,15 +36,34 @@ struct ContactFinding {
 /// obstacle (their interiors meet: polygons_overlap, exact, no tolerance) or a negative distance.
 /// Each touched polygon's edges are indexed in a grid (docs/benchmarks.md, Polygons): O((n + m)
 /// log(n + m)) with the simplicity checks for outlines of n and m vertices whose edges do not
-/// crowd into a few cells.
+/// crowd into a few cells. When `origins` is given, it receives where each contact was found,
+/// one per contact.
 [[nodiscard]] std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygon>& obstacles,
-                                                 const ContactFinding& options = {});
+                                                 const ContactFinding& options = {},
+                                                 std::vector<ContactOrigin>* origins = nullptr);
+
+/// Polygons given exactly (decimal vertices as typed: 0.1 is 1/10) times the least common
+/// denominator D of their coordinates, when some coordinate is not a double and every product
+/// is one: overlap and contact are unchanged by the scaling and the products are exact, so
+/// find_contacts and polygons_overlap on them decide for the decimals. `scale` receives D.
+/// nullopt when every coordinate is a double (nothing to do) or some product is not one (a
+/// decimal of 17 digits): then the polygons' doubles decide.
+[[nodiscard]] std::optional<std::vector<Polygon>> scaled_polygons(const std::vector<std::vector<Rational2>>& exact,
+                                                                  double& scale);
+
+/// A contact find_contacts found, with the numbers as typed: the point the touching vertex
+/// `vertex`, the normal the perpendicular of the touched edge from `from` to `to` (exact: a
+/// difference of decimals) in the sense of found.normal, scaled so that its larger coordinate
+/// is +-1 (docs/formats.md), friction `mu` (static and kinetic). When the three points are
+/// doubles and the contacts were not found on scaled polygons, `found` itself (with `mu` when
+/// it is not a double).
+[[nodiscard]] Contact contact_as_typed(const Contact& found, const Rational2& vertex, const Rational2& from,
+                                       const Rational2& to, const Rational& mu, bool scaled);
 
 namespace detail {
 /// find_contacts for polygons the caller has already found simple (polygon_problem gave "") and
 /// not overlapping (polygons_overlap gave none): reading a scene checks each outline as it reads
-/// it, and sweeps it only once. When `origins` is given, it receives where each contact was
-/// found, one per contact.
+/// it, and sweeps it only once. `origins` as find_contacts.
 [[nodiscard]] std::vector<Contact> find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
                                                            const ContactFinding& options,
                                                            std::vector<ContactOrigin>* origins = nullptr);
