@@ -6,6 +6,8 @@
 // infeasibility rules out every completion). A complete string that passes both is a mode.
 #include <optional>
 
+#include "momentlab/core/parallel.hpp"
+
 #include "assembly_programs.hpp"
 #include "momentlab/assembly/stand.hpp"
 #include "momentlab/io/input_error.hpp"
@@ -22,17 +24,7 @@ public:
         : assembly_(assembly), gravity_(gravity), d_(assembly_data<Interval>(assembly)),
           gx_(number<Interval>(gravity[0])), gy_(number<Interval>(gravity[1])) {}
 
-    AssemblyModes run() {
-        AssemblyModes out;
-        search(std::string(), out.modes);
-        out.verdict = verdict_of(out.modes.size());
-        for (const std::string& m : out.modes) {
-            if (has_motion(m)) out.motions.push_back(m);
-        }
-        return out;
-    }
 
-private:
     const AssemblyData<assembly_detail::Rational>& exact() {
         if (!exact_) exact_ = assembly_data<assembly_detail::Rational>(assembly_);
         return *exact_;
@@ -52,14 +44,10 @@ private:
         return a.status != Feasibility::Infeasible;
     }
 
+    bool passes(const std::string& prefix) { return (prefix.empty() || cell_nonempty(prefix)) && loads_hold(prefix); }
+
     void search(const std::string& prefix, std::vector<std::string>& modes) {
-        if (!prefix.empty() && !cell_nonempty(prefix)) return;
-        if (!loads_hold(prefix)) return;
-        if (prefix.size() == d_.contacts.size()) {
-            modes.push_back(prefix);
-            return;
-        }
-        for (char letter : {'f', 's', 'r', 'l'}) search(prefix + letter, modes);
+        if (passes(prefix)) below(prefix, modes);
     }
 
     // A program with one more row, x_i (times sign) minus a strict slack = 0, and only that
@@ -72,6 +60,25 @@ private:
         for (std::size_t j = 0; j < p.strict.size(); ++j) p.strict[j] = false;
         p.add({{row, number<T>(-1.0)}}, false, true);
         return p;
+    }
+
+    // The prefixes of up to `depth` letters that pass (and the modes shorter than that), in order.
+    void prefixes(const std::string& prefix, std::size_t depth, std::vector<std::string>& out) {
+        if (!passes(prefix)) return;
+        if (prefix.size() == d_.contacts.size() || prefix.size() == depth) {
+            out.push_back(prefix);
+            return;
+        }
+        for (char letter : {'f', 's', 'r', 'l'}) prefixes(prefix + letter, depth, out);
+    }
+
+    // The modes that extend `prefix` (which passes), in order.
+    void below(const std::string& prefix, std::vector<std::string>& modes) {
+        if (prefix.size() == d_.contacts.size()) {
+            modes.push_back(prefix);
+            return;
+        }
+        for (char letter : {'f', 's', 'r', 'l'}) search(prefix + letter, modes);
     }
 
     // Accelerations in the mode's open cell with the loads balanced and some body moving. With a
@@ -134,7 +141,31 @@ AssemblyModes assembly_modes(const Assembly& assembly, const Rational2& gravity)
                              "missing field \"inertia\" (or \"radius_of_gyration\"): the modes need it");
         }
     }
-    return ModeSearch(assembly, gravity).run();
+    // The search tree below the prefixes of three letters (at most 64 subtrees) on up to two
+    // threads, each with its own search (and exact data); the modes in the order of the letters.
+    ModeSearch top(assembly, gravity);
+    std::vector<std::string> starts;
+    top.prefixes(std::string(), 3, starts);
+    const bool large = assembly.contacts.size() >= 6;
+    std::vector<std::vector<std::string>> found(starts.size());
+    detail::for_each_index(starts.size(), large, [&](std::size_t i) { ModeSearch(assembly, gravity).below(starts[i], found[i]); });
+    AssemblyModes out;
+    for (std::vector<std::string>& modes : found) out.modes.insert(out.modes.end(), modes.begin(), modes.end());
+    out.verdict = verdict_of(out.modes.size());
+    // With an equilibrium of normal forces alone nothing moves (has_motion); else each mode's
+    // motion is looked for on up to two threads.
+    std::vector<char> moves(out.modes.size(), 0);
+    if (!top.frictionless_equilibrium()) {
+        detail::for_each_index(out.modes.size(), large, [&](std::size_t i) {
+            ModeSearch search(assembly, gravity);
+            search.frictionless_ = false;
+            moves[i] = search.has_motion(out.modes[i]);
+        });
+    }
+    for (std::size_t i = 0; i < out.modes.size(); ++i) {
+        if (moves[i]) out.motions.push_back(out.modes[i]);
+    }
+    return out;
 }
 
 }  // namespace momentlab

@@ -54,28 +54,6 @@ T number(const momentlab::Rational& x) {
     }
 }
 
-/// A contact's numbers exactly: its exact values, or its doubles when those are exact.
-inline ContactValues values_of(const Contact& c) {
-    if (const ContactValues* v = c.exact_values()) return *v;
-    ContactValues v;
-    v.point = rational(c.point);
-    v.normal = rational(c.normal);
-    v.mu = momentlab::Rational(c.mu);
-    v.mu_kinetic = momentlab::Rational(c.mu_kinetic);
-    return v;
-}
-
-/// A body's numbers exactly (as values_of(Contact)); the inertia 0 when the body has none.
-inline BodyValues values_of(const AssemblyBody& b) {
-    if (const BodyValues* v = b.exact_values()) return *v;
-    BodyValues v;
-    v.mass = momentlab::Rational(b.mass);
-    v.com = rational(b.com);
-    if (b.inertia) v.inertia = momentlab::Rational(*b.inertia);
-    if (b.radius_of_gyration) v.radius_of_gyration = momentlab::Rational(*b.radius_of_gyration);
-    return v;
-}
-
 template <class T>
 bool is_zero_number(const T& v) {
     if constexpr (std::is_same_v<T, Interval>) {
@@ -148,14 +126,21 @@ AssemblyData<T> assembly_data(const Assembly& assembly) {
     d.bodies = static_cast<Index>(assembly.bodies.size());
     for (const AssemblyBody& b : assembly.bodies) {
         BodyData<T> out;
-        const BodyValues v = values_of(b);
-        const T m = number<T>(v.mass), cx = number<T>(v.com[0]), cy = number<T>(v.com[1]);
+        // The numbers as read: the exact values of decimals, else the doubles.
+        const BodyValues* v = b.exact_values();
+        const T m = v ? number<T>(v->mass) : number<T>(b.mass);
+        const T cx = v ? number<T>(v->com[0]) : number<T>(b.com.x()), cy = v ? number<T>(v->com[1]) : number<T>(b.com.y());
         const T zero(number<T>(0.0));
         out.gravity_x = {m, zero, zero - m * cy};
         out.gravity_y = {zero, m, m * cx};
         if (b.inertia || b.radius_of_gyration) {
-            T ic = v.radius_of_gyration ? m * number<T>(*v.radius_of_gyration) * number<T>(*v.radius_of_gyration)
-                                        : number<T>(v.inertia);
+            T ic = zero;
+            if (b.radius_of_gyration) {
+                const T rho = v ? number<T>(*v->radius_of_gyration) : number<T>(*b.radius_of_gyration);
+                ic = m * rho * rho;
+            } else {
+                ic = v ? number<T>(v->inertia) : number<T>(*b.inertia);
+            }
             out.inertia = inertia_matrix(m, cx, cy, ic);
             const T one = number<T>(1.0);
             const T im = one / m, ii = one / ic;
@@ -166,36 +151,48 @@ AssemblyData<T> assembly_data(const Assembly& assembly) {
         }
         d.body.push_back(std::move(out));
     }
-    std::vector<ContactValues> values;
-    values.reserve(assembly.contacts.size());
     for (const AssemblyContact& ac : assembly.contacts) {
-        const ContactValues& v = values.emplace_back(values_of(ac.contact));
+        const Contact& c = ac.contact;
+        const ContactValues* v = c.exact_values();  // the decimals as read, when some are not doubles
         ContactData<T> out;
         out.a = static_cast<Index>(ac.a);
         out.b = static_cast<Index>(ac.b);
-        const T px = number<T>(v.point[0]), py = number<T>(v.point[1]);
-        const T nx = number<T>(v.normal[0]), ny = number<T>(v.normal[1]);
+        const T px = v ? number<T>(v->point[0]) : number<T>(c.point.x()), py = v ? number<T>(v->point[1]) : number<T>(c.point.y());
+        const T nx = v ? number<T>(v->normal[0]) : number<T>(c.normal.x()), ny = v ? number<T>(v->normal[1]) : number<T>(c.normal.y());
         const T tx = ny, ty = number<T>(0.0) - nx;
         out.normal = force_wrench(px, py, nx, ny);
         out.tangent = force_wrench(px, py, tx, ty);
         const auto edge = [&](const T& k) { const auto dir = friction_direction(nx, ny, k); return force_wrench(px, py, dir[0], dir[1]); };
-        const T mu = number<T>(v.mu), muk = number<T>(v.mu_kinetic);
-        if (v.mu.is_zero()) {
+        const T mu = v ? number<T>(v->mu) : number<T>(c.mu), muk = v ? number<T>(v->mu_kinetic) : number<T>(c.mu_kinetic);
+        if (c.mu == 0.0) {  // (a decimal is 0 exactly when its double is: the readers refuse the tiny)
             out.cone = {out.normal};
         } else {
             out.cone = {edge(mu), edge(number<T>(0.0) - mu)};
         }
         out.slide_r = edge(number<T>(opposing_friction(ContactMode::SlidingRight)) * muk);
         out.slide_l = edge(number<T>(opposing_friction(ContactMode::SlidingLeft)) * muk);
-        out.kinetic_outside = compare(v.mu_kinetic, v.mu) > 0;
+        out.kinetic_outside = v ? compare(v->mu_kinetic, v->mu) > 0 : c.mu_kinetic > c.mu;
         // Same pair and same normal as an earlier contact: the wrenches are equal exactly when
-        // p x n (for N) or p . n (for T = (t, -p . n)) are, decided on the numbers as read.
+        // p x n (for N) or p . n (for T = (t, -p . n)) are, decided on the numbers as read
+        // (doubles: an interval that is a point decides; decimals: exactly).
         for (Index k = 0; k < d.contacts.size(); ++k) {
             const AssemblyContact& o = assembly.contacts[k];
-            if (o.a != ac.a || o.b != ac.b || !(values[k].normal == v.normal)) continue;
-            const momentlab::Rational dx = v.point[0] - values[k].point[0], dy = v.point[1] - values[k].point[1];
-            if ((dx * v.normal[1] - dy * v.normal[0]).is_zero()) out.same_normal.push_back(k);
-            if ((dx * v.normal[0] + dy * v.normal[1]).is_zero()) out.same_tangent.push_back(k);
+            if (o.a != ac.a || o.b != ac.b || o.contact.normal != c.normal) continue;
+            const ContactValues* w = o.contact.exact_values();
+            if (v || w) {
+                const Rational2 n = v ? v->normal : rational(c.normal), m = w ? w->normal : rational(o.contact.normal);
+                if (!(n == m)) continue;
+                const Rational2 p = v ? v->point : rational(c.point), q = w ? w->point : rational(o.contact.point);
+                const momentlab::Rational dx = p[0] - q[0], dy = p[1] - q[1];
+                if ((dx * n[1] - dy * n[0]).is_zero()) out.same_normal.push_back(k);
+                if ((dx * n[0] + dy * n[1]).is_zero()) out.same_tangent.push_back(k);
+                continue;
+            }
+            const Interval n0(c.normal.x()), n1(c.normal.y());
+            const Interval dx = Interval(c.point.x()) - Interval(o.contact.point.x());
+            const Interval dy = Interval(c.point.y()) - Interval(o.contact.point.y());
+            if (is_exact_zero(dx * n1 - dy * n0)) out.same_normal.push_back(k);
+            if (is_exact_zero(dx * n0 + dy * n1)) out.same_tangent.push_back(k);
         }
         d.contacts.push_back(std::move(out));
     }
