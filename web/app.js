@@ -108,6 +108,7 @@ function wrench() {
 // after the frame when the scene or the goal changed, and during a drag only when it ends, so
 // that every drag event stays within one frame.
 function recompute() {
+  if (document.body.classList.contains('assembly')) return recomputeAssembly();
   const t0 = performance.now();
   const key = JSON.stringify(app.doc);
   if (key !== app.sceneKey || !app.analysis) {
@@ -369,6 +370,20 @@ function buildMuSliders() {
 }
 
 function loadScene(text, name) {
+  let parsed = null;
+  try {
+    parsed = JSON.parse(text);
+  } catch (e) {
+    // the library words the error (below)
+  }
+  if (isAssembly(parsed)) {
+    app.dragging = null;
+    if (!loadAssembly(parsed)) {
+      showError(`${name || 'scene'}: ${app.errors[app.errors.length - 1]}`);
+      return false;
+    }
+    return true;
+  }
   let analysis;
   try {
     analysis = app.ml.analyze(text);  // the library's own checks, with the CLI's messages
@@ -376,6 +391,7 @@ function loadScene(text, name) {
     showError(`${name || 'scene'}: ${e.message}`);
     return false;
   }
+  document.body.classList.remove('assembly');
   // Keep the scene as the library read it (contacts written out, found ones included).
   app.doc = JSON.parse(analysis.sceneJson());
   app.goodDoc = JSON.parse(JSON.stringify(app.doc));
@@ -422,7 +438,7 @@ function start(ml) {
   $('export-svg').addEventListener('click', () => download('momentlab.svg', 'image/svg+xml', svgText()));
   $('export-png').addEventListener('click', exportPng);
   $('show').addEventListener('change', recompute);
-  for (const id of ['gravity-on', 'gravity-x', 'gravity-y']) $(id).addEventListener('input', recompute);
+  for (const id of ['gravity-on', 'gravity-x', 'gravity-y', 'stand-gx', 'stand-gy']) $(id).addEventListener('input', recompute);
   $('moment').addEventListener('input', () => {
     app.force.moment = Number($('moment').value);
     $('moment-value').textContent = $('moment').value;
@@ -453,7 +469,7 @@ function start(ml) {
     app.centre = screen().world(ev.clientX - r.left, ev.clientY - r.top);
     recompute();
   });
-  window.addEventListener('resize', () => app.analysis && recompute());
+  window.addEventListener('resize', () => app.doc && recompute());
   // Zoom (wheel, or + and - keys) about the pointer or the centre: obstacles beyond the first
   // view come into reach.
   const zoom = (factor, at) => {

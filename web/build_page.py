@@ -1,6 +1,6 @@
 """Writes the viewer as one HTML file (docs/web.md): web/index.html with the WebAssembly module
 (the classic-script build, the wasm inside it), the bundled example scenes and web/app.js
-inlined (web/draw.js, web/panels.js and web/app.js, in that order, one script), so that the page works opened from disk (file://) and from any static host.
+inlined (web/draw.js, web/panels.js, web/assembly.js and web/app.js, in that order, one script), so that the page works opened from disk (file://) and from any static host.
 
     build_page.py MODULE_JS EXAMPLES_DIR OUTPUT_HTML
 """
@@ -22,12 +22,12 @@ def main():
     examples = {}
     for path in sorted(examples_dir.glob("*.json")):
         doc = json.loads(path.read_text())
-        if isinstance(doc, dict) and "body" in doc:  # scenes; force sets are drawn by `label`
+        if isinstance(doc, dict) and ("body" in doc or "bodies" in doc):  # scenes and assemblies; force sets are drawn by `label`
             examples[path.stem] = doc
     page = (HERE / "index.html").read_text()
     for mark, text in (("/*MOMENTLAB_MODULE*/", module_js.read_text()),
                        ("/*MOMENTLAB_EXAMPLES*/", json.dumps(examples)),
-                       ("/*MOMENTLAB_APP*/", "\n".join((HERE / name).read_text() for name in ("draw.js", "panels.js", "app.js")))):
+                       ("/*MOMENTLAB_APP*/", "\n".join((HERE / name).read_text() for name in ("draw.js", "panels.js", "assembly.js", "app.js")))):
         assert page.count(mark) == 1, mark
         page = page.replace(mark, inline(text))
     output.parent.mkdir(parents=True, exist_ok=True)

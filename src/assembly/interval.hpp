@@ -8,22 +8,25 @@
 // the value enclosed; an interval holding 0 decides nothing (the exact path then does).
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "exact_number.hpp"
 
 namespace momentlab::assembly_detail {
 
-/// The next double above x (x not NaN); +inf stays.
+/// The next double above x (x not NaN); +inf stays. (Its bits stepped by one: memcpy, as
+/// WebAssembly's libc++ has no std::bit_cast.)
 [[nodiscard]] inline double next_up(double x) {
     if (x == std::numeric_limits<double>::infinity()) return x;
     if (x == 0.0) return std::numeric_limits<double>::denorm_min();
-    auto bits = std::bit_cast<std::uint64_t>(x);
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &x, sizeof bits);
     bits = x > 0.0 ? bits + 1 : bits - 1;
-    return std::bit_cast<double>(bits);
+    std::memcpy(&x, &bits, sizeof bits);
+    return x;
 }
 /// The next double below x.
 [[nodiscard]] inline double next_down(double x) { return -next_up(-x); }

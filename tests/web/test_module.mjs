@@ -350,3 +350,33 @@ test('loads and the input rule: the CLI answers with --gravity, --wrench, --forc
   assertClose(mine, cli('closure', closureFile, '--reference', '0.25', '0', '--length', '2', '--json'));
   a.delete();
 });
+
+test('assemblies: stand answers as `momentlab stand --json`, and bad assemblies as the CLI refuses them', () => {
+  const names = readdirSync(join(ROOT, 'examples')).filter((f) => f.startsWith('assembly-'));
+  assert.ok(names.length >= 4);
+  const outcomes = new Set();
+  for (const name of names) {
+    const file = join(ROOT, 'examples', name);
+    for (const [gravity, args] of [[undefined, []], [[1, -3], ['--gravity', '1', '-3']], [[-0.25, -1], ['--gravity', '-0.25', '-1']]]) {
+      const r = ml.stand(readFileSync(file, 'utf8'), gravity === undefined ? { tilt: true } : { gravity, tilt: true });
+      const cli = JSON.parse(execFileSync(CLI, ['stand', file, ...args, '--tilt', '--json'], { encoding: 'utf8' }));
+      // the scene as read, for drawing: every contact written out with its pair
+      assert.equal(r.assembly.bodies.length, JSON.parse(readFileSync(file, 'utf8')).bodies.length, name);
+      assert.ok(r.assembly.contacts.every((c) => c.bodies[0] >= 1 && c.bodies[1] >= 0), name);
+      delete r.assembly;
+      delete r.warnings;
+      assert.deepEqual(r, cli, `${name} ${args.join(' ')}`);
+      outcomes.add(r.outcome);
+    }
+  }
+  assert.ok(outcomes.has('stands') && outcomes.has('falls'), [...outcomes].join(', '));
+  const doc = JSON.parse(readFileSync(join(ROOT, 'examples/assembly-modern-robotics.json'), 'utf8'));
+  doc.contacts[1].bodies = [2, 2];
+  const bad = join(scratch, 'bad-assembly.json');
+  writeFileSync(bad, JSON.stringify(doc));
+  const cli = spawnSync(CLI, ['stand', bad], { encoding: 'utf8' });
+  assert.equal(cli.status, 2);
+  assert.throws(() => ml.stand(doc), { message: cli.stderr.trim().replace(/^momentlab: /, '') });
+  assert.throws(() => ml.stand(JSON.stringify(doc), { gravity: [0, NaN] }), /gravity\[1\]: expected a finite number, got NaN/);
+  assert.throws(() => ml.stand(JSON.stringify(doc), { mu: 1 }), /mu: not an option of stand/);
+});

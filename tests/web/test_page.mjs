@@ -109,14 +109,23 @@ test('a picked mode shows its E regions where the CLI labels their points', asyn
   assert.deepEqual(problems, []);
 });
 
-test('each bundled example loads with the CLI modes', async () => {
+test('each bundled example loads with the CLI modes (an assembly with its stand answer)', async () => {
   const names = await page.$$eval('#examples option', (os) => os.map((o) => o.value).filter(Boolean));
-  const files = readdirSync(join(ROOT, 'examples')).filter((f) => f.endsWith('.json'))
-    .filter((f) => JSON.parse(readFileSync(join(ROOT, 'examples', f), 'utf8')).body);
+  const scene = (f) => JSON.parse(readFileSync(join(ROOT, 'examples', f), 'utf8'));
+  const files = readdirSync(join(ROOT, 'examples')).filter((f) => f.endsWith('.json')).filter((f) => scene(f).body || scene(f).bodies);
   assert.deepEqual(names.sort(), files.map((f) => f.replace(/\.json$/, '')).sort());
   for (const name of names) {
     await page.selectOption('#examples', name);
-    assert.deepEqual(await shownModes(), json(['modes', join(ROOT, 'examples', `${name}.json`)]).modes, name);
+    const file = join(ROOT, 'examples', `${name}.json`);
+    if (scene(`${name}.json`).bodies) {
+      const cli = json(['stand', file]);
+      assert.equal(await page.$eval('#stand-modes', (e) => e.textContent), cli.modes.join(' '), name);
+      assert.equal(await page.$eval('#stand-outcome', (e) => e.textContent), cli.outcome, name);
+      assert.equal(await page.isVisible('#modes'), false, name);  // the one-body panels are hidden
+    } else {
+      assert.deepEqual(await shownModes(), json(['modes', file]).modes, name);
+      assert.equal(await page.isVisible('#stand-can'), false, name);
+    }
     assert.equal(await page.$eval('#error', (e) => e.classList.contains('shown')), false, name);
   }
   await page.selectOption('#examples', 'figure-3-block-along-wall');
@@ -466,5 +475,59 @@ test('legend, coordinates, and handles that never hide one another', async () =>
   await page.screenshot({ path: join(WEB, 'panel-legend-axes.png') });
   await open('figure-4-peg-in-hole');
   await open('figure-3-block-along-wall');
+  assert.deepEqual(problems, []);
+});
+
+// The panel's answer and the picture's: the CLI's `stand --json` of the scene the page holds.
+async function expectStandAsCli(what) {
+  const doc = await page.evaluate(() => window.momentlabApp.doc);
+  const file = join(scratch, 'assembly.json');
+  writeFileSync(file, JSON.stringify(doc));
+  const g = await page.evaluate(() => [document.getElementById('stand-gx').value, document.getElementById('stand-gy').value]);
+  const cli = json(['stand', file, '--gravity', ...g]);
+  assert.equal(await page.$eval('#stand-can', (e) => e.textContent), cli.can_stand ? 'yes' : 'no', what);
+  assert.equal(await page.$eval('#stand-outcome', (e) => e.textContent), cli.outcome, what);
+  assert.equal(await page.$eval('#stand-modes', (e) => e.textContent), cli.modes.join(' '), what);
+  // forces drawn where it stands (one arrow a loaded contact), the mechanism's crosses where not
+  const arrows = await page.$$eval('#answer line.stand-force', (ls) => ls.length);
+  const crosses = await page.$$eval('#answer .rotation-centre', (ps) => ps.length);
+  if (cli.can_stand) {
+    assert.equal(arrows, cli.forces.filter(([fx, fy]) => fx !== 0 || fy !== 0).length, what);
+  } else {
+    assert.equal(crosses, cli.mechanism.filter((m) => m.rotation_centre !== null).length, what);
+  }
+  return cli;
+}
+
+test('assemblies: the stand answer live as bodies, centres of mass, contacts and gravity move', async () => {
+  await page.selectOption('#examples', 'assembly-harmonic-stack');
+  assert.equal((await expectStandAsCli('the stack')).outcome, 'stands');
+  // the top brick sideways, outwards: beyond the harmonic limit it falls
+  await page.focus('[data-handle="body 4"]');
+  await page.keyboard.press('ArrowRight');
+  assert.equal((await expectStandAsCli('top brick moved out')).can_stand, false);
+  await page.keyboard.press('ArrowLeft');
+  await page.keyboard.press('ArrowLeft');
+  assert.equal((await expectStandAsCli('top brick moved in')).can_stand, true);
+  // gravity turned: tilted beyond the friction of the floor it falls
+  await page.fill('#stand-gx', '-6');
+  await page.$eval('#stand-gx', (e) => e.dispatchEvent(new Event('input')));
+  assert.equal((await expectStandAsCli('tilted')).can_stand, false);
+  await page.fill('#stand-gx', '0');
+  await page.$eval('#stand-gx', (e) => e.dispatchEvent(new Event('input')));
+  // Modern Robotics' two blocks: the leaning block's com dragged, a listed contact dragged
+  await page.selectOption('#examples', 'assembly-modern-robotics');
+  assert.equal((await expectStandAsCli('as given')).outcome, 'falls');
+  const [x, y] = await centreOf('com 2');
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x + 40, y, { steps: 4 });
+  await page.mouse.up();
+  await expectStandAsCli('block com dragged');
+  await page.focus('[data-handle="contact 1"]');
+  await page.keyboard.press('ArrowLeft');
+  await expectStandAsCli('floor contact moved');
+  await page.screenshot({ path: join(WEB, 'page-assembly.png') });
+  await page.selectOption('#examples', 'figure-3-block-along-wall');
   assert.deepEqual(problems, []);
 });

@@ -273,3 +273,14 @@ Module['graspClosure'] = function (scene, options) {
   return momentlabAnswer(Module['closure'](text, r !== null, r ? r[0] : 0, r ? r[1] : 0, length !== null, length || 0,
                                            v !== null, ...(v || [0, 0, 1, 1])));
 };
+
+/** Will an assembly stand (docs/assemblies.md), as `momentlab stand --json`: {can_stand, forces |
+ *  mechanism, modes, verdict, motions, outcome, tilt?} and assembly: the scene as read, contacts
+ *  written out (found ones included); options {gravity: [gx, gy] (default (0, -9.81)), tilt}. */
+Module['stand'] = function (scene, options) {
+  const o = momentlabOptions(options, 'stand', ['gravity', 'tilt']);
+  const text = momentlabText(scene, 'scene');
+  const g = o.gravity === undefined ? null : momentlabPoint(o.gravity, 'gravity');
+  if (o.tilt !== undefined && typeof o.tilt !== 'boolean') throw new Error(`tilt: expected true or false, ${momentlabGot(o.tilt)}`);
+  return momentlabAnswer(Module['standJson'](text, g !== null, g ? g[0] : 0, g ? g[1] : 0, o.tilt === true));
+};

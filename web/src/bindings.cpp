@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "momentlab/app/problem.hpp"
+#include "momentlab/assembly/assembly_json.hpp"
 #include "momentlab/io/force_set_json.hpp"
 #include "momentlab/io/json_output.hpp"
 #include "momentlab/io/scene_json.hpp"
@@ -243,6 +244,40 @@ std::string labels(const std::string& text, double xmin, double ymin, double xma
     return guarded([&] { return force_set(read_force_set_text(text), view_of(xmin, ymin, xmax, ymax)); });
 }
 
+// An assembly as `momentlab stand --json` answers it (gravity from the page: doubles; by default
+// (0, -9.81) as the decimal), and "assembly": the scene as read, contacts written out (found ones
+// included) for drawing: {"bodies": [{"name", "mass", "com", "polygon"}], "contacts": [{"bodies",
+// "point", "normal", "mu"}], "obstacles": [[x, y], ...]}, with "warnings".
+std::string stand_of(const std::string& scene_text, bool has_gravity, double gx, double gy, bool tilt) {
+    return guarded([&] {
+        InputWarnings warnings;
+        const Assembly a = read_assembly_text(scene_text, &warnings);
+        StandOptions options;
+        if (has_gravity) options.gravity = rational(checked_vector(Vec2(gx, gy), "gravity"));
+        options.tilt = tilt;
+        json out = to_json(stand(a, options));
+        json bodies = json::array(), contacts = json::array(), obstacles = json::array();
+        const auto polygon = [](const Polygon& p) {
+            json v = json::array();
+            for (const Vec2& q : p) v.push_back(vector_json(q));
+            return v;
+        };
+        for (const AssemblyBody& b : a.bodies) {
+            bodies.push_back({{"name", b.name}, {"mass", output_value(b.mass)}, {"com", vector_json(b.com)}, {"polygon", polygon(b.polygon)}});
+        }
+        for (const AssemblyContact& c : a.contacts) {
+            contacts.push_back({{"bodies", {c.a, c.b}},
+                                {"point", vector_json(c.contact.point)},
+                                {"normal", vector_json(c.contact.normal)},
+                                {"mu", output_value(c.contact.mu)}});
+        }
+        for (const Polygon& o : a.obstacles) obstacles.push_back(polygon(o));
+        out["assembly"] = {{"bodies", bodies}, {"contacts", contacts}, {"obstacles", obstacles}};
+        out["warnings"] = warnings;
+        return out;
+    });
+}
+
 }  // namespace
 }  // namespace momentlab::web
 
@@ -263,4 +298,5 @@ EMSCRIPTEN_BINDINGS(momentlab) {
         .function("sceneJson", &Session::scene_json);
     emscripten::function("labels", &labels);
     emscripten::function("closure", &closure_of);
+    emscripten::function("standJson", &stand_of);
 }
