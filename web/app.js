@@ -294,7 +294,7 @@ function drawPicture(a, produced, s) {
   // the applied force, and gravity (when on) at the centre of mass
   const f = app.force, tip = [f.point[0] + f.vector[0] * len * 2, f.point[1] + f.vector[1] * len * 2];
   arrow(scene, f.point, tip, produced.length === 1 ? COLOURS.ink : '#b00', s, 2.5, 'applied-force');
-  const g = load().gravity;
+  const g = load().gravity ? load().gravity.map(Number) : null;  // (typed text, drawn as numbers)
   if (g && (g[0] || g[1])) {
     const u = unit(g);
     arrow(scene, body.com, [body.com[0] + len * u[0], body.com[1] + len * u[1]], COLOURS.guide, s, 2, 'gravity');

@@ -12,8 +12,9 @@ function isAssembly(doc) {
   return doc && typeof doc === 'object' && Array.isArray(doc.bodies);
 }
 
+// Gravity as typed in the panel (decimal strings: 0.1 is 1/10, as the CLI reads --gravity).
 function assemblyGravity() {
-  return [Number($('stand-gx').value), Number($('stand-gy').value)];
+  return [$('stand-gx').value, $('stand-gy').value];
 }
 
 // stand on the current document: the answer, or an error shown and the last good scene restored.
@@ -148,7 +149,7 @@ function drawAssemblyPicture(r, s) {
     });
   }
   // gravity at the left of the picture
-  const gv = unit(assemblyGravity());
+  const gv = unit(assemblyGravity().map(Number));
   const box = s.box(), at = [box[0] + 0.08 * (box[2] - box[0]), box[3] - 0.12 * (box[3] - box[1])];
   arrow(g, at, [at[0] + len * gv[0], at[1] + len * gv[1]], COLOURS.guide, s, 2, 'gravity');
   // handles: centres of mass, bodies (sideways), listed contacts

@@ -22,7 +22,7 @@ function unit(v) {
 // The load acting besides the applied force: gravity through the centre of mass when it is on.
 function load() {
   if (!$('gravity-on').checked) return {};
-  return { gravity: [Number($('gravity-x').value), Number($('gravity-y').value)] };
+  return { gravity: [$('gravity-x').value, $('gravity-y').value] };  // as typed: 0.1 is 1/10
 }
 
 function directionsText(plan) {

@@ -380,3 +380,30 @@ test('assemblies: stand answers as `momentlab stand --json`, and bad assemblies 
   assert.throws(() => ml.stand(JSON.stringify(doc), { gravity: [0, NaN] }), /gravity\[1\]: expected a finite number, got NaN/);
   assert.throws(() => ml.stand(JSON.stringify(doc), { mu: 1 }), /mu: not an option of stand/);
 });
+
+test('numbers as typed: decimal strings in loads and stand\'s gravity are the decimals, as the CLI reads its options', () => {
+  // A block of mass 1 on two floor contacts at mu = 0.3 (docs/design.md): the push 2.943 = 0.3 x 9.81
+  // is the threshold, ff and rr both; typed as decimals the module answers as the CLI.
+  const block = '{"body":{"mass":1,"com":[0.5,0.25],"inertia":0.1},"contacts":[{"point":[0,0],"normal":[0,1],"mu":0.3},{"point":[1,0],"normal":[0,1],"mu":0.3}]}';
+  const file = join(scratch, 'typed-block.json');
+  writeFileSync(file, block);
+  const a = ml.analyze(block);
+  const typed = ['2.943', '-9.81', '-4.905'];
+  const cli = JSON.parse(execFileSync(CLI, ['query', file, '--wrench', ...typed, '--json'], { encoding: 'utf8' }));
+  assert.deepEqual(cli.modes, ['ff', 'rr']);
+  assert.deepEqual(a.query(typed), cli.modes);
+  assert.equal(a.verdict(typed), 'ambiguous');
+  assert.deepEqual(a.query(null, { gravity: ['0', '-9.81'], forces: [[['0.5', '0.25'], ['2.943', '0']]] }), ['ff', 'rr']);
+  assert.throws(() => a.query(['0x1p3', 0, 0]), /wrench\[0\]: expected a finite number \(or a decimal in JSON's grammar\), got "0x1p3"/);
+  a.delete();
+  // stand: a block on the floor at mu = 0.3 stands exactly when |gx| <= 0.3 |gy|; the float 0.9 is
+  // a little above 9/10, so under (0.9, -3) as numbers it slides.
+  const floor = JSON.stringify({ bodies: [{ mass: 2, com: [1, 0.5], inertia: 1, polygon: [[0, 0], [2, 0], [2, 1], [0, 1]] }],
+                                 obstacles: [{ polygon: [[-5, -1], [5, -1], [5, 0], [-5, 0]] }], mu: 0.3 });
+  const floorFile = join(scratch, 'typed-floor.json');
+  writeFileSync(floorFile, floor);
+  const standCli = JSON.parse(execFileSync(CLI, ['stand', floorFile, '--gravity', '0.9', '-3', '--json'], { encoding: 'utf8' }));
+  assert.equal(standCli.can_stand, true);
+  assert.equal(ml.stand(floor, { gravity: ['0.9', '-3'] }).can_stand, true);
+  assert.equal(ml.stand(floor, { gravity: [0.9, -3] }).can_stand, false);
+});

@@ -45,6 +45,27 @@ function momentlabNumber(x, where) {
   return x;
 }
 
+// A load's n numbers: JS numbers (their binary values) or decimal strings in JSON's number
+// grammar ('0.1' is exactly 1/10, as the CLI reads its options; docs/design.md, "Numbers as
+// typed"), kept as given for bindings.cpp.
+const momentlabDecimal = /^-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?$/;
+function momentlabTyped(value, n, where, shape) {
+  const isList = Array.isArray(value) || ArrayBuffer.isView(value);
+  if (!isList || value.length !== n) {
+    throw new Error(`${where}: expected ${n} numbers ${shape}, ${isList ? `got ${value.length}` : momentlabGot(value)}`);
+  }
+  const out = Array.from(value);
+  out.forEach((x, i) => {
+    if (typeof x === 'string' && momentlabDecimal.test(x.trim())) {
+      out[i] = x.trim();
+    } else if (typeof x !== 'number' || !Number.isFinite(x)) {
+      throw new Error(typeof x === 'string' ? `${where}[${i}]: expected a finite number (or a decimal in JSON's grammar), got "${x}"`
+                                            : `${where}[${i}]: expected a finite number, ${momentlabGot(x)}`);
+    }
+  });
+  return out;
+}
+
 const momentlabWrench = (w, where = 'wrench') => momentlabNumbers(w, 3, where, '[fx, fy, tau]');
 const momentlabPoint = (p, where) => momentlabNumbers(p, 2, where, '[x, y]');
 
@@ -66,13 +87,13 @@ const momentlabLoadKeys = ['gravity', 'wrench', 'forces'];
 // wrench [fx, fy, tau] and forces [[[x, y], [fx, fy]], ...], as JSON text for bindings.cpp.
 function momentlabLoad(o) {
   const load = {};
-  if (o.gravity !== undefined) load.gravity = momentlabPoint(o.gravity, 'gravity');
-  if (o.wrench !== undefined) load.wrench = momentlabWrench(o.wrench);
+  if (o.gravity !== undefined) load.gravity = momentlabTyped(o.gravity, 2, 'gravity', '[gx, gy]');
+  if (o.wrench !== undefined) load.wrench = momentlabTyped(o.wrench, 3, 'wrench', '[fx, fy, tau]');
   if (o.forces !== undefined) {
     if (!Array.isArray(o.forces)) throw new Error(`forces: expected an array of [point, force], ${momentlabGot(o.forces)}`);
     load.forces = o.forces.map((f, i) => {
       if (!Array.isArray(f) || f.length !== 2) throw new Error(`forces[${i}]: expected [point, force]`);
-      return [momentlabPoint(f[0], `forces[${i}][0]`), momentlabPoint(f[1], `forces[${i}][1]`)];
+      return [momentlabTyped(f[0], 2, `forces[${i}][0]`, '[x, y]'), momentlabTyped(f[1], 2, `forces[${i}][1]`, '[fx, fy]')];
     });
   }
   return JSON.stringify(load);
@@ -276,11 +297,11 @@ Module['graspClosure'] = function (scene, options) {
 
 /** Will an assembly stand (docs/assemblies.md), as `momentlab stand --json`: {can_stand, forces |
  *  mechanism, modes, verdict, motions, outcome, tilt?} and assembly: the scene as read, contacts
- *  written out (found ones included); options {gravity: [gx, gy] (default (0, -9.81)), tilt}. */
+ *  written out (found ones included); options {gravity: [gx, gy] (default (0, -9.81); numbers
+ *  or decimal strings, as loads), tilt}. */
 Module['stand'] = function (scene, options) {
   const o = momentlabOptions(options, 'stand', ['gravity', 'tilt']);
   const text = momentlabText(scene, 'scene');
-  const g = o.gravity === undefined ? null : momentlabPoint(o.gravity, 'gravity');
   if (o.tilt !== undefined && typeof o.tilt !== 'boolean') throw new Error(`tilt: expected true or false, ${momentlabGot(o.tilt)}`);
-  return momentlabAnswer(Module['standJson'](text, g !== null, g ? g[0] : 0, g ? g[1] : 0, o.tilt === true));
+  return momentlabAnswer(Module['standJson'](text, momentlabLoad({ gravity: o.gravity }), o.tilt === true));
 };

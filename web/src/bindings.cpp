@@ -10,6 +10,8 @@
 #include <emscripten/val.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,15 +45,37 @@ InputNames web_names() {
     return n;
 }
 
-// A load from api.js's JSON text (shapes checked there; ranges by the Problem).
+// A number of a load: a JS number its binary value, a decimal string (api.js checked its
+// grammar) the decimal it spells (0.1 is 1/10), each finite and in range (app/checks.hpp).
+Rational typed(const json& v, const std::string& where) {
+    const std::optional<Rational> x = v.is_string() ? Rational::parse(v.get<std::string>()) : std::optional<Rational>(Rational(v.get<double>()));
+    if (!x || !std::isfinite(x->to_double())) throw InputError(where, "expected a finite number");
+    return *x;
+}
+
+template <std::size_t N>
+std::array<Rational, N> typed_vector(const json& v, const std::string& where) {
+    std::array<Rational, N> out;
+    std::array<double, N> rounded{};
+    for (std::size_t i = 0; i < N; ++i) {
+        out[i] = typed(v[i], where + "[" + std::to_string(i) + "]");
+        rounded[i] = out[i].to_double();
+    }
+    if constexpr (N == 2) (void)checked_vector(Vec2(rounded[0], rounded[1]), where);
+    if constexpr (N == 3) (void)checked_vector(Vec3(rounded[0], rounded[1], rounded[2]), where);
+    return out;
+}
+
+// A load from api.js's JSON text (shapes checked there; ranges here, as the Problem's).
 Load load_of(const std::string& text) {
     const json doc = json::parse(text);
     Load load;
-    // (doubles: the page's typed decimals are not read as decimals yet)
-    if (doc.contains("gravity")) load.gravity = rational(Vec2(doc["gravity"][0], doc["gravity"][1]));
-    if (doc.contains("wrench")) load.wrench = rational(Vec3(doc["wrench"][0], doc["wrench"][1], doc["wrench"][2]));
+    if (doc.contains("gravity")) load.gravity = typed_vector<2>(doc["gravity"], "gravity");
+    if (doc.contains("wrench")) load.wrench = typed_vector<3>(doc["wrench"], "wrench");
+    std::size_t i = 0;
     for (const json& f : doc.value("forces", json::array())) {
-        load.forces.emplace_back(rational(Vec2(f[0][0], f[0][1])), rational(Vec2(f[1][0], f[1][1])));
+        const std::string where = "forces[" + std::to_string(i++) + "]";
+        load.forces.emplace_back(typed_vector<2>(f[0], where + "[0]"), typed_vector<2>(f[1], where + "[1]"));
     }
     return load;
 }
@@ -105,13 +129,13 @@ public:
     }
 
     // The modes of one wrench and, besides it, gravity and forces at points: {"modes", "verdict"}.
-    // A wrench alone is checked and asked of the index (a drag asks many); a load with gravity or
-    // forces goes to Problem::query (exact sums).
+    // A wrench of doubles alone is checked and asked of the index (a drag asks many); a load with
+    // gravity, forces or decimals goes to Problem::query (exact sums).
     [[nodiscard]] std::string query(const std::string& load_text) {
         return guarded([&] {
             const Load load = load_of(load_text);
             json modes = json::array();
-            if (load.wrench && !load.gravity && load.forces.empty()) {
+            if (load.wrench && is_double(*load.wrench) && !load.gravity && load.forces.empty()) {
                 const auto& a = problem_->analysis();
                 std::vector<std::size_t> found = problem_->index().query(checked_vector(to_double(*load.wrench), "wrench")).modes;
                 std::sort(found.begin(), found.end(), [&](std::size_t x, std::size_t y) { return a[x].mode.letters < a[y].mode.letters; });
@@ -244,16 +268,16 @@ std::string labels(const std::string& text, double xmin, double ymin, double xma
     return guarded([&] { return force_set(read_force_set_text(text), view_of(xmin, ymin, xmax, ymax)); });
 }
 
-// An assembly as `momentlab stand --json` answers it (gravity from the page: doubles; by default
-// (0, -9.81) as the decimal), and "assembly": the scene as read, contacts written out (found ones
+// An assembly as `momentlab stand --json` answers it (gravity as a load's: numbers or decimal
+// strings; by default (0, -9.81) as the decimal), and "assembly": the scene as read, contacts written out (found ones
 // included) for drawing: {"bodies": [{"name", "mass", "com", "polygon"}], "contacts": [{"bodies",
 // "point", "normal", "mu"}], "obstacles": [[x, y], ...]}, with "warnings".
-std::string stand_of(const std::string& scene_text, bool has_gravity, double gx, double gy, bool tilt) {
+std::string stand_of(const std::string& scene_text, const std::string& load_text, bool tilt) {
     return guarded([&] {
         InputWarnings warnings;
         const Assembly a = read_assembly_text(scene_text, &warnings);
         StandOptions options;
-        if (has_gravity) options.gravity = rational(checked_vector(Vec2(gx, gy), "gravity"));
+        if (const Load load = load_of(load_text); load.gravity) options.gravity = *load.gravity;
         options.tilt = tilt;
         json out = to_json(stand(a, options));
         json bodies = json::array(), contacts = json::array(), obstacles = json::array();
