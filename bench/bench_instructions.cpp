@@ -2,8 +2,10 @@
 // SceneQuestions set-up, then six wrenches asked one by one (one walk each), the first alone and
 // the other five in one batch, or all six in one batch. Run under valgrind's callgrind, whose
 // counts this machine's noise does not move (`make instructions` runs it on the cradle and the
-// tangent of 10^4 contacts); alone it prints the wall time of each part.
-// Usage: bench_instructions SCENE.json one|split|all
+// tangent of 10^4 contacts); alone it prints the wall time of each part. With `doubles`, the
+// file's numbers are taken as the doubles nearest them once read (the scene of before decimals
+// were read as typed), so that the same scenes are counted both ways.
+// Usage: bench_instructions SCENE.json one|split|all [doubles]
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -16,11 +18,19 @@
 int main(int argc, char** argv) {
     using namespace momentlab;
     using Clock = std::chrono::steady_clock;
-    if (argc != 3 || (std::strcmp(argv[2], "one") != 0 && std::strcmp(argv[2], "split") != 0 && std::strcmp(argv[2], "all") != 0)) {
-        std::fprintf(stderr, "usage: %s SCENE.json one|split|all\n", argv[0]);
+    const bool doubles = argc == 4 && std::strcmp(argv[3], "doubles") == 0;
+    if ((argc != 3 && !doubles) ||
+        (std::strcmp(argv[2], "one") != 0 && std::strcmp(argv[2], "split") != 0 && std::strcmp(argv[2], "all") != 0)) {
+        std::fprintf(stderr, "usage: %s SCENE.json one|split|all [doubles]\n", argv[0]);
         return 2;
     }
-    const Scene scene = read_scene_text(read_json_file(argv[1]));
+    // With `doubles`, the same reading and then the exact values dropped: the doubles nearest the
+    // file's numbers are the scene (what the query path did before decimals were read as typed).
+    Scene scene = read_scene_text(read_json_file(argv[1]));
+    if (doubles) {
+        for (Contact& c : scene.contacts) c.exact = nullptr;
+        if (scene.body) scene.body->exact = nullptr;
+    }
     // The six wrenches of tools/degenerate_table.sh (six_wrenches.jsonl).
     const std::vector<Vec3> wrenches = {{0.1, 1, 0.2}, {0.5, 2, 0.1}, {1, 1, 0.5}, {0.2, -1, 0.3}, {2, 0.5, -0.4}, {0, 0, 1}};
     const auto t0 = Clock::now();

@@ -92,9 +92,24 @@ std::optional<Rational> Rational::parse(std::string_view text) {
     if (exponent > kMaxDecimalExponent || exponent < -kMaxDecimalExponent - static_cast<std::int64_t>(digits.size())) {
         return std::nullopt;
     }
+    std::int64_t fives = exponent < 0 ? -exponent : 0;
+    // Up to 18 digits and 5^27 (every double's shortest text, most decimals typed): in 64-bit
+    // integers. D x 10^e = D 2^e 5^e; for e < 0, each factor 5 of D cancels one of 5^-e.
+    if (digits.size() <= 18 && exponent >= -27 && exponent <= 27) {
+        std::int64_t d = 0;
+        for (const char c : digits) d = d * 10 + (c - '0');
+        while (fives > 0 && d % 5 == 0) d /= 5, --fives;
+        std::int64_t five_power = 1;
+        for (std::int64_t k = 0; k < (exponent > 0 ? exponent : fives); ++k) five_power *= 5;
+        Dyadic num = Dyadic::from_integer(negative ? -d : d).scaled(exponent);
+        if (exponent > 0) num = num * Dyadic::from_integer(five_power);
+        Rational out;
+        out.num_ = std::move(num);
+        out.den_ = exponent > 0 ? Dyadic(1.0) : Dyadic::from_integer(five_power);
+        return out;
+    }
     // D x 10^-k = D 2^-k / 5^k; while D is a multiple of 5 (its last digit 5), D / 5 = 2 D / 10
     // takes one 5 from the denominator.
-    std::int64_t fives = exponent < 0 ? -exponent : 0;
     while (fives > 0 && digits.back() == '5') {
         int carry = 0;
         for (std::size_t i = digits.size(); i-- > 0;) {
