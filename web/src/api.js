@@ -27,43 +27,34 @@ function momentlabGot(x) {
   return `got ${typeof x === 'object' ? 'an object' : `a ${typeof x}`}`;
 }
 
-// n finite numbers (an array or a typed array) at `where`, as a plain array.
-function momentlabNumbers(value, n, where, shape) {
+// Decimal text in JSON's number grammar.
+const momentlabDecimal = /^-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?$/;
+
+// n finite numbers (an array or a typed array) at `where`, as a plain array; with `typed`, a
+// decimal string may stand for a number ('0.1' is exactly 1/10, as the CLI reads its options;
+// docs/design.md, "Numbers as typed") and is kept as given for bindings.cpp (loads).
+function momentlabNumbers(value, n, where, shape, typed = false) {
   const isList = Array.isArray(value) || ArrayBuffer.isView(value);
   if (!isList || value.length !== n) {
     throw new Error(`${where}: expected ${n} numbers ${shape}, ${isList ? `got ${value.length}` : momentlabGot(value)}`);
   }
   const out = Array.from(value);
   out.forEach((x, i) => {
-    if (typeof x !== 'number' || !Number.isFinite(x)) throw new Error(`${where}[${i}]: expected a finite number, ${momentlabGot(x)}`);
+    if (typed && typeof x === 'string' && momentlabDecimal.test(x.trim())) {
+      out[i] = x.trim();
+    } else if (typeof x !== 'number' || !Number.isFinite(x)) {
+      throw new Error(typed && typeof x === 'string' ? `${where}[${i}]: expected a finite number (or a decimal in JSON's grammar), got "${x}"`
+                                                     : `${where}[${i}]: expected a finite number, ${momentlabGot(x)}`);
+    }
   });
   return out;
 }
+
+const momentlabTyped = (value, n, where, shape) => momentlabNumbers(value, n, where, shape, true);
 
 function momentlabNumber(x, where) {
   if (typeof x !== 'number' || !Number.isFinite(x)) throw new Error(`${where}: expected a finite number, ${momentlabGot(x)}`);
   return x;
-}
-
-// A load's n numbers: JS numbers (their binary values) or decimal strings in JSON's number
-// grammar ('0.1' is exactly 1/10, as the CLI reads its options; docs/design.md, "Numbers as
-// typed"), kept as given for bindings.cpp.
-const momentlabDecimal = /^-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?$/;
-function momentlabTyped(value, n, where, shape) {
-  const isList = Array.isArray(value) || ArrayBuffer.isView(value);
-  if (!isList || value.length !== n) {
-    throw new Error(`${where}: expected ${n} numbers ${shape}, ${isList ? `got ${value.length}` : momentlabGot(value)}`);
-  }
-  const out = Array.from(value);
-  out.forEach((x, i) => {
-    if (typeof x === 'string' && momentlabDecimal.test(x.trim())) {
-      out[i] = x.trim();
-    } else if (typeof x !== 'number' || !Number.isFinite(x)) {
-      throw new Error(typeof x === 'string' ? `${where}[${i}]: expected a finite number (or a decimal in JSON's grammar), got "${x}"`
-                                            : `${where}[${i}]: expected a finite number, ${momentlabGot(x)}`);
-    }
-  });
-  return out;
 }
 
 const momentlabWrench = (w, where = 'wrench') => momentlabNumbers(w, 3, where, '[fx, fy, tau]');
