@@ -378,7 +378,7 @@ function loadScene(text, name) {
   }
   if (isAssembly(parsed)) {
     app.dragging = null;
-    if (!loadAssembly(parsed)) {
+    if (!loadAssembly(parsed, text)) {
       showError(`${name || 'scene'}: ${app.errors[app.errors.length - 1]}`);
       return false;
     }
@@ -434,7 +434,8 @@ function start(ml) {
     const file = ev.target.files[0];
     if (file && loadScene(await file.text(), file.name)) $('examples').value = '';
   });
-  $('save').addEventListener('click', () => download('scene.json', 'application/json', JSON.stringify(app.doc, null, 1)));
+  $('save').addEventListener('click', () => download('scene.json', 'application/json',
+    document.body.classList.contains('assembly') ? assemblyText() : JSON.stringify(app.doc, null, 1)));
   $('export-svg').addEventListener('click', () => download('momentlab.svg', 'image/svg+xml', svgText()));
   $('export-png').addEventListener('click', exportPng);
   $('show').addEventListener('change', recompute);

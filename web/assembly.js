@@ -18,12 +18,19 @@ function assemblyGravity() {
 }
 
 // stand on the current document: the answer, or an error shown and the last good scene restored.
+// The scene's text: the file as opened while no edit has changed it (its decimals as typed; a
+// JS number would round them), else the edited document.
+function assemblyText() {
+  const edited = JSON.stringify(app.doc);
+  return edited === app.openedKey ? app.openedText : edited;
+}
+
 function assemblyAnswer() {
   const key = JSON.stringify(app.doc) + JSON.stringify(assemblyGravity());
   if (key === app.standKey && app.stand) return app.stand;
   let r;
   try {
-    r = app.ml.stand(JSON.stringify(app.doc), { gravity: assemblyGravity(), tilt: true });
+    r = app.ml.stand(assemblyText(), { gravity: assemblyGravity(), tilt: true });
   } catch (e) {
     showError(e.message);
     if (app.goodDoc) app.doc = JSON.parse(JSON.stringify(app.goodDoc));
@@ -36,8 +43,17 @@ function assemblyAnswer() {
   return r;
 }
 
-function loadAssembly(doc) {
+function loadAssembly(doc, text) {
+  // A file the library refuses leaves the last good scene (shown and saved) as it was.
+  try {
+    app.ml.stand(text, { gravity: assemblyGravity() });
+  } catch (e) {
+    showError(e.message);
+    return false;
+  }
   app.doc = doc;
+  app.openedText = text;
+  app.openedKey = JSON.stringify(doc);
   app.goodDoc = null;
   app.stand = null;
   app.standKey = null;
@@ -149,9 +165,12 @@ function drawAssemblyPicture(r, s) {
     });
   }
   // gravity at the left of the picture
-  const gv = unit(assemblyGravity().map(Number));
-  const box = s.box(), at = [box[0] + 0.08 * (box[2] - box[0]), box[3] - 0.12 * (box[3] - box[1])];
-  arrow(g, at, [at[0] + len * gv[0], at[1] + len * gv[1]], COLOURS.guide, s, 2, 'gravity');
+  const gn = assemblyGravity().map(Number);
+  if (gn[0] || gn[1]) {
+    const gv = unit(gn);
+    const box = s.box(), at = [box[0] + 0.08 * (box[2] - box[0]), box[3] - 0.12 * (box[3] - box[1])];
+    arrow(g, at, [at[0] + len * gv[0], at[1] + len * gv[1]], COLOURS.guide, s, 2, 'gravity');
+  }
   // handles: centres of mass, bodies (sideways), listed contacts
   app.placed = [];
   const handles = el('g', { id: 'handles' }, svg);

@@ -60,7 +60,8 @@ std::size_t body_index(const Value& v, const Path& path) {
     const char* expected = "expected a body index: 0 (the world) or 1..N";
     if (!v.is_number()) throw InputError(path.str(), expected);
     const double x = v.number().value;
-    if (std::floor(x) != x || x < 0.0 || x > 1e9) throw InputError(path.str(), expected);
+    // an integer as typed: 1.0000000000000000001 rounds to 1 but is not one
+    if (std::floor(x) != x || x < 0.0 || x > 1e9 || !exact_number(v).is_double()) throw InputError(path.str(), expected);
     return static_cast<std::size_t>(x);
 }
 

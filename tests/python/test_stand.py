@@ -582,3 +582,16 @@ def test_random_decimal_stacks_agree_with_an_exact_oracle(tmp_path):
     print(counts)
     assert counts["stands"] not in (0, counts["scenes"]) and counts["binary differs"] > 0
     assert 3 * counts["top block on its tipping line"] >= counts["scenes"]
+
+
+def test_a_body_index_is_an_integer_as_typed(tmp_path):
+    text = MR.read_text().replace('"bodies": [1, 2]', '"bodies": [1, 2.0000000000000000001]')
+    assert "2.0000000000000000001" in text
+    path = tmp_path / "index.json"
+    path.write_text(text)
+    r = cli("stand", path, check=False)
+    assert r.returncode == 2 and r.stderr.startswith("momentlab: $.contacts[1].bodies[1]: expected a body index")
+    with pytest.raises(ValueError, match=r"\$\.contacts\[1\]\.bodies\[1\]"):
+        ml.Assembly.from_json(text)
+    path.write_text(MR.read_text().replace('"bodies": [1, 2]', '"bodies": [1, 2.0]'))
+    assert cli("stand", path, "--json")["can_stand"] is False  # 2.0 is the integer 2

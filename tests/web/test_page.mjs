@@ -528,6 +528,24 @@ test('assemblies: the stand answer live as bodies, centres of mass, contacts and
   await page.keyboard.press('ArrowLeft');
   await expectStandAsCli('floor contact moved');
   await page.screenshot({ path: join(WEB, 'page-assembly.png') });
+  // An opened file's decimals as typed (a JS number would round mu = 0.29999999999999999999 to
+  // 0.3, where the floor holds under gravity (0.3, -1)); a refused file leaves the scene as it was.
+  const typed = JSON.stringify({ bodies: [{ mass: 1, com: [1, 0.5], inertia: 1, polygon: [[0, 0], [2, 0], [2, 1], [0, 1]] }],
+                                 obstacles: [{ polygon: [[-5, -1], [5, -1], [5, 0], [-5, 0]] }], mu: 0.3 })
+    .replace('"mu":0.3', '"mu":0.29999999999999999999');
+  await page.fill('#stand-gx', '0.3');
+  await page.fill('#stand-gy', '-1');
+  assert.equal(await page.evaluate((t) => window.momentlabApp.loadScene(t, 'typed'), typed), true);
+  const file = join(scratch, 'typed-mu.json');
+  writeFileSync(file, typed);
+  const cli = json(['stand', file, '--gravity', '0.3', '-1']);
+  assert.equal(cli.can_stand, false);
+  assert.equal(await page.$eval('#stand-can', (e) => e.textContent), 'no');
+  const bad = typed.replace('"mass":1', '"mass":-1');
+  assert.equal(await page.evaluate((t) => window.momentlabApp.loadScene(t, 'bad'), bad), false);
+  assert.equal(JSON.stringify(await page.evaluate(() => window.momentlabApp.doc)), JSON.stringify(JSON.parse(typed)));
+  await page.fill('#stand-gx', '0');
+  await page.fill('#stand-gy', '-9.81');
   await page.selectOption('#examples', 'figure-3-block-along-wall');
   assert.deepEqual(problems, []);
 });
