@@ -42,20 +42,6 @@ double positive(const Value& v, const Path& path) {
     return x;
 }
 
-Polygon polygon(const Value& v, const Path& path) {
-    Polygon p = vec2_list(v, path);
-    const std::string problem = polygon_problem(p);
-    if (!problem.empty()) throw InputError(path.str(), problem);
-    return p;
-}
-
-// The exact vertices of a polygon polygon() accepted (0.1 is 1/10).
-std::vector<Rational2> exact_polygon(const Value& v) {
-    std::vector<Rational2> out;
-    v.for_each_element([&](std::size_t, const Value& e) { out.push_back(exact_vec2(e)); });
-    return out;
-}
-
 std::size_t body_index(const Value& v, const Path& path) {
     const char* expected = "expected a body index: 0 (the world) or 1..N";
     if (!v.is_number()) throw InputError(path.str(), expected);
@@ -85,19 +71,12 @@ AssemblyBody read_body(const Value& b, const Path& path, InputWarnings* w) {
         body.radius_of_gyration = positive(*radius, Path(path, "radius_of_gyration"));
     }
     if (const std::optional<Value> p = b.find("polygon")) body.polygon = polygon(*p, Path(path, "polygon"));
-    // The exact values, kept beside the doubles when some are not doubles (0.1 is 1/10).
-    BodyValues v;
-    v.mass = exact_number(*mass);
-    v.com = exact_vec2(com);
-    if (inertia) v.inertia = exact_number(*inertia);
-    if (radius) v.radius_of_gyration = exact_number(*radius);
-    if (!v.mass.is_double() || !is_double(v.com) || !v.inertia.is_double() || (v.radius_of_gyration && !v.radius_of_gyration->is_double())) {
-        v.mass_double = body.mass;
-        v.com_double = body.com;
-        v.inertia_double = body.inertia.value_or(0.0);
-        v.radius_double = body.radius_of_gyration;
-        body.exact = std::make_shared<const BodyValues>(std::move(v));
-    }
+    BodyValues doubles;
+    doubles.mass_double = body.mass;
+    doubles.com_double = body.com;
+    doubles.inertia_double = body.inertia.value_or(0.0);
+    doubles.radius_double = body.radius_of_gyration;
+    body.exact = exact_body_values(b, std::move(doubles));
     return body;
 }
 
@@ -145,17 +124,22 @@ std::vector<AssemblyContact> found_contacts(const Assembly& a, ContactFinding fi
     }
     std::vector<ContactOrigin> origins;
     std::vector<AssemblyContact> found = find_assembly_contacts(bodies, obstacles, finding, &origins);
+    // The polygons as typed (bodies' then obstacles'; their doubles when every vertex is one).
+    std::vector<std::vector<Rational2>> doubles;
+    if (!a.exact_polygons) {
+        for (std::size_t k = 0; k < n + a.obstacles.size(); ++k) {
+            std::vector<Rational2>& p = doubles.emplace_back();
+            for (const Vec2& v : k < n ? a.bodies[k].polygon : a.obstacles[k - n]) p.push_back(rational(v));
+        }
+    }
+    const std::vector<std::vector<Rational2>>& exact = a.exact_polygons ? *a.exact_polygons : doubles;
     for (std::size_t i = 0; i < found.size(); ++i) {
         AssemblyContact& c = found[i];
         const ContactOrigin& o = origins[i];
-        const auto exact = [&](std::size_t body) -> std::vector<Rational2> {  // polygon of body 0..N (0: obstacle o.obstacle)
-            const std::size_t k = body == 0 ? n + o.obstacle : body - 1;
-            if (a.exact_polygons) return (*a.exact_polygons)[k];
-            std::vector<Rational2> out;
-            for (const Vec2& v : body == 0 ? a.obstacles[o.obstacle] : a.bodies[body - 1].polygon) out.push_back(rational(v));
-            return out;
-        };
-        const std::vector<Rational2> touching = exact(o.body_vertex ? c.a : c.b), touched = exact(o.body_vertex ? c.b : c.a);
+        // body 1..N, or 0: obstacle o.obstacle
+        const auto polygon_of = [&](std::size_t body) -> const std::vector<Rational2>& { return exact[body == 0 ? n + o.obstacle : body - 1]; };
+        const std::vector<Rational2>& touching = polygon_of(o.body_vertex ? c.a : c.b);
+        const std::vector<Rational2>& touched = polygon_of(o.body_vertex ? c.b : c.a);
         c.contact = contact_as_typed(c.contact, touching[o.vertex], touched[o.edge], touched[(o.edge + 1) % touched.size()], mu,
                                      scaled.has_value());
     }
@@ -174,18 +158,9 @@ Assembly read_bodies(const Value& doc, InputWarnings* w) {
         a.bodies.push_back(read_body(b, Path(bodies_path, i), w));
         bodies.push_back(b);
     });
-    const std::optional<Value> obstacles = doc.find("obstacles");
-    if (obstacles) {
-        const Path obstacles_path(root, "obstacles");
-        if (!obstacles->is_array()) throw InputError(obstacles_path.str(), "expected a list of obstacles");
-        obstacles->for_each_element([&](std::size_t i, const Value& o) {
-            const Path p(obstacles_path, i);
-            if (!o.is_object()) throw InputError(p.str(), "expected an object with \"polygon\"");
-            known_fields(o, p, {"polygon"}, w);
-            a.obstacles.push_back(polygon(field(o, p, "polygon"), Path(p, "polygon")));
-        });
-    }
-    a.exact_polygons = exact_polygons(bodies, obstacles);
+    const std::optional<Value> obstacle_list = doc.find("obstacles");
+    if (obstacle_list) a.obstacles = obstacles(*obstacle_list, Path(root, "obstacles"), w);
+    a.exact_polygons = exact_polygons(bodies, obstacle_list);
     ContactFinding finding;
     if (const std::optional<Value> distance = doc.find("contact_distance")) {
         finding.distance = nonnegative(*distance, Path(root, "contact_distance"), "a distance");

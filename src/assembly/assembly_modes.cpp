@@ -20,10 +20,12 @@ namespace {
 
 class ModeSearch {
 public:
-    ModeSearch(const Assembly& assembly, const Rational2& gravity)
-        : assembly_(assembly), gravity_(gravity), d_(assembly_data<Interval>(assembly)),
-          gx_(number<Interval>(gravity[0])), gy_(number<Interval>(gravity[1])) {}
-
+    // `d`, the enclosures of the assembly's programs, is shared by the searches of one call (the
+    // threads only read it); each search builds the exact data when it first needs it.
+    ModeSearch(const Assembly& assembly, const AssemblyData<Interval>& d, const Rational2& gravity,
+               std::optional<bool> frictionless = std::nullopt)
+        : assembly_(assembly), gravity_(gravity), d_(d), gx_(number<Interval>(gravity[0])), gy_(number<Interval>(gravity[1])),
+          frictionless_(frictionless) {}
 
     const AssemblyData<assembly_detail::Rational>& exact() {
         if (!exact_) exact_ = assembly_data<assembly_detail::Rational>(assembly_);
@@ -124,7 +126,7 @@ public:
 
     const Assembly& assembly_;
     Rational2 gravity_;
-    AssemblyData<Interval> d_;
+    const AssemblyData<Interval>& d_;
     std::optional<AssemblyData<assembly_detail::Rational>> exact_;
     Interval gx_, gy_;
     std::optional<bool> frictionless_;
@@ -143,12 +145,13 @@ AssemblyModes assembly_modes(const Assembly& assembly, const Rational2& gravity)
     }
     // The search tree below the prefixes of three letters (at most 64 subtrees) on up to two
     // threads, each with its own search (and exact data); the modes in the order of the letters.
-    ModeSearch top(assembly, gravity);
+    const AssemblyData<Interval> d = assembly_data<Interval>(assembly);
+    ModeSearch top(assembly, d, gravity);
     std::vector<std::string> starts;
     top.prefixes(std::string(), 3, starts);
     const bool large = assembly.contacts.size() >= 6;
     std::vector<std::vector<std::string>> found(starts.size());
-    detail::for_each_index(starts.size(), large, [&](std::size_t i) { ModeSearch(assembly, gravity).below(starts[i], found[i]); });
+    detail::for_each_index(starts.size(), large, [&](std::size_t i) { ModeSearch(assembly, d, gravity).below(starts[i], found[i]); });
     AssemblyModes out;
     for (std::vector<std::string>& modes : found) out.modes.insert(out.modes.end(), modes.begin(), modes.end());
     out.verdict = verdict_of(out.modes.size());
@@ -157,9 +160,7 @@ AssemblyModes assembly_modes(const Assembly& assembly, const Rational2& gravity)
     std::vector<char> moves(out.modes.size(), 0);
     if (!top.frictionless_equilibrium()) {
         detail::for_each_index(out.modes.size(), large, [&](std::size_t i) {
-            ModeSearch search(assembly, gravity);
-            search.frictionless_ = false;
-            moves[i] = search.has_motion(out.modes[i]);
+            moves[i] = ModeSearch(assembly, d, gravity, false).has_motion(out.modes[i]);
         });
     }
     for (std::size_t i = 0; i < out.modes.size(); ++i) {

@@ -46,6 +46,7 @@
 #include "momentlab/io/input_error.hpp"
 
 namespace momentlab {
+struct BodyValues;
 struct Contact;
 struct Scene;
 }
@@ -309,6 +310,21 @@ Vec2 nonzero(const Vec2& v, const Path& path);
 /// order of their keys.
 void known_fields(const Value& obj, const Path& path, std::initializer_list<std::string_view> known,
                   InputWarnings* warnings);
+
+/// The exact values (0.1 is 1/10) of a kept body object's "mass", "com", "inertia" (0 when it has
+/// none) and "radius_of_gyration", already read and checked, beside the doubles the reader took
+/// for them (`doubles`' *_double fields); none when every one is a double (Body::exact,
+/// AssemblyBody::exact).
+[[nodiscard]] std::shared_ptr<const BodyValues> exact_body_values(const Value& b, BodyValues doubles);
+
+/// A polygon's vertices (a list of [x, y], its problems refused: polygon_problem).
+[[nodiscard]] std::vector<Vec2> polygon(const Value& v, const Path& path);
+
+/// The exact vertices of a polygon polygon() accepted (0.1 is 1/10).
+[[nodiscard]] std::vector<Rational2> exact_polygon(const Value& v);
+
+/// The polygons of a scene's or an assembly's "obstacles": a list of objects with "polygon".
+[[nodiscard]] std::vector<std::vector<Vec2>> obstacles(const Value& list, const Path& path, InputWarnings* w);
 
 /// The contact of a kept object's "point", "normal", "mu" (default 0), "mu_kinetic" (default mu)
 /// and "name", with its exact values (0.1 is 1/10); its other members are not looked at.

@@ -45,21 +45,6 @@ double positive(const Value& obj, const Path& path, std::string_view name) {
     return x;
 }
 
-Polygon polygon(const Value& v, const Path& path) {
-    Polygon p = vec2_list(v, path);
-    const std::string problem = polygon_problem(p);
-    if (!problem.empty()) throw InputError(path.str(), problem);
-    return p;
-}
-
-// The exact vertices of a polygon (as polygon() read them: 0.1 is 1/10).
-std::vector<Rational2> exact_polygon(const Value& v) {
-    std::vector<Rational2> out;
-    out.reserve(v.size());
-    v.for_each_element([&](std::size_t, const Value& e) { out.push_back(exact_vec2(e)); });
-    return out;
-}
-
 // The contacts found from the polygons (`exact`: their vertices as typed, the body's first), as
 // typed (contact_as_typed): `scaled` when they were found on the scaled polygons.
 void exact_found_contacts(Scene& scene, const std::vector<std::vector<Rational2>>& exact, const Rational& mu, bool scaled) {
@@ -91,19 +76,12 @@ Body read_body(const Value& b, const Path& path, InputWarnings* w) {
         throw InputError(path.str(), "missing field \"inertia\" (or \"radius_of_gyration\")");
     }
     if (const std::optional<Value> p = b.find("polygon")) body.polygon = polygon(*p, Path(path, "polygon"));
-    // The exact values, kept beside the doubles when some are not doubles (0.1 is 1/10).
-    BodyValues v;
-    v.mass = exact_number(field(b, path, "mass"));
-    v.com = exact_vec2(field(b, path, "com"));
-    if (const std::optional<Value> i = b.find("inertia")) v.inertia = exact_number(*i);
-    if (const std::optional<Value> r = b.find("radius_of_gyration")) v.radius_of_gyration = exact_number(*r);
-    if (!v.mass.is_double() || !is_double(v.com) || !v.inertia.is_double() || (v.radius_of_gyration && !v.radius_of_gyration->is_double())) {
-        v.mass_double = body.mass;
-        v.com_double = body.com;
-        v.inertia_double = body.inertia;
-        v.radius_double = body.radius_of_gyration;
-        body.exact = std::make_shared<const BodyValues>(std::move(v));
-    }
+    BodyValues doubles;
+    doubles.mass_double = body.mass;
+    doubles.com_double = body.com;
+    doubles.inertia_double = body.inertia;
+    doubles.radius_double = body.radius_of_gyration;
+    body.exact = json_read::exact_body_values(b, std::move(doubles));
     return body;
 }
 
@@ -116,6 +94,44 @@ Contact read_contact(const Value& c, const Path& path, InputWarnings* w) {
 }  // namespace
 
 namespace json_read {
+
+Polygon polygon(const Value& v, const Path& path) {
+    Polygon p = vec2_list(v, path);
+    const std::string problem = polygon_problem(p);
+    if (!problem.empty()) throw InputError(path.str(), problem);
+    return p;
+}
+
+std::vector<Rational2> exact_polygon(const Value& v) {
+    std::vector<Rational2> out;
+    out.reserve(v.size());
+    v.for_each_element([&](std::size_t, const Value& e) { out.push_back(exact_vec2(e)); });
+    return out;
+}
+
+std::vector<Polygon> obstacles(const Value& list, const Path& path, InputWarnings* w) {
+    if (!list.is_array()) throw InputError(path.str(), "expected a list of obstacles");
+    std::vector<Polygon> out;
+    out.reserve(list.size());
+    list.for_each_element([&](std::size_t i, const Value& o) {
+        const Path p(path, i);
+        if (!o.is_object()) throw InputError(p.str(), "expected an object with \"polygon\"");
+        known_fields(o, p, {"polygon"}, w);
+        out.push_back(polygon(field(o, p, "polygon"), Path(p, "polygon")));
+    });
+    return out;
+}
+
+std::shared_ptr<const BodyValues> exact_body_values(const Value& b, BodyValues v) {
+    v.mass = exact_number(*b.find("mass"));
+    v.com = exact_vec2(*b.find("com"));
+    if (const std::optional<Value> i = b.find("inertia")) v.inertia = exact_number(*i);
+    if (const std::optional<Value> r = b.find("radius_of_gyration")) v.radius_of_gyration = exact_number(*r);
+    if (v.mass.is_double() && is_double(v.com) && v.inertia.is_double() && (!v.radius_of_gyration || v.radius_of_gyration->is_double())) {
+        return nullptr;
+    }
+    return std::make_shared<const BodyValues>(std::move(v));
+}
 
 Contact contact_of(const Value& c, const Path& path) {
     static constexpr std::array<std::string_view, 5> kFields = {"point", "normal", "mu", "mu_kinetic", "name"};
@@ -156,16 +172,7 @@ Scene read_scene(const Value& doc, InputWarnings* w) {
     known_fields(doc, root, {"body", "contacts", "obstacles", "contact_distance", "mu"}, w);
     Scene scene;
     if (const std::optional<Value> body = doc.find("body")) scene.body = read_body(*body, Path(root, "body"), w);
-    if (const std::optional<Value> obstacles = doc.find("obstacles")) {
-        const Path list(root, "obstacles");
-        if (!obstacles->is_array()) throw InputError(list.str(), "expected a list of obstacles");
-        obstacles->for_each_element([&](std::size_t i, const Value& o) {
-            const Path p(list, i);
-            if (!o.is_object()) throw InputError(p.str(), "expected an object with \"polygon\"");
-            known_fields(o, p, {"polygon"}, w);
-            scene.obstacles.push_back(polygon(field(o, p, "polygon"), Path(p, "polygon")));
-        });
-    }
+    if (const std::optional<Value> list = doc.find("obstacles")) scene.obstacles = obstacles(*list, Path(root, "obstacles"), w);
     ContactFinding options;
     if (const std::optional<Value> distance = doc.find("contact_distance")) {
         options.distance = nonnegative(*distance, Path(root, "contact_distance"), "a distance");
