@@ -32,7 +32,7 @@ struct PlanOptions {
     std::optional<std::size_t> vertex;
     std::string slip;
     bool ignore_interference = false;
-    std::vector<double> centre;
+    std::vector<TypedNumber> centre;  // as typed: 0.1 is 1/10
     bool quasi_static = false;
     std::vector<TypedNumber> gravity;
     std::vector<TypedNumber> fixed;
@@ -97,11 +97,11 @@ void print_directions(const DirectionPlan& plan, bool knife_edge) {
     }
 }
 
-// The bands of magnitudes of the force through `point` along `angle`, added to the fixed wrench.
-void print_best_bands(const std::vector<ModeForces>& analysis, const Exact3& fixed, const Vec2& point, double angle) {
+// The bands of magnitudes of the force through `point` (exact) along `angle`, added to the load.
+void print_best_bands(Problem& p, const Load& load, const Rational2& point, double angle) {
     const Vec2 d(std::cos(angle), std::sin(angle));
     std::cout << "  along the best direction, the force's magnitude from 0 up (with the fixed wrench):\n";
-    print_bands(magnitude_bands(analysis, fixed, wrench_through(exact(point), exact(d))), analysis);
+    print_bands(p.push_line(point, rational(d), load), p.analysis());
 }
 
 // Every interval a single direction.
@@ -119,7 +119,7 @@ int run_tilt(const PlanOptions& o) {
     progress.finish();
     const Scene& scene = p.scene();
     const ModeForces& goal = p.goal(o.goal);
-    const std::optional<Exact3> fixed = p.fixed_wrench(load);
+    const std::optional<Rational3> fixed = p.wrench_of(load);
     if (o.json) {
         nlohmann::json out = to_json(plan);
         out["goal"] = o.goal;
@@ -132,7 +132,7 @@ int run_tilt(const PlanOptions& o) {
                   << ": gravity directions, radians from +x (boundaries shared with a neighbouring mode)\n";
         if (fixed) std::cout << "  with the fixed wrench " << fmt(to_double(*fixed)) << " acting too\n";
         print_directions(plan, plan.knife_edge || single_directions(plan));
-        if (fixed) print_best_bands(p.analysis(), *fixed, scene.body->com, plan.best);
+        if (fixed) print_best_bands(p, load, scene.body->exact_com(), plan.best);
     }
     if (!o.picture.files.empty()) {
         const std::string title = o.picture.title.empty() ? stem(o.file) + ": tilts that produce mode " + o.goal
@@ -144,16 +144,16 @@ int run_tilt(const PlanOptions& o) {
 
 int run_comply(const PlanOptions& o) {
     const std::optional<Box> view = checked_picture_options(o.picture, {o.file});
-    const std::vector<Vec2> centre = o.centre.empty() ? std::vector<Vec2>{} : checked_points(o.centre, "--centre", 1);
+    const std::vector<Rational2> centre = o.centre.empty() ? std::vector<Rational2>{} : checked_points(o.centre, "--centre", 1);
     if (!o.picture.files.empty() && centre.empty()) throw InputError("-o", "a picture shows one centre: give --centre X Y");
     TerminalProgress progress;
     Problem p = open_problem(o.file, o.quasi_static, progress);
     const Load load = load_of(o.gravity, o.fixed, o.forces);
-    const ComplyAnswer answer = p.plan_comply(o.goal, centre.empty() ? std::nullopt : std::optional<Vec2>(centre.front()), load);
+    const ComplyAnswer answer = p.plan_comply(o.goal, centre.empty() ? std::nullopt : std::optional<Rational2>(centre.front()), load);
     progress.finish();
     const Scene& scene = p.scene();
     const ModeForces& goal = p.goal(o.goal);
-    const std::optional<Exact3> fixed = p.fixed_wrench(load);
+    const std::optional<Rational3> fixed = p.wrench_of(load);
     const Labels& region = answer.labels;
     const std::optional<ComplyPlan>& plan = answer.centre;
     if (o.json) {
@@ -176,7 +176,7 @@ int run_comply(const PlanOptions& o) {
             } else {
                 std::cout << "; spring force (offset) directions, radians from +x:\n";
                 print_directions(plan->directions, plan->verdict != CentreVerdict::Works);
-                if (fixed) print_best_bands(p.analysis(), *fixed, plan->centre, plan->directions.best);
+                if (fixed) print_best_bands(p, load, centre.front(), plan->directions.best);
             }
         }
     }
@@ -236,7 +236,7 @@ int run_push(const PlanOptions& o) {
     const std::vector<ModeForces>& analysis = p.analysis();
     progress.finish();
     const ModeForces& goal = p.goal(o.goal);
-    const std::optional<Exact3> fixed = p.fixed_wrench(load);
+    const std::optional<Rational3> fixed = p.wrench_of(load);
     const char* interference = o.ignore_interference ? "ignored" : "considered";
     // The cases as they are solved: only their printed rows are kept (a table of 6 n cases needs
     // the memory of its output), and the first case whole, for a picture or its bands.
@@ -272,8 +272,7 @@ int run_push(const PlanOptions& o) {
                   << bests;
         if (fixed && count == 1 && first->best && first->verdict == PushVerdict::Feasible) {
             std::cout << "  the best push's magnitude from 0 up (with the fixed wrench):\n";
-            print_bands(magnitude_bands(analysis, *fixed, wrench_through(exact(first->best->point), exact(first->best->direction))),
-                        analysis);
+            print_bands(p.push_line(rational(first->best->point), rational(first->best->direction), load), analysis);
         }
     }
     if (!o.picture.files.empty() && first) {

@@ -23,7 +23,8 @@ from __future__ import annotations
 import json
 import math
 import os
-from dataclasses import dataclass, field
+import re
+from dataclasses import dataclass, field, replace as _replace
 from decimal import Decimal
 from fractions import Fraction
 from typing import Any, Iterable, Optional, Sequence
@@ -297,9 +298,26 @@ class Scene:
 
 def find_contacts(body, obstacles, distance=1e-9, mu=0.0, mu_kinetic=None) -> list:
     """The contacts where the body polygon (shape (n, 2)) touches the obstacles (a list of
-    polygons), within `distance`; decided exactly."""
-    found = _momentlab.find_contacts(body, list(obstacles), distance, mu, mu_kinetic)
-    return Scene(_scene=found).contacts
+    polygons), within `distance`; decided exactly. Floats are their binary values; polygons,
+    distance or mu holding Fractions or Decimals are read as typed, as a scene's polygons are
+    (Scene(body=..., obstacles=...), which keeps the contacts exact; the Contact values returned
+    show their doubles)."""
+    obstacles = list(obstacles)
+    if not _has_exact([body, obstacles, distance, mu]):
+        return Scene(_scene=_momentlab.find_contacts(body, obstacles, distance, mu, mu_kinetic)).contacts
+    doc = {"body": {"mass": 1, "com": [0, 0], "inertia": 1, "polygon": body},
+           "obstacles": [{"polygon": o} for o in obstacles], "contact_distance": distance, "mu": mu}
+    try:
+        found = Scene(_scene=_momentlab._Scene.from_json(_exact_json(doc, "$"))).contacts
+    except ValueError as e:  # named as the arguments are
+        names = (("$.body.polygon", "body"), ("$.contact_distance", "distance"), ("$.mu", "mu"), ("$.obstacles", "obstacles"))
+        text = re.sub(r"(obstacles\[\d+\])\.polygon", r"\1", str(e))
+        for path, name in names:
+            text = text.replace(path, name)
+        raise ValueError(text) from None
+    if mu_kinetic is not None:
+        found = [_replace(c, mu_kinetic=_number(mu_kinetic, "mu_kinetic")) for c in found]
+    return found
 
 
 class Analysis:
@@ -513,7 +531,7 @@ def plan_comply(scene, goal: str, centre=None, gravity=None, wrench=None, forces
     """Compliance, as `plan comply --json`: a Compliance (.goal, .labels: the .plus and .minus
     RegionData of E_goal's moment labels (the centres outside both work), .centre: a CentrePlan
     (.point, .label, .verdict, .intervals, .best, .margin, .unique, .shared, ...) for a given
-    centre (m), else None)."""
+    centre (m; floats their binary value, a Fraction, Decimal or string exactly), else None)."""
     return Compliance.from_json(_analysis_of(scene)._analysis.plan_comply(_goal(goal), centre, gravity, wrench, _forces(forces)))
 
 

@@ -158,8 +158,8 @@ PYBIND11_MODULE(_momentlab, m) {
         .def_property_readonly("minus", &Labels::minus)
         .def_property_readonly("both", [](const Labels& l) { return both_region(l.forces()); },
                                "the points about which every force has moment 0")
-        .def("at", [](const Labels& l, const py::handle& p) { return label_text(l.at(vector_of<2>(p, "point"))); },
-             py::arg("point"), "The exact label of a point: '+', '-', '+-' or 'none'.");
+        .def("at", [](const Labels& l, const py::handle& p) { return label_text(l.at(exact_vector_of<2>(p, "point"))); },
+             py::arg("point"), "The exact label of a point (floats their binary value; a Fraction, Decimal or numeric string as it reads): '+', '-', '+-' or 'none'.");
 
     py::class_<ModeForces>(m, "ModeSets", "One contact mode with its sets: twists A, F = M A, T and E.")
         .def_property_readonly("letters", [](const ModeForces& f) { return f.mode.letters; })
@@ -273,7 +273,8 @@ PYBIND11_MODULE(_momentlab, m) {
         .def("plan_comply",
              [](Analysis& a, const std::string& goal, const py::handle& centre, const py::handle& gravity, const py::handle& wrench,
                 const py::handle& forces) {
-                 const std::optional<Vec2> at = centre.is_none() ? std::nullopt : std::optional<Vec2>(vector_of<2>(centre, "centre"));
+                 // the centre exactly as given: floats their binary value, a Fraction, Decimal or string as it reads
+                 const std::optional<Rational2> at = centre.is_none() ? std::nullopt : std::optional<Rational2>(exact_vector_of<2>(centre, "centre"));
                  const ComplyAnswer answer = a.problem.plan_comply(goal, at, load_of(gravity, wrench, forces));
                  py::dict out;
                  out["goal"] = goal;

@@ -7,8 +7,27 @@ namespace momentlab::python {
 
 // Real numbers as float64, as the CLI reads them: other dtypes (strings, complex, objects) and
 // masked arrays are refused, and a long double that would underflow to 0 is refused as in files.
+namespace {
+
+// True when a list (or tuple), or one in it, holds a bool: numpy would read it as 0 or 1.
+bool holds_bool(const py::handle& value, int depth = 0) {
+    if (depth > 2 || (!py::isinstance<py::list>(value) && !py::isinstance<py::tuple>(value))) return false;
+    for (const py::handle& x : value) {
+        if (is_bool(x) || holds_bool(x, depth + 1)) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+bool is_bool(const py::handle& x) {
+    static const py::object numpy_bool = py::module_::import("numpy").attr("bool_");
+    return py::isinstance<py::bool_>(x) || py::isinstance(x, numpy_bool);
+}
+
 Array real_array(const py::handle& value, const std::string& what) {
     const py::module_ np = py::module_::import("numpy");
+    if (holds_bool(value)) throw InputError(what, "expected numbers, got a bool");
     if (np.attr("ma").attr("isMaskedArray")(value).cast<bool>()) {
         throw InputError(what, "a masked array is not read (fill it first)");
     }
@@ -19,7 +38,7 @@ Array real_array(const py::handle& value, const std::string& what) {
         throw InputError(what, "expected numbers");
     }
     const char kind = raw.dtype().kind();
-    if (kind != 'b' && kind != 'i' && kind != 'u' && kind != 'f') {
+    if (kind != 'i' && kind != 'u' && kind != 'f') {
         throw InputError(what, "expected real numbers, not an array of dtype " + py::str(raw.dtype()).cast<std::string>());
     }
     Array a = Array::ensure(raw);

@@ -68,6 +68,9 @@ Eigen::Matrix<double, K, 1> vector_of(const py::handle& value, const char* what)
     return v;
 }
 
+// A Python or numpy bool (not a number here, though numpy reads True as 1).
+bool is_bool(const py::handle& x);
+
 // A number with its exact meaning (docs/design.md, "Numbers as typed"): a float (or numpy
 // scalar) is its binary value, an int its integer, a fractions.Fraction its ratio, a
 // decimal.Decimal or a numeric string the decimal it spells; nullopt for anything else.
@@ -91,7 +94,12 @@ std::array<Rational, K> exact_vector_of(const py::handle& value, const char* wha
     Eigen::Matrix<double, K, 1> rounded;
     int k = 0;
     for (const py::handle& x : value) {
+        if (is_bool(x)) throw InputError(what, "expected numbers, got a bool");
         std::optional<Rational> r = exact_number(x);
+        // As in files and options: a non-zero number never reads as 0 (docs/reliability.md).
+        if (r && !r->is_zero() && r->to_double() == 0.0) {
+            throw InputError(what, "a number is too small for a double: it would be taken as 0");
+        }
         if (!r) {
             if (py::isinstance<py::str>(x) || !py::hasattr(x, "__float__")) throw InputError(what, "expected numbers");
             double d = 0.0;

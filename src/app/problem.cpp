@@ -72,8 +72,7 @@ std::optional<Rational3> Problem::wrench_of(const Load& load) const {
         const Body& b = *scene_.body;
         const BodyValues* v = b.exact_values();
         const Rational m = v ? v->mass : Rational(b.mass);
-        const Rational2 com = v ? v->com : rational(b.com);
-        add(through(com, {m * (*load.gravity)[0], m * (*load.gravity)[1]}));
+        add(through(b.exact_com(), {m * (*load.gravity)[0], m * (*load.gravity)[1]}));
     }
     if (load.wrench) {
         (void)checked_vector(to_double(*load.wrench), names_.wrench);
@@ -85,14 +84,6 @@ std::optional<Rational3> Problem::wrench_of(const Load& load) const {
         add(through(point, force));
     }
     return out;
-}
-
-std::optional<Exact3> Problem::fixed_wrench(const Load& load) const {
-    const std::optional<Rational3> w = wrench_of(load);
-    if (!w) return std::nullopt;
-    const Dyadic one(1.0);
-    if ((*w)[0].den() == one && (*w)[1].den() == one && (*w)[2].den() == one) return Exact3{(*w)[0].num(), (*w)[1].num(), (*w)[2].num()};
-    return exact(to_double(*w));
 }
 
 QueryAnswer Problem::query(const Load& load) {
@@ -153,7 +144,8 @@ std::vector<MagnitudeBand> Problem::push_line(const Rational2& point, const Rati
 
 PlanContext Problem::context(const Load& load) {
     PlanContext c;
-    c.fixed = fixed_wrench(load);
+    // exactly: a decimal load's denominators cleared (its directions), scaled back in magnitudes
+    if (const std::optional<Rational3> w = wrench_of(load)) c.fixed = cleared(*w, &c.fixed_scale);
     c.modes = analysis();
     c.metric = default_metric(scene_);
     return c;
@@ -191,12 +183,12 @@ std::vector<PushCase> Problem::plan_push(const std::string& goal_letters, const 
     return cases;
 }
 
-ComplyAnswer Problem::plan_comply(const std::string& goal_letters, const std::optional<Vec2>& centre, const Load& load) {
-    const std::optional<Vec2> at = centre ? std::optional<Vec2>(checked_vector(*centre, names_.centre)) : std::nullopt;
+ComplyAnswer Problem::plan_comply(const std::string& goal_letters, const std::optional<Rational2>& centre, const Load& load) {
+    if (centre) (void)checked_vector(to_double(*centre), names_.centre);
     const ModeForces& g = find_mode(analysis("plan comply"), goal_letters, names_.goal);
     const PlanContext c = context(load);
     ComplyAnswer out{compliance_labels(g, c), std::nullopt};
-    if (at) out.centre = momentlab::plan_comply(g, *at, c);
+    if (centre) out.centre = momentlab::plan_comply(g, *centre, c);
     return out;
 }
 

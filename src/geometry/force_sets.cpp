@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace momentlab {
 namespace {
@@ -14,6 +15,30 @@ void require_finite(const Vec2& v, const char* what) {
 void require_nonzero(const Vec2& v, const char* what) {
     require_finite(v, what);
     if (v.x() == 0.0 && v.y() == 0.0) throw std::invalid_argument(std::string(what) + " must be non-zero");
+}
+
+// Exact sets (decimals as typed): each generator times a positive number, its denominators
+// cleared, so the same cone with Dyadic coordinates. A point P / d (P integer, d > 0 their
+// common denominator) and a direction cleared to integers N give the force's wrench
+// (N, (P / d) x N) times d: (d N, P x N).
+struct ClearedPoint {
+    std::vector<Dyadic> p;
+    Dyadic d;
+};
+
+ClearedPoint cleared_point(const Rational2& point) {
+    ClearedPoint out;
+    out.p = clear_denominators(point, &out.d);
+    return out;
+}
+
+Exact2 cleared_direction(const Rational2& direction) {
+    const std::vector<Dyadic> n = clear_denominators(direction);
+    return {n[0], n[1]};
+}
+
+ExactVector cleared_force(const ClearedPoint& at, const Exact2& n) {
+    return ExactVector::from_exact({at.d * n[0], at.d * n[1], at.p[0] * n[1] - at.p[1] * n[0]});
 }
 
 }  // namespace
@@ -108,6 +133,41 @@ Cone pure_moments(int sign) {
         return Cone::from_generators(g);
     }
     const Vec3 g[] = {up, -up};
+    return Cone::from_generators(g);
+}
+
+Cone force_ray(const Rational2& point, const Rational2& direction) {
+    const ExactVector g[] = {cleared_force(cleared_point(point), cleared_direction(direction))};
+    return Cone::from_generators(g);
+}
+
+Cone line_of_force(const Rational2& point, const Rational2& direction) {
+    const ExactVector w = cleared_force(cleared_point(point), cleared_direction(direction));
+    const ExactVector g[] = {w, w.negated()};
+    return Cone::from_generators(g);
+}
+
+// All forces through the point P / d: (d, 0, -P.y), (0, d, P.x) and their negatives.
+Cone forces_through_point(const Rational2& point) {
+    const ClearedPoint at = cleared_point(point);
+    const Dyadic zero;
+    const ExactVector ex = ExactVector::from_exact({at.d, zero, -at.p[1]});
+    const ExactVector ey = ExactVector::from_exact({zero, at.d, at.p[0]});
+    const ExactVector g[] = {ex, ex.negated(), ey, ey.negated()};
+    return Cone::from_generators(g);
+}
+
+// The edges b N +- a t at P / d, each times d (friction_direction with a denominator).
+Cone friction_cone(const Rational2& point, const Rational2& normal, const Rational& mu) {
+    const ClearedPoint at = cleared_point(point);
+    const Exact2 n = cleared_direction(normal);
+    Dyadic b;
+    const Dyadic a = clear_denominators(std::span<const Rational>(&mu, 1), &b).front();
+    const auto edge = [&](const Dyadic& c) {
+        const auto d = friction_direction(n[0], n[1], c, &b);
+        return cleared_force(at, Exact2{d[0], d[1]});
+    };
+    const ExactVector g[] = {edge(a), edge(-a)};
     return Cone::from_generators(g);
 }
 

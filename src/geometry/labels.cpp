@@ -171,19 +171,23 @@ Label label_from_dual(const Cone& dual, const Vec2& point) {
     return label_from_dual(dual, lambda, Vec3(-lambda));
 }
 
+// The point P / d: the functional (P.y, -P.x, d), d > 0 times (y, -x, 1).
+Label label_from_dual(const Cone& dual, const Rational2& point) {
+    Dyadic d;
+    const std::vector<Dyadic> p = clear_denominators(point, &d);
+    const ExactVector lambda = ExactVector::from_exact({p[1], -p[0], d});
+    return label_from_dual(dual, lambda, lambda.negated());
+}
+
 }  // namespace
 
 Label Labels::at(const Vec2& point) const { return label_from_dual(dual_, point); }
 
-Label Labels::at(const Rational2& point) const {
-    // The point P / d: the functional (P.y, -P.x, d), d > 0 times (y, -x, 1).
-    Dyadic d;
-    const std::vector<Dyadic> p = clear_denominators(point, &d);
-    const ExactVector lambda = ExactVector::from_exact({p[1], -p[0], d});
-    return label_from_dual(dual_, lambda, lambda.negated());
-}
+Label Labels::at(const Rational2& point) const { return label_from_dual(dual_, point); }
 
 Label moment_label(const Cone& forces, const Vec2& point) { return label_from_dual(forces.dual(), point); }
+
+Label moment_label(const Cone& forces, const Rational2& point) { return label_from_dual(forces.dual(), point); }
 
 Cone Labels::forces_from_regions(const Region& plus, const Region& minus) {
     std::vector<ExactVector> gens;

@@ -32,30 +32,6 @@ constexpr int kMaxDepth = 64;
 
 Cone read_set(const Value& s, const Path& path, InputWarnings* w, int depth);
 
-// Force sets of exact values (docs/design.md, "Numbers as typed"): each generator times a
-// positive number, its denominators cleared, so the same cone with Dyadic coordinates. A point
-// P / d (P integer, d > 0 their common denominator) and a direction cleared to integers N give
-// the force's wrench (N, (P / d) x N) times d: (d N, P x N).
-struct ClearedPoint {
-    std::vector<Dyadic> p;
-    Dyadic d;
-};
-
-ClearedPoint cleared_point(const Rational2& point) {
-    ClearedPoint out;
-    out.p = clear_denominators(point, &out.d);
-    return out;
-}
-
-Exact2 cleared_direction(const Rational2& direction) {
-    const std::vector<Dyadic> n = clear_denominators(direction);
-    return {n[0], n[1]};
-}
-
-ExactVector cleared_force(const ClearedPoint& at, const Exact2& n) {
-    return ExactVector::from_exact({at.d * n[0], at.d * n[1], at.p[0] * n[1] - at.p[1] * n[0]});
-}
-
 // The exact [x, y] of field `name` (after the double reader has checked it).
 Rational2 exact2(const Value& s, const Path& path, std::string_view name) { return exact_vec2(field(s, path, name)); }
 
@@ -67,42 +43,6 @@ std::vector<ExactVector> cleared_triples(const Value& list) {
         out.push_back(ExactVector::from_exact({c[0], c[1], c[2]}));
     });
     return out;
-}
-
-// The force (or, `both`, the line of force) through `point` along `direction`, exactly as typed.
-Cone exact_force(const Rational2& point, const Rational2& direction, bool both) {
-    const ExactVector w = cleared_force(cleared_point(point), cleared_direction(direction));
-    if (!both) {
-        const ExactVector g[] = {w};
-        return Cone::from_generators(g);
-    }
-    const ExactVector g[] = {w, w.negated()};
-    return Cone::from_generators(g);
-}
-
-// All forces through the point P / d: (d, 0, -P.y), (0, d, P.x) and their negatives.
-Cone exact_forces_through(const Rational2& point) {
-    const ClearedPoint at = cleared_point(point);
-    const Dyadic zero;
-    const ExactVector ex = ExactVector::from_exact({at.d, zero, -at.p[1]});
-    const ExactVector ey = ExactVector::from_exact({zero, at.d, at.p[0]});
-    const ExactVector g[] = {ex, ex.negated(), ey, ey.negated()};
-    return Cone::from_generators(g);
-}
-
-// The Coulomb cone at `point`: with the normal cleared to integers N and mu = a / b, the edges
-// N +- mu t times b (friction_direction with a denominator).
-Cone exact_friction_cone(const Rational2& point, const Rational2& normal, const Rational& mu) {
-    const ClearedPoint at = cleared_point(point);
-    const Exact2 n = cleared_direction(normal);
-    Dyadic b;
-    const Dyadic a = clear_denominators(std::span<const Rational>(&mu, 1), &b).front();
-    const auto edge = [&](const Dyadic& c) {
-        const auto d = friction_direction(n[0], n[1], c, &b);
-        return cleared_force(at, Exact2{d[0], d[1]});
-    };
-    const ExactVector g[] = {edge(a), edge(-a)};
-    return Cone::from_generators(g);
 }
 
 std::vector<Cone> read_sets(const Value& sets, const Path& path, InputWarnings* w, int depth) {
@@ -137,13 +77,13 @@ Cone read_set(const Value& s, const Path& path, InputWarnings* w, int depth) {
         const Vec2 point = vec2(field(s, path, "point"), Path(path, "point"));
         const Vec2 direction = nonzero2(s, path, "direction");
         const Rational2 p = exact2(s, path, "point"), d = exact2(s, path, "direction");
-        if (!is_double(p) || !is_double(d)) return exact_force(p, d, type == "line");
+        if (!is_double(p) || !is_double(d)) return type == "force" ? force_ray(p, d) : line_of_force(p, d);
         return type == "force" ? force_ray(point, direction) : line_of_force(point, direction);
     }
     if (type == "point") {
         const Vec2 point = vec2(field(s, path, "point"), Path(path, "point"));
         const Rational2 p = exact2(s, path, "point");
-        return is_double(p) ? forces_through_point(point) : exact_forces_through(p);
+        return is_double(p) ? forces_through_point(point) : forces_through_point(p);
     }
     if (type == "friction_cone") {
         const double mu = nonnegative(field(s, path, "mu"), Path(path, "mu"), "mu");
@@ -151,7 +91,7 @@ Cone read_set(const Value& s, const Path& path, InputWarnings* w, int depth) {
         const Vec2 normal = nonzero2(s, path, "normal");
         const Rational2 p = exact2(s, path, "point"), n = exact2(s, path, "normal");
         const Rational m = exact_number(field(s, path, "mu"));
-        if (!is_double(p) || !is_double(n) || !m.is_double()) return exact_friction_cone(p, n, m);
+        if (!is_double(p) || !is_double(n) || !m.is_double()) return friction_cone(p, n, m);
         return friction_cone(point, normal, mu);
     }
     if (type == "moment") {

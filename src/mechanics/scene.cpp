@@ -100,6 +100,11 @@ const BodyValues* Body::exact_values() const {
     return current ? &v : nullptr;
 }
 
+Rational2 Body::exact_com() const {
+    const BodyValues* v = exact_values();
+    return v ? v->com : rational(com);
+}
+
 ExactMatrix inertia_at_origin(const Body& body) {
     if (const BodyValues* v = body.exact_values()) return detail::cleared_inertia(*v);
     return detail::body_inertia<Dyadic>(body);

@@ -12,12 +12,16 @@ const char* to_string(CentreVerdict v) {
     return "?";
 }
 
-ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre) { return plan_comply(goal, centre, PlanContext{}); }
+ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre) { return plan_comply(goal, rational(centre), PlanContext{}); }
 
 ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre, const PlanContext& context) {
+    return plan_comply(goal, rational(centre), context);
+}
+
+ComplyPlan plan_comply(const ModeForces& goal, const Rational2& centre, const PlanContext& context) {
     const Cone target = planned_set(goal, context);
     ComplyPlan plan;
-    plan.centre = centre;
+    plan.centre = to_double(centre);
     plan.label = moment_label(target, centre);  // without building the regions
     plan.directions = plan_directions_through(centre, goal, context, target);
     // W_c ∩ E_goal is exact: {0} exactly when c is strictly inside a labelled region, and it meets

@@ -55,7 +55,7 @@ void add_arc(std::vector<AngleInterval>& out, const Vec2& a, const Vec2& b, Turn
 
 }  // namespace
 
-DirectionPlan plan_directions_through(const Vec2& point, const Cone& goal_applied) {
+DirectionPlan plan_directions_through(const Rational2& point, const Cone& goal_applied) {
     DirectionPlan plan;
     plan.actions = forces_through_point(point);
     plan.solutions = intersection(plan.actions, goal_applied);
@@ -128,18 +128,39 @@ Cone planned_set(const ModeForces& goal, const PlanContext& context) {
     return context.fixed ? reachable_directions(goal.applied, *context.fixed) : goal.applied;
 }
 
-DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal, const PlanContext& context) {
+std::optional<MagnitudeRange> magnitudes_through(const ModeForces& goal, const PlanContext& context,
+                                                const Rational2& point, const Rational2& direction) {
+    // fixed / s_g + lambda u / s_u in E: fixed + lambda' u with lambda' = lambda s_g / s_u, so
+    // each end found is lambda = lambda' s_u / s_g, exactly.
+    Dyadic s_u;
+    const std::vector<Dyadic> c = clear_denominators(
+        Rational3{direction[0], direction[1], point[0] * direction[1] - point[1] * direction[0]}, &s_u);
+    std::optional<MagnitudeRange> r = magnitudes(goal.applied, *context.fixed, Exact3{c[0], c[1], c[2]});
+    if (!r) return r;
+    const auto back = [&](Magnitude& m) {
+        m.num = m.num * s_u;
+        m.den = m.den * context.fixed_scale;
+    };
+    back(r->lo);
+    if (r->hi) back(*r->hi);
+    return r;
+}
+
+DirectionPlan plan_directions_through(const Rational2& point, const ModeForces& goal, const PlanContext& context) {
     return plan_directions_through(point, goal, context, planned_set(goal, context));
 }
 
-DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal, const PlanContext& context,
+DirectionPlan plan_directions_through(const Rational2& point, const ModeForces& goal, const PlanContext& context,
                                       const Cone& target) {
     DirectionPlan plan = plan_directions_through(point, target);
     if (!plan.feasible()) return plan;
     if (!context.modes.empty() && !context.fixed) {
         // The plane of forces through the point, oriented so that counter-clockwise forces turn
         // positively about its normal (p.y, -p.x, 1).
-        const ExactVector normal = ExactVector::input(Vec3(point.y(), -point.x(), 1.0));
+        // (P.y, -P.x, d) for the point P / d: a positive multiple.
+        Dyadic d;
+        const std::vector<Dyadic> p = clear_denominators(point, &d);
+        const ExactVector normal = ExactVector::from_exact({p[1], -p[0], d});
         const PlaneSplit split = split_plane(normal, plan.solutions, context.modes, goal);
         plan.uniqueness_known = true;
         const auto widest = add_arcs(plan.unique, normal, split.unique);
@@ -151,7 +172,7 @@ DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal,
         }
         if (context.metric) {
             plan.best_margins =
-                margins_of(context.modes, wrench_through(exact(point), exact(Vec2(std::cos(plan.best), std::sin(plan.best)))),
+                margins_of(context.modes, wrench_through(exact(to_double(point)), exact(Vec2(std::cos(plan.best), std::sin(plan.best)))),
                            *context.metric);
         }
     }
@@ -161,8 +182,7 @@ DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal,
     if (plan.knife_edge) plan.margin = 0.0;
     if (plan.best >= M_PI) plan.best -= 2.0 * M_PI;  // [-pi, pi), as the intervals
     if (context.fixed) {
-        const Exact3 u = wrench_through(exact(point), exact(Vec2(std::cos(plan.best), std::sin(plan.best))));
-        plan.best_magnitudes = magnitudes(goal.applied, *context.fixed, u);
+        plan.best_magnitudes = magnitudes_through(goal, context, point, rational(Vec2(std::cos(plan.best), std::sin(plan.best))));
         plan.magnitudes_known = true;
     }
     return plan;

@@ -342,7 +342,7 @@ PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, c
         c.best_margins = margins_of(context.modes, wrench_through(exact(c.best->point), exact(c.best->direction)), *context.metric);
     }
     c.magnitudes_known = context.fixed.has_value();
-    if (context.fixed && c.best) c.best_magnitudes = magnitudes(goal_mode.applied, *context.fixed, wrench_through(exact(c.best->point), exact(c.best->direction)));
+    if (context.fixed && c.best) c.best_magnitudes = magnitudes_through(goal_mode, context, rational(c.best->point), rational(c.best->direction));
     return c;
 }
 

@@ -9,7 +9,7 @@ DirectionPlan plan_tilt(const Scene& scene, const ModeForces& goal) { return pla
 
 DirectionPlan plan_tilt(const Scene& scene, const ModeForces& goal, const PlanContext& context) {
     if (!scene.body) throw std::invalid_argument("plan_tilt: the scene has no body");
-    return plan_directions_through(scene.body->com, goal, context);
+    return plan_directions_through(scene.body->exact_com(), goal, context);
 }
 
 }  // namespace momentlab

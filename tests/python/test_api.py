@@ -259,8 +259,9 @@ def test_results_are_typed_values_with_inf_for_unbounded_ends():
     assert plan.best_magnitudes.to == math.inf
     want = cli("plan", "tilt", path, "--goal", "rr", "--wrench", 0, 0, 0.1, "--json")
     assert as_json(plan) == {k: v for k, v in want.items() if k != "fixed"}
-    # A push with gravity: every case a PushCase, best_magnitudes as the CLI's.
-    cases = ml.plan_push(a, "sr", gravity=(0.0, -9.81))
+    # A push with gravity: every case a PushCase, best_magnitudes as the CLI's (which reads -9.81
+    # as typed: the string here; the float -9.81 is the double's binary value).
+    cases = ml.plan_push(a, "sr", gravity=("0", "-9.81"))
     want = cli("plan", "push", path, "--goal", "sr", "--gravity", 0, -9.81, "--json")["cases"]
     assert all(isinstance(c, ml.PushCase) for c in cases) and [as_json(c) for c in cases] == without_nulls(want)
     assert any(c.best_magnitudes is not None and c.best_magnitudes.to == math.inf for c in cases)

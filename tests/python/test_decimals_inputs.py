@@ -1,5 +1,5 @@
-"""Numbers as typed (issue 46) in the inputs beyond scenes and loads: force-set files and
-`label --at` (docs/design.md, "Numbers as typed"; docs/formats.md).
+"""Numbers as typed (issue 46) in the inputs beyond scenes and loads: force-set files, `label
+--at`, the planners' points and loads (docs/design.md, "Numbers as typed"; docs/formats.md).
 
 The oracle reads the force-set file's raw text with every number a Fraction of its decimal
 (json.loads(..., parse_float=Fraction)) and decides each label from its definition (docs/design.md,
@@ -19,6 +19,7 @@ import pytest
 import oracle
 from conftest import cli
 from test_decimals_oracle import dec
+from test_issue44_oracle import quasi_static_answer
 
 
 def generators(s):
@@ -328,3 +329,154 @@ def test_python_never_reads_a_tiny_exact_number_as_zero():
             ml.query(scene, w)
     with pytest.raises(ValueError, match="wrench"):
         ml.query(scene, [decimal.Decimal("sNaN"), Fraction(0), 0])
+
+
+# ---------------------------------------------------------------------------------------------
+# Planners: a compliance centre, a centre of mass and a load typed with decimals. The block on
+# the floor (mass 1, contacts (0, 0) and (1, 0), normals up, mu 0.3); the oracle reads its text
+# as Fractions and decides by exact LPs whether a mode's set holds a wrench.
+
+PLAN_BLOCK = ('{"body":{"mass":1,"com":[%s,%s],"inertia":0.1,"polygon":[[0,0],[1,0],[1,0.5],[0,0.5]]},'
+              '"contacts":[{"point":[0,0],"normal":[0,1],"mu":0.3},{"point":[1,0],"normal":[0,1],"mu":0.3}]}')
+
+
+def rotated(d, angle):
+    """The exact direction d turned by the double `angle` (its cosine and sine read exactly)."""
+    import math
+    c, s = Fraction(math.cos(angle)), Fraction(math.sin(angle))
+    return (c * d[0] - s * d[1], s * d[0] + c * d[1])
+
+
+def test_comply_centre_is_read_as_typed(tmp_path):
+    """The centre (0.775, 0.75) lies on the line of force (-0.3, 1) through (0.925, 0.25) in
+    decimal: the oracle finds that force of E_rr through it and no force 1e-7 rad to either side
+    (a knife edge), so the verdict is "boundary" with that one direction: from the CLI's --centre
+    and from Python's strings, Fractions and Decimals. As floats the centre is another point:
+    Python answers for it, and the oracle agrees that the force is not in E_rr there."""
+    import decimal
+    import math
+    import momentlab as ml
+
+    text = PLAN_BLOCK % ("0.5", "0.25")
+    path = tmp_path / "block.json"
+    path.write_text(text)
+    scene = oracle.exact_scene(json.loads(text, parse_float=Fraction, parse_int=Fraction))
+    centre = (Fraction("0.775"), Fraction("0.75"))
+    d = (Fraction(3, 10), Fraction(-1))  # the sense E_rr holds (the body pushed down and left)
+    assert oracle.produces(scene, "rr", oracle.wrench_at(centre, d))
+    assert not oracle.produces(scene, "rr", oracle.wrench_at(centre, (-d[0], -d[1])))
+    for side in (-1e-7, 1e-7):
+        assert not oracle.produces(scene, "rr", oracle.wrench_at(centre, rotated(d, side)))
+    angle = math.atan2(-1, 0.3)
+    plan = cli("plan", "comply", path, "--goal", "rr", "--centre", "0.775", "0.75", "--json")["centre"]
+    assert (plan["verdict"], plan["intervals"]) == ("boundary", [[angle, angle]])
+    analysis = ml.analyze(ml.Scene.from_file(path))
+    for typed in (["0.775", "0.75"], [Fraction("0.775"), Fraction("0.75")], [decimal.Decimal("0.775"), "0.75"]):
+        got = ml.plan_comply(analysis, "rr", typed).centre
+        assert (got.verdict, got.intervals) == ("boundary", [(angle, angle)]), typed
+    binary = ml.plan_comply(analysis, "rr", [0.775, 0.75]).centre
+    assert binary.verdict == "fails" and binary.intervals == []
+    centre_binary = (Fraction(0.775), Fraction(0.75))
+    assert not any(oracle.produces(scene, "rr", oracle.wrench_at(centre_binary, v)) for v in (d, (-d[0], -d[1])))
+
+
+def test_tilt_uses_the_centre_of_mass_as_typed(tmp_path):
+    """Quasi-statically E_rr is the forces (0.3, -1) between the lines through the contacts; the
+    centre of mass (0.79, 0.7) is on the one through (1, 0) in decimal (0.79 + 0.3 0.7 = 1), so
+    gravity along (0.3, -1) gives rr, as the oracle's LP finds; the same numbers as doubles put
+    the centre of mass outside the strip: no tilt, and the oracle agrees."""
+    import math
+    import momentlab as ml
+
+    text = PLAN_BLOCK % ("0.79", "0.7")
+    path = tmp_path / "block.json"
+    path.write_text(text)
+    g = (Fraction(3, 10), Fraction(-1))
+    for doc, holds in ((json.loads(text, parse_float=Fraction, parse_int=Fraction), True), (json.loads(text), False)):
+        com = tuple(oracle.exact(c) for c in doc["body"]["com"])
+        assert ("rr" in quasi_static_answer(doc, oracle.wrench_at(com, g))) == holds
+    angle = math.atan2(-1, 0.3)
+    assert cli("plan", "tilt", path, "--goal", "rr", "--quasi-static", "--json")["intervals"] == [[angle, angle]]
+    doc = json.loads(text)
+    binary = ml.Scene(body=doc["body"], contacts=doc["contacts"])
+    assert ml.plan_tilt(ml.analyze(binary, quasi_static=True), "rr").intervals == []
+
+
+@pytest.mark.parametrize("gravity", ["9.8", "9.806", "9.78"])
+def test_planner_loads_are_exact(tmp_path, gravity):
+    """A horizontal force through the centre of mass keeps ff up to mu m g (both contacts press,
+    the friction limit is mu times their sum; tipping needs 0.5 m g / 0.25 = 2 m g): for g = 9.8
+    that is 2.94 exactly. The plans' magnitudes with --gravity typed are mu m g correctly rounded
+    (2.94), not the value of the rounded load (2.9400000000000004): comply through the centre of
+    mass, from the CLI and from Python's strings."""
+    import momentlab as ml
+
+    path = tmp_path / "block.json"
+    path.write_text(PLAN_BLOCK % ("0.5", "0.25"))
+    end = float(Fraction(3, 10) * Fraction(gravity))
+    assert end != float(Fraction(3, 10) * Fraction(float(Fraction(gravity))))  # the rounded load's end differs
+    plan = cli("plan", "comply", path, "--goal", "ff", "--centre", "0.5", "0.25", "--gravity", "0", f"-{gravity}", "--json")
+    assert plan["centre"]["best"] == 0.0 and plan["centre"]["best_magnitudes"] == {"from": 0.0, "to": end}
+    got = ml.plan_comply(ml.analyze(ml.Scene.from_file(path)), "ff", ["0.5", "0.25"], gravity=["0", f"-{gravity}"]).centre
+    assert (got.best_magnitudes.from_, got.best_magnitudes.to) == (0.0, end)
+
+
+def test_python_labels_at_a_typed_point():
+    """Labels.at: the force (-0.3, 1) through (1, 0) has moment 0 about (0.79, 0.7) in decimal
+    (the oracle's cross product is 0: "+-", both labels); as floats the point is off its line, on
+    the side the oracle's exact moment gives."""
+    from decimal import Decimal
+    import momentlab as ml
+
+    labels = ml.labels('{"sets": [{"type": "force", "point": [1, 0], "direction": [-0.3, 1]}]}')
+    force = (Fraction("-0.3"), Fraction(1))
+
+    def oracle_label(point):
+        m = oracle.cross((1 - point[0], -point[1]), force)  # (q - p) x f, q = (1, 0) on the force's line
+        return "+-" if m == 0 else "+" if m > 0 else "-"
+
+    assert oracle_label((Fraction("0.79"), Fraction("0.7"))) == "+-"
+    for typed in (["0.79", "0.7"], [Fraction("0.79"), Fraction("0.7")], [Decimal("0.79"), "0.7"]):
+        assert labels.at(typed) == "+-", typed
+    # The set of the file is the decimal force; the floats' point is the double nearest each.
+    binary = oracle_label((Fraction(0.79), Fraction(0.7)))
+    assert binary != "+-" and labels.at([0.79, 0.7]) == binary
+
+
+def test_python_find_contacts_reads_polygons_as_typed():
+    """A vertex at (0.1, 0.7) lies on the obstacle's edge from (0, 0) to (1, 7) in decimal (the
+    oracle's cross product is 0), so it touches at distance 0; as floats it is 3/2^55 off the
+    edge's line, outside the obstacle: no contact. A decimal polygon 0.1 into the obstacle is
+    refused, as a scene's is, naming the arguments."""
+    from decimal import Decimal
+    import momentlab as ml
+
+    obstacle = [[0, 0], [1, 7], [-1, 7]]
+    typed = [["0.1", "0.7"], ["1.1", "0.7"], ["1.1", "1.7"]]
+    assert oracle.cross((Fraction(1), Fraction(7)), (Fraction("0.1"), Fraction("0.7"))) == 0
+    assert oracle.cross((Fraction(1), Fraction(7)), (Fraction(0.1), Fraction(0.7))) < 0  # right of the edge: outside
+    for number in (Decimal, Fraction):
+        found = ml.find_contacts([[number(x) for x in v] for v in typed], [obstacle], distance=0, mu=number("0.3"))
+        assert [(c.point, c.mu) for c in found] == [([0.1, 0.7], 0.3)]
+        assert found[0].normal[0] / found[0].normal[1] == -7.0  # the edge's inward normal (7, -1)
+    assert ml.find_contacts([[float(x) for x in v] for v in typed], [obstacle], distance=0) == []
+    into = [[Decimal(x) - Decimal("0.1") if i == 0 else Decimal(x) for i, x in enumerate(v)] for v in typed]
+    with pytest.raises(ValueError, match=r"^obstacles\[0\]: overlaps the body polygon \(body\)"):
+        ml.find_contacts(into, [obstacle], distance=0)
+
+
+def test_python_refuses_bools_and_numbers_too_small_for_a_double():
+    """A bool is not a number (numpy would read True as 1), and a typed number that rounds to 0
+    is refused as in files and options (docs/reliability.md): never taken as 0."""
+    import numpy as np
+    import momentlab as ml
+
+    analysis = ml.analyze(ml.Scene.from_json(PLAN_BLOCK % ("0.5", "0.25")))
+    for gravity in ([True, -1], [0, np.bool_(True)], np.array([True, False]), ["0", False]):
+        with pytest.raises(ValueError, match="^gravity: expected (numbers, got a bool|real numbers, not an array of dtype bool)"):
+            ml.plan_comply(analysis, "ff", gravity=gravity)
+    with pytest.raises(ValueError, match="^centre: expected numbers, got a bool"):
+        ml.plan_comply(analysis, "ff", ["0.5", False])
+    for tiny in (["1e-400", -1], [Fraction(1, 10 ** 400), -1]):
+        with pytest.raises(ValueError, match="^gravity: a number is too small for a double"):
+            ml.plan_comply(analysis, "ff", gravity=tiny)

@@ -394,7 +394,28 @@ test('numbers as typed: decimal strings in loads and stand\'s gravity are the de
   assert.deepEqual(a.query(typed), cli.modes);
   assert.equal(a.verdict(typed), 'ambiguous');
   assert.deepEqual(a.query(null, { gravity: ['0', '-9.81'], forces: [[['0.5', '0.25'], ['2.943', '0']]] }), ['ff', 'rr']);
-  assert.throws(() => a.query(['0x1p3', 0, 0]), /wrench\[0\]: expected a finite number \(or a decimal in JSON's grammar\), got "0x1p3"/);
+  assert.throws(() => a.query(['0x1p3', 0, 0]), /wrench\[0\]: expected a finite number \(or a decimal string such as "0\.1"\), got "0x1p3"/);
+  // the CLI's decimals (.3, 3., +3, 3e+0) are the module's too
+  assert.deepEqual(a.query(['.3e1', '-10.', '-5']), ['ff', 'rr']);
+  assert.deepEqual(a.query(['+3', '-1e+1', ' -5 ']), ['ff', 'rr']);
+  assert.throws(() => a.query(['3e', '-10', '-5']), /wrench\[0\]: expected a finite number/);
+  assert.throws(() => a.query(['1e-400', 0, 0]), /wrench\[0\]: a number is too small for a double: it would be taken as 0/);
+  // A compliance centre on the line of force (-0.3, 1) through (0.925, 0.25) in decimal: a knife
+  // edge as the CLI reads --centre; as numbers the centre is off that line and fails.
+  const comply = JSON.parse(execFileSync(CLI, ['plan', 'comply', file, '--goal', 'rr', '--centre', '0.775', '0.75', '--json'], { encoding: 'utf8' }));
+  assert.equal(comply.centre.verdict, 'boundary');
+  // (best_margins are numbers from the best direction's cosine and sine, whose last bits differ
+  // between this libm and the CLI's: within 1e-12)
+  const { best_margins: margins, ...centre } = a.planComply('rr', ['0.775', '0.75'], [-2, -2, 2, 2]).centre;
+  const { best_margins: cliMargins, ...cliCentre } = comply.centre;
+  assert.deepEqual(centre, cliCentre);
+  assert.ok(Math.abs(margins.to_other - cliMargins.to_other) < 1e-12 && Math.abs(margins.inside[0] - cliMargins.inside[0]) < 1e-12);
+  assert.equal(a.planComply('rr', [0.775, 0.75], [-2, -2, 2, 2]).centre.verdict, 'fails');
+  // The push through the centre of mass under typed gravity 9.8: ff up to 0.3 x 9.8 = 2.94 exactly.
+  const line = JSON.parse(execFileSync(CLI, ['query', file, '--push', '0.5', '0.25', '1', '0', '--gravity', '0', '-9.8', '--json'], { encoding: 'utf8' }));
+  const bands = a.pushLine(['0.5', '0.25'], ['1', '0'], { gravity: ['0', '-9.8'] });
+  assert.deepEqual(bands.bands, line.bands);
+  assert.equal(bands.bands[0].to, 2.94);
   a.delete();
   // stand: a block on the floor at mu = 0.3 stands exactly when |gx| <= 0.3 |gy|; the float 0.9 is
   // a little above 9/10, so under (0.9, -3) as numbers it slides.

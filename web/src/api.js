@@ -27,8 +27,9 @@ function momentlabGot(x) {
   return `got ${typeof x === 'object' ? 'an object' : `a ${typeof x}`}`;
 }
 
-// Decimal text in JSON's number grammar.
-const momentlabDecimal = /^-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?$/;
+// Decimal text as the CLI reads its options (Rational::parse): a sign, digits with at most one
+// point (.3 and 3. too), an exponent.
+const momentlabDecimal = /^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$/;
 
 // n finite numbers (an array or a typed array) at `where`, as a plain array; with `typed`, a
 // decimal string may stand for a number ('0.1' is exactly 1/10, as the CLI reads its options;
@@ -43,7 +44,7 @@ function momentlabNumbers(value, n, where, shape, typed = false) {
     if (typed && typeof x === 'string' && momentlabDecimal.test(x.trim())) {
       out[i] = x.trim();
     } else if (typeof x !== 'number' || !Number.isFinite(x)) {
-      throw new Error(typed && typeof x === 'string' ? `${where}[${i}]: expected a finite number (or a decimal in JSON's grammar), got "${x}"`
+      throw new Error(typed && typeof x === 'string' ? `${where}[${i}]: expected a finite number (or a decimal string such as "0.1"), got "${x}"`
                                                      : `${where}[${i}]: expected a finite number, ${momentlabGot(x)}`);
     }
   });
@@ -227,17 +228,16 @@ class MomentlabAnalysis {
   planComply(goal, centre, view, options) {
     const v = momentlabView(view);
     const o = momentlabOptions(options, 'planComply', momentlabLoadKeys);
-    const c = centre === null ? null : momentlabPoint(centre, 'centre');
-    return momentlabAnswer(this._session.planComply(String(goal), c !== null, c ? c[0] : 0, c ? c[1] : 0,
-                                                    v[0], v[1], v[2], v[3], momentlabLoad(o)));
+    const c = centre === null ? '' : JSON.stringify(momentlabTyped(centre, 2, 'centre', '[x, y]'));
+    return momentlabAnswer(this._session.planComply(String(goal), c, v[0], v[1], v[2], v[3], momentlabLoad(o)));
   }
   /** The force lambda * direction through point, lambda from 0 up, added to the load of options
    *  {gravity, wrench, forces}: as `query --push X Y DX DY --json`, {point, direction, fixed,
    *  bands: [{from, to, from_closed, to_closed, modes, verdict}]}. */
   pushLine(point, direction, options) {
-    const p = momentlabPoint(point, 'point'), d = momentlabPoint(direction, 'direction');
+    const p = momentlabTyped(point, 2, 'point', '[x, y]'), d = momentlabTyped(direction, 2, 'direction', '[dx, dy]');
     const o = momentlabOptions(options, 'pushLine', momentlabLoadKeys);
-    return momentlabAnswer(this._session.pushLine(p[0], p[1], d[0], d[1], momentlabLoad(o)));
+    return momentlabAnswer(this._session.pushLine(JSON.stringify([p, d]), momentlabLoad(o)));
   }
   /** The scene in the file format (contacts written out). */
   sceneJson() {

@@ -50,6 +50,8 @@ InputNames web_names() {
 Rational typed(const json& v, const std::string& where) {
     const std::optional<Rational> x = v.is_string() ? Rational::parse(v.get<std::string>()) : std::optional<Rational>(Rational(v.get<double>()));
     if (!x || !std::isfinite(x->to_double())) throw InputError(where, "expected a finite number");
+    // as in files and options: a non-zero number never reads as 0 (docs/reliability.md)
+    if (!x->is_zero() && x->to_double() == 0.0) throw InputError(where, "a number is too small for a double: it would be taken as 0");
     return *x;
 }
 
@@ -212,26 +214,31 @@ public:
     }
 
     // As `plan comply --json` ({"goal", "labels", "centre" when given}), the labels cut to the view.
-    [[nodiscard]] std::string plan_comply(const std::string& goal, bool has_centre, double x, double y, double xmin, double ymin,
+    // The centre: api.js's JSON text of [x, y] (numbers or decimal strings, as loads), or "".
+    [[nodiscard]] std::string plan_comply(const std::string& goal, const std::string& centre_text, double xmin, double ymin,
                                           double xmax, double ymax, const std::string& load_text) {
         return guarded([&] {
             const Box view = view_of(xmin, ymin, xmax, ymax);
-            const ComplyAnswer answer =
-                problem_->plan_comply(goal, has_centre ? std::optional<Vec2>(Vec2(x, y)) : std::nullopt, load_of(load_text));
+            std::optional<Rational2> centre;
+            if (!centre_text.empty()) centre = typed_vector<2>(json::parse(centre_text), "centre");
+            const ComplyAnswer answer = problem_->plan_comply(goal, centre, load_of(load_text));
             json out = {{"goal", goal}, {"labels", drawn(answer.labels, view)}};
             if (answer.centre) out["centre"] = to_json(*answer.centre);
             return out;
         });
     }
 
-    // As `query --push X Y DX DY --json`: the bands of magnitudes of the force along a line.
-    [[nodiscard]] std::string push_line(double x, double y, double dx, double dy, const std::string& load_text) {
+    // As `query --push X Y DX DY --json`: the bands of magnitudes of the force along a line; the
+    // line is api.js's JSON text [[x, y], [dx, dy]] (numbers or decimal strings, as loads).
+    [[nodiscard]] std::string push_line(const std::string& line_text, const std::string& load_text) {
         return guarded([&] {
+            const json line = json::parse(line_text);
+            const Rational2 point = typed_vector<2>(line[0], "point"), direction = typed_vector<2>(line[1], "direction");
             const Load load = load_of(load_text);
-            const std::vector<MagnitudeBand> bands = problem_->push_line(rational(Vec2(x, y)), rational(Vec2(dx, dy)), load);
+            const std::vector<MagnitudeBand> bands = problem_->push_line(point, direction, load);
             const Rational3 fixed = problem_->wrench_of(load).value_or(Rational3{});
-            return json{{"point", vector_json(Vec2(x, y))},
-                        {"direction", vector_json(Vec2(dx, dy))},
+            return json{{"point", vector_json(to_double(point))},
+                        {"direction", vector_json(to_double(direction))},
                         {"fixed", vector_json(to_double(fixed))},
                         {"bands", to_json(bands, problem_->analysis())}};
         });

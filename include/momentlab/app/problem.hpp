@@ -97,10 +97,6 @@ public:
     /// names().gravity); none for an empty load. Every number is checked (app/checks.hpp).
     [[nodiscard]] std::optional<Rational3> wrench_of(const Load& load) const;
 
-    /// The load's wrench as the planners take it: exactly when every coordinate is a Dyadic
-    /// (the load's numbers are doubles), else rounded to doubles (the planners read the binary value).
-    [[nodiscard]] std::optional<Exact3> fixed_wrench(const Load& load) const;
-
     /// Which modes the load's wrench produces: query(scene, e) (the one-shot path when it can,
     /// the exact walk when it must) for a wrench whose direction is exactly doubles (its
     /// denominators cleared), the analysis exactly otherwise (gravity and forces at points make
@@ -124,7 +120,7 @@ public:
     void plan_push(const std::string& goal, const PushRequest& request, const Load& load,
                    const std::function<void(PushCase&&)>& each);
     /// The compliance regions of the goal, and the plan of `centre` when given.
-    [[nodiscard]] ComplyAnswer plan_comply(const std::string& goal, const std::optional<Vec2>& centre, const Load& load);
+    [[nodiscard]] ComplyAnswer plan_comply(const std::string& goal, const std::optional<Rational2>& centre, const Load& load);
     /// Grasp closure of the scene's contacts (no body needed).
     [[nodiscard]] Closure closure(const std::optional<Vec2>& reference, const std::optional<double>& length) const;
 

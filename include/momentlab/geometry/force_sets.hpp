@@ -23,6 +23,14 @@ namespace momentlab {
 /// All forces whose line of action passes through `point` (Figure 1b): a plane of wrenches.
 [[nodiscard]] Cone forces_through_point(const Vec2& point);
 
+/// The same three sets for an exact point and direction (decimals as typed: 0.1 is 1/10,
+/// docs/design.md, "Numbers as typed"): each generator times a positive number, its
+/// denominators cleared, so the same cone with Dyadic coordinates. Precondition: the direction
+/// is non-zero.
+[[nodiscard]] Cone force_ray(const Rational2& point, const Rational2& direction);
+[[nodiscard]] Cone line_of_force(const Rational2& point, const Rational2& direction);
+[[nodiscard]] Cone forces_through_point(const Rational2& point);
+
 /// The wrench (d, p x d) of the force d acting through p, exact.
 [[nodiscard]] ExactVector force_wrench(const Vec2& point, const Vec2& direction);
 
@@ -49,6 +57,10 @@ template <class N>
 /// Exact: the edges n +- mu t and their torques are exact expressions of the doubles given.
 /// Throws std::invalid_argument for a zero normal or mu < 0.
 [[nodiscard]] Cone friction_cone(const Vec2& point, const Vec2& normal, double mu);
+
+/// The same for an exact point, normal and mu (as typed): with the normal cleared to integers N
+/// and mu = a / b, the edges b N +- a t, t = (N.y, -N.x). Preconditions: a non-zero normal, mu >= 0.
+[[nodiscard]] Cone friction_cone(const Rational2& point, const Rational2& normal, const Rational& mu);
 
 /// The two edges of the Coulomb cone at a contact, as exact wrenches: {n + mu t, n - mu t}
 /// acting at `point`, t = (n.y, -n.x). Friction opposing sliding along +t is the second edge

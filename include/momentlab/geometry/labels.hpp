@@ -92,6 +92,7 @@ private:
 /// every force has moment >= 0 about it, - if <= 0 (the test Labels::at makes). Throws
 /// std::invalid_argument for a non-finite point.
 [[nodiscard]] Label moment_label(const Cone& forces, const Vec2& point);
+[[nodiscard]] Label moment_label(const Cone& forces, const Rational2& point);
 
 /// The +- set of a force set: the points about which every force of F has zero moment, i.e. the
 /// common part of F+ and F- (a line, a point, the whole plane for F = {0}, else empty). Exact:

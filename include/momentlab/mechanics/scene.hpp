@@ -109,6 +109,8 @@ struct Body {
     std::shared_ptr<const BodyValues> exact = nullptr;
     /// The exact values in force (as Contact::exact_values).
     [[nodiscard]] const BodyValues* exact_values() const;
+    /// The centre of mass exactly (as typed, or the double's own value).
+    [[nodiscard]] Rational2 exact_com() const;
 };
 
 /// The planar inertia at the world origin of a body of mass m, centre of mass (cx, cy) and

@@ -32,7 +32,7 @@ enum class CentreVerdict {
 
 /// The offsets of a spring with compliance centre `centre` that produce `goal`.
 struct ComplyPlan {
-    Vec2 centre = Vec2::Zero();
+    Vec2 centre = Vec2::Zero();  ///< (rounded when given exactly)
     Label label = Label::None;  ///< E_goal's label at the centre (exact)
     CentreVerdict verdict = CentreVerdict::Fails;
     DirectionPlan directions;   ///< the offset (force) directions, radians from +x
@@ -48,6 +48,8 @@ struct ComplyPlan {
 /// fixed wrench, the label and verdict are those of the reachable directions E_goal + cone(-g)
 /// (fixed_wrench.hpp), and the directions' magnitudes say how hard the spring must push.
 [[nodiscard]] ComplyPlan plan_comply(const ModeForces& goal, const Vec2& centre, const PlanContext& context);
+/// The same for a centre given exactly (a decimal as typed: 0.1 is 1/10).
+[[nodiscard]] ComplyPlan plan_comply(const ModeForces& goal, const Rational2& centre, const PlanContext& context);
 
 /// The labels of E_goal: the compliance centres that work are the points outside both regions
 /// (docs/design.md, Synthesis); the regions are drawn and written as for any force set.

@@ -38,6 +38,9 @@ struct PlanContext {
     /// fixed + lambda u, lambda >= 0 (planning/fixed_wrench.hpp). Uniqueness then depends on the
     /// magnitude too: ask magnitude_bands at the action chosen.
     std::optional<Exact3> fixed;
+    /// The fixed wrench is fixed / fixed_scale (> 0): a load typed with decimals, its denominators
+    /// cleared (the directions are those of `fixed`; the magnitudes are scaled back).
+    Dyadic fixed_scale = Dyadic(1.0);
     /// With the modes (and no fixed wrench): the metric in which a plan gives the margins of its
     /// best action, a unit force (mechanics/margin.hpp, as query --margin).
     std::optional<WrenchMetric> metric;
@@ -76,9 +79,9 @@ struct DirectionPlan {
     [[nodiscard]] bool feasible() const { return !intervals.empty(); }
 };
 
-/// The directions of the forces through `point` that lie in `goal_applied` (an E_i). The
-/// boundary directions belong to the intervals (E_i is closed).
-[[nodiscard]] DirectionPlan plan_directions_through(const Vec2& point, const Cone& goal_applied);
+/// The directions of the forces through `point` (exact: a decimal as typed) that lie in
+/// `goal_applied` (an E_i). The boundary directions belong to the intervals (E_i is closed).
+[[nodiscard]] DirectionPlan plan_directions_through(const Rational2& point, const Cone& goal_applied);
 
 /// The set a plan aims at: E_goal, or with a fixed wrench g the directions that reach it at some
 /// magnitude, E_goal + cone(-g) (reachable_directions).
@@ -87,10 +90,16 @@ struct DirectionPlan {
 /// The same for the goal mode, told the context: the directions u of forces through `point` for
 /// which fixed + lambda u lies in E_goal for some lambda >= 0 (or its limit), split into unique and
 /// shared arcs when the modes are given. Exact as above.
-[[nodiscard]] DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal, const PlanContext& context);
+[[nodiscard]] DirectionPlan plan_directions_through(const Rational2& point, const ModeForces& goal, const PlanContext& context);
 /// The same with planned_set(goal, context) given, for a caller that needs it too.
-[[nodiscard]] DirectionPlan plan_directions_through(const Vec2& point, const ModeForces& goal, const PlanContext& context,
+[[nodiscard]] DirectionPlan plan_directions_through(const Rational2& point, const ModeForces& goal, const PlanContext& context,
                                                     const Cone& planned);
+
+/// The magnitudes lambda >= 0 of the force through `point` along `direction` (both exact) for
+/// which the context's fixed wrench plus lambda times it lies in E_goal (magnitudes, with the
+/// context's fixed_scale and the force's denominators scaled back). Precondition: context.fixed.
+[[nodiscard]] std::optional<MagnitudeRange> magnitudes_through(const ModeForces& goal, const PlanContext& context,
+                                                               const Rational2& point, const Rational2& direction);
 
 /// Force directions counter-clockwise from `from` to `to` (radians from +x, from in [-pi, pi),
 /// to - from in [0, 2 pi)).
