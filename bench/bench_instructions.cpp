@@ -4,7 +4,9 @@
 // counts this machine's noise does not move (`make instructions` runs it on the cradle and the
 // tangent of 10^4 contacts); alone it prints the wall time of each part. With `doubles`, the
 // file's numbers are taken as the doubles nearest them once read (the scene of before decimals
-// were read as typed), so that the same scenes are counted both ways.
+// were read as typed), so that the same scenes are counted both ways. It also prints how many
+// signs of exact vectors the certified approximations decided and how many needed Dyadic
+// arithmetic (exact_stats, core/exact.hpp).
 // Usage: bench_instructions SCENE.json one|split|all [doubles]
 #include <chrono>
 #include <cstdio>
@@ -33,6 +35,7 @@ int main(int argc, char** argv) {
     }
     // The six wrenches of tools/degenerate_table.sh (six_wrenches.jsonl).
     const std::vector<Vec3> wrenches = {{0.1, 1, 0.2}, {0.5, 2, 0.1}, {1, 1, 0.5}, {0.2, -1, 0.3}, {2, 0.5, -0.4}, {0, 0, 1}};
+    exact_stats() = {};
     const auto t0 = Clock::now();
     SceneQuestions questions(scene, AnalysisOptions{});
     const auto t1 = Clock::now();
@@ -47,7 +50,9 @@ int main(int argc, char** argv) {
         for (const SceneAnswer& a : questions.answer(all)) modes += a.modes.size();
     }
     const auto t2 = Clock::now();
-    std::printf("%zu contacts, %s: set-up %.3f s, answers %.3f s, %zu modes in the six answers\n", scene.contacts.size(),
-                argv[2], std::chrono::duration<double>(t1 - t0).count(), std::chrono::duration<double>(t2 - t1).count(), modes);
+    const ExactStats signs = exact_stats();
+    std::printf("%zu contacts, %s: set-up %.3f s, answers %.3f s, %zu modes in the six answers; signs: %ld filtered, %ld exact\n",
+                scene.contacts.size(), argv[2], std::chrono::duration<double>(t1 - t0).count(),
+                std::chrono::duration<double>(t2 - t1).count(), modes, signs.filtered, signs.exact);
     return 0;
 }

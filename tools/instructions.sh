@@ -32,3 +32,11 @@ for mode in one split all; do
     done
     printf "%-44s %10.3f %10.3f %16.3f %16.3f\n" "$label" "${row[0]}" "${row[1]}" "${row[2]}" "${row[3]}"
 done
+# How many signs of exact vectors the certified approximations decided, all six in one batch
+# (bench_instructions' counters, a native run).
+for reading in typed doubles; do
+    for f in cradle tangent; do
+        line=$("$build/bench/bench_instructions" "$dir/${f}_10000.json" all $([[ $reading == doubles ]] && echo doubles))
+        printf "signs, %-8s %-8s %s\n" "$f" "$reading" "${line##*signs: }"
+    done
+done

@@ -66,6 +66,7 @@ int run(const LabelOptions& o) {
         for (const Rational2& p : points) {
             const Vec2 rounded = to_double(p);
             doc["at"].push_back({{"point", {rounded.x(), rounded.y()}}, {"label", to_string(labels.at(p))}});
+            add_exact(doc["at"].back(), "point", p);
         }
         std::cout << doc.dump(2) << "\n";
         return 0;

@@ -124,6 +124,7 @@ int run_tilt(const PlanOptions& o) {
         nlohmann::json out = to_json(plan);
         out["goal"] = o.goal;
         if (fixed) out["fixed"] = vector_json(to_double(*fixed));
+        if (fixed) add_exact(out, "fixed", *fixed);
         std::cout << out.dump() << "\n";
     } else if (!plan.feasible()) {
         std::cout << "no tilt produces mode " << o.goal << " (W \u2229 E is {0})\n";
@@ -160,6 +161,7 @@ int run_comply(const PlanOptions& o) {
         nlohmann::json out = {{"goal", o.goal}, {"labels", to_json(region)}};
         if (plan) {
             out["centre"] = to_json(*plan);
+            add_exact(out["centre"], "point", centre.front());
         }
         std::cout << out.dump() << "\n";
     } else {
@@ -257,7 +259,9 @@ int run_push(const PlanOptions& o) {
     if (o.json) {
         // The document as one nlohmann object would dump it: keys in order, "cases" first.
         nlohmann::json rest = {{"goal", o.goal}, {"mu", o.mu.value}, {"interference", interference}};
+        add_exact(rest, "mu", std::span<const Rational>(&request.mu, 1));
         if (fixed) rest["fixed"] = vector_json(to_double(*fixed));
+        if (fixed) add_exact(rest, "fixed", *fixed);
         std::cout << "{\"cases\":[" << rows << "]," << rest.dump().substr(1) << "\n";
     } else {
         std::cout << "pushing into mode " << o.goal << ": a point finger with mu = " << fmt(o.mu.value) << ", obstacles "

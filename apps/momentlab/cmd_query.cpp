@@ -45,6 +45,9 @@ int run_push_line(const QueryOptions& o) {
                               {"direction", vector_json(at[1])},
                               {"fixed", vector_json(to_double(g))},
                               {"bands", to_json(bands, p.analysis())}};
+        add_exact(out, "point", typed[0]);
+        add_exact(out, "direction", typed[1]);
+        add_exact(out, "fixed", g);
         std::cout << out.dump() << "\n";
         return 0;
     }

@@ -198,7 +198,11 @@ def _exact_json(value, where: str) -> str:
         if d != 1:
             raise ValueError(f"{where}: {value} is not a decimal: a scene's numbers are decimals (or floats)")
         value = Decimal(f"{value.numerator * 10 ** k // value.denominator}E-{k}")
-    if isinstance(value, float) and math.isfinite(value):
+    if isinstance(value, np.generic):  # a numpy scalar: its Python value
+        value = value.item()
+    if isinstance(value, float):
+        if not math.isfinite(value):
+            raise ValueError(f"{where}: expected a finite number")
         value = Decimal(value)  # exactly the double
     if isinstance(value, Decimal):
         if not value.is_finite():

@@ -108,6 +108,13 @@ nlohmann::json to_json(const std::vector<MagnitudeBand>& bands, std::span<const 
     return out;
 }
 
+void add_exact(nlohmann::json& out, const std::string& key, std::span<const Rational> values) {
+    if (is_double(values)) return;
+    nlohmann::json texts = nlohmann::json::array();
+    for (const Rational& v : values) texts.push_back(exact_text(v.num(), v.den()));
+    out[key + "_exact"] = values.size() == 1 ? texts[0] : texts;
+}
+
 std::string exact_text(const Dyadic& num, const Dyadic& den) {
     BigInteger p = integer_part(num), q = integer_part(den);
     const std::int64_t e = num.binary_exponent() - den.binary_exponent();  // num / den = p / q 2^e

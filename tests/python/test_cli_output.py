@@ -1,6 +1,6 @@
 """The command line's text and JSON say the same things: the contacts found from the polygons
 (checked against a hand derivation from the file's numbers) and every region of `analyze`
-(read back from the text and compared with --json)."""
+(read back from the text and compared with --json); typed inputs echoed with their exact values."""
 
 import json
 import math
@@ -153,3 +153,39 @@ def test_analyze_text_gives_every_region_completely(name):
             rays += len(want["rays"])
         assert f"applied wrenches E ({mode['E']['cone']['kind']})" in block
     assert rays > 0  # the unbounded regions' rays were read back
+
+
+BLOCK = ('{"body":{"mass":1,"com":[0.5,0.25],"inertia":0.1,"polygon":[[0,0],[1,0],[1,0.5],[0,0.5]]},'
+         '"contacts":[{"point":[0,0],"normal":[0,1],"mu":0.3},{"point":[1,0],"normal":[0,1],"mu":0.3}]}')
+
+
+def test_json_echoes_typed_inputs_with_the_values_they_were_read_as(tmp_path):
+    """An input echoed in --json that is not a double also comes as "KEY_exact", the exact value
+    it was read as in lowest terms (Fraction of the typed text: the oracle); one that is a double
+    (0.5, 0.25, -10) has none (docs/formats.md)."""
+    path = tmp_path / "block.json"
+    path.write_text(BLOCK)
+
+    def exact(texts):
+        return [str(Q(t)) for t in texts]
+
+    push = cli("plan", "push", path, "--goal", "ff", "--mu", "0.1", "--gravity", "0", "-9.8", "--json")
+    assert push["mu_exact"] == str(Q("0.1")) and push["fixed_exact"] == exact(["0", "-9.8", "-4.9"])
+    assert push["fixed"] == [0.0, -9.8, -4.9] and push["mu"] == 0.1
+    tilt = cli("plan", "tilt", path, "--goal", "ff", "--wrench", "0.1", "0", "0", "--json")
+    assert tilt["fixed_exact"] == exact(["0.1", "0", "0"])
+    comply = cli("plan", "comply", path, "--goal", "rr", "--centre", "0.775", "0.5", "--json")["centre"]
+    assert comply["point"] == [0.775, 0.5] and comply["point_exact"] == exact(["0.775", "0.5"])
+    line = cli("query", path, "--push", "0.3", "0.25", "1", "0", "--gravity", "0", "-9.8", "--json")
+    assert line["point_exact"] == exact(["0.3", "0.25"]) and "direction_exact" not in line
+    at = cli("label", force_file(tmp_path), "--at", "0.1", "2", "--json")
+    assert at["at"][0]["point_exact"] == exact(["0.1", "2"])
+    # Doubles have no exact echo.
+    dyadic = cli("plan", "push", path, "--goal", "ff", "--mu", "0.5", "--gravity", "0", "-10", "--json")
+    assert "mu_exact" not in dyadic and "fixed_exact" not in dyadic
+
+
+def force_file(tmp_path):
+    path = tmp_path / "force.json"
+    path.write_text('{"sets": [{"type": "force", "point": [0, 0], "direction": [1, 1]}]}')
+    return path

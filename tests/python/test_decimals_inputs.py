@@ -108,7 +108,7 @@ def test_forces_meeting_at_a_decimal_point(tmp_path):
     assert label(decimals(text), X) == "+-"
     assert label(doubles(text), X) != "+-"  # the degeneracy holds in decimal only
     out = cli_labels(tmp_path, text, [X])
-    assert out["at"] == [{"point": [0.1, 0.7], "label": "+-"}]
+    assert out["at"] == [{"point": [0.1, 0.7], "point_exact": ["1/10", "7/10"], "label": "+-"}]
     for region in out["labels"].values():
         assert region["vertices"] == [[0.1, 0.7]], region
 
@@ -480,3 +480,18 @@ def test_python_refuses_bools_and_numbers_too_small_for_a_double():
     for tiny in (["1e-400", -1], [Fraction(1, 10 ** 400), -1]):
         with pytest.raises(ValueError, match="^gravity: a number is too small for a double"):
             ml.plan_comply(analysis, "ff", gravity=tiny)
+
+
+def test_python_scene_with_decimals_takes_numpy_scalars_and_names_bad_values():
+    """A scene holding a Decimal is read exactly; numpy scalars beside it are their values, and
+    a NaN or an infinity is refused naming its field, as in a scene of floats."""
+    from decimal import Decimal
+    import numpy as np
+    import momentlab as ml
+
+    body = {"mass": np.int64(1), "com": [np.float32(0.5), 0.25], "inertia": Decimal("0.1")}
+    scene = ml.Scene(body=body, contacts=[{"point": [0, 0], "normal": [0, 1], "mu": np.float64(0.5)}])
+    assert scene.contacts[0].mu == 0.5 and scene.body["mass"] == 1.0
+    for bad in (float("nan"), np.float64("inf")):
+        with pytest.raises(ValueError, match=r"^\$\.contacts\[0\]\.mu: expected a finite number"):
+            ml.Scene(body=body, contacts=[{"point": [0, 0], "normal": [0, 1], "mu": bad}])

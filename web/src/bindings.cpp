@@ -189,7 +189,10 @@ public:
             const Load load = load_of(load_text);
             json out = to_json(problem_->plan_tilt(goal, load));
             out["goal"] = goal;
-            if (const std::optional<Rational3> fixed = problem_->wrench_of(load)) out["fixed"] = vector_json(to_double(*fixed));
+            if (const std::optional<Rational3> fixed = problem_->wrench_of(load)) {
+                out["fixed"] = vector_json(to_double(*fixed));
+                add_exact(out, "fixed", *fixed);
+            }
             return out;
         });
     }
@@ -208,7 +211,10 @@ public:
                         {"interference", ignore_interference ? "ignored" : "considered"},
                         {"cases", json::array()}};
             for (const PushCase& c : problem_->plan_push(goal, request, load)) out["cases"].push_back(to_json(c));
-            if (const std::optional<Rational3> fixed = problem_->wrench_of(load)) out["fixed"] = vector_json(to_double(*fixed));
+            if (const std::optional<Rational3> fixed = problem_->wrench_of(load)) {
+                out["fixed"] = vector_json(to_double(*fixed));
+                add_exact(out, "fixed", *fixed);
+            }
             return out;
         });
     }
@@ -223,7 +229,10 @@ public:
             if (!centre_text.empty()) centre = typed_vector<2>(json::parse(centre_text), "centre");
             const ComplyAnswer answer = problem_->plan_comply(goal, centre, load_of(load_text));
             json out = {{"goal", goal}, {"labels", drawn(answer.labels, view)}};
-            if (answer.centre) out["centre"] = to_json(*answer.centre);
+            if (answer.centre) {
+                out["centre"] = to_json(*answer.centre);
+                add_exact(out["centre"], "point", *centre);
+            }
             return out;
         });
     }
@@ -237,10 +246,14 @@ public:
             const Load load = load_of(load_text);
             const std::vector<MagnitudeBand> bands = problem_->push_line(point, direction, load);
             const Rational3 fixed = problem_->wrench_of(load).value_or(Rational3{});
-            return json{{"point", vector_json(to_double(point))},
+            json out = {{"point", vector_json(to_double(point))},
                         {"direction", vector_json(to_double(direction))},
                         {"fixed", vector_json(to_double(fixed))},
                         {"bands", to_json(bands, problem_->analysis())}};
+            add_exact(out, "point", point);  // as the CLI's echo of its typed numbers
+            add_exact(out, "direction", direction);
+            add_exact(out, "fixed", fixed);
+            return out;
         });
     }
 

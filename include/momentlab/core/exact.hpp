@@ -211,7 +211,8 @@ private:
 /// True when every coordinate is exactly zero.
 [[nodiscard]] bool is_zero(const ExactVector& v);
 
-/// Counters of the exact-vector predicates the approximations could not decide (per thread).
+/// Counters of the exact-vector predicates the approximations could not decide (per thread; the
+/// work a thread shares out through for_each_index, core/parallel.hpp, counts as its own).
 struct ExactStats {
     long filtered = 0;  ///< decided by the certified approximations
     long exact = 0;     ///< decided in Dyadic arithmetic

@@ -4,7 +4,8 @@
 // measured on have two cores), in the calling thread alone when the work is small or threads
 // are not available (WebAssembly without pthreads). Indices are handed out one at a time, so a
 // few large items among many small ones still spread over both threads. The first exception
-// thrown by f is rethrown in the caller once every thread has stopped.
+// thrown by f is rethrown in the caller once every thread has stopped. The other thread's
+// exact_stats() are added to the caller's (core/exact.hpp).
 #pragma once
 
 #include <atomic>
@@ -12,6 +13,8 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+
+#include "momentlab/core/exact.hpp"
 
 namespace momentlab::detail {
 
@@ -38,9 +41,15 @@ void for_each_index(std::size_t count, bool large, F f) {
             }
         }
     };
-    std::thread other(work);
+    ExactStats other_stats;
+    std::thread other([&] {
+        work();
+        other_stats = exact_stats();
+    });
     work();
     other.join();
+    exact_stats().filtered += other_stats.filtered;
+    exact_stats().exact += other_stats.exact;
     if (error) std::rethrow_exception(error);
 }
 

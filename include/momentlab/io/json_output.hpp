@@ -55,5 +55,9 @@ namespace momentlab {
 [[nodiscard]] nlohmann::json to_json(const std::vector<MagnitudeBand>& bands, std::span<const ModeForces> analysis);
 /// The exact quotient num / den in lowest terms: "2943/1000", "-2/3", "5" (den != 0).
 [[nodiscard]] std::string exact_text(const Dyadic& num, const Dyadic& den);
+/// Beside an input echoed as doubles (`out[key]`, a number or a list), the values it was read
+/// as when one is not a double: `out[key + "_exact"]` = its exact_texts ("mu_exact": "1/10",
+/// "point_exact": ["31/40", "3/4"]; docs/formats.md). Nothing when every value is a double.
+void add_exact(nlohmann::json& out, const std::string& key, std::span<const Rational> values);
 
 }  // namespace momentlab
