@@ -59,6 +59,70 @@ Rational::Rational(Dyadic num, const Dyadic& den) {
     den_ = den.scaled(-twos);
 }
 
+bool Rational::spells(std::string_view text, double value) {
+    using U = unsigned __int128;
+    if (!std::isfinite(value)) return false;
+    std::size_t at = 0;
+    bool negative = false;
+    if (at < text.size() && (text[at] == '-' || text[at] == '+')) negative = text[at++] == '-';
+    // The significant digits as an integer D (at most 38: below 10^38 < 2^127) and the decimal
+    // exponent e: the text is D 10^e.
+    U digits = 0;
+    int count = 0;
+    std::int64_t e = 0;
+    bool any = false, point = false;
+    for (; at < text.size(); ++at) {
+        const char c = text[at];
+        if (c == '.' && !point) {
+            point = true;
+            continue;
+        }
+        if (c < '0' || c > '9') break;
+        any = true;
+        if (digits == 0 && c == '0') {
+            if (point) --e;  // a leading zero after the point
+            continue;
+        }
+        if (++count > 38) return false;
+        digits = digits * 10 + static_cast<unsigned>(c - '0');
+        if (point) --e;
+    }
+    if (!any) return false;
+    if (at < text.size() && (text[at] == 'e' || text[at] == 'E')) {
+        ++at;
+        bool minus = false;
+        if (at < text.size() && (text[at] == '-' || text[at] == '+')) minus = text[at++] == '-';
+        if (at == text.size()) return false;
+        std::int64_t x = 0;
+        for (; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at) {
+            if (x > 100000) return false;
+            x = x * 10 + (text[at] - '0');
+        }
+        e += minus ? -x : x;
+    }
+    if (at != text.size()) return false;
+    if (digits == 0) return value == 0.0;
+    if (value == 0.0 || (value < 0.0) != negative) return false;
+    // value = M 2^b with M odd; the text is D_odd 2^(a + e) 5^e with D = D_odd 2^a.
+    int b = 0;
+    const double m = std::frexp(std::fabs(value), &b);  // |value| = m 2^b, m in [0.5, 1)
+    auto big_m = static_cast<std::uint64_t>(std::ldexp(m, 64));  // exact: m has at most 53 bits
+    b -= 64;
+    while ((big_m & 1u) == 0) big_m >>= 1, ++b;
+    while (digits % 10 == 0) digits /= 10, ++e;
+    int a = 0;
+    while ((digits & 1u) == 0) digits >>= 1, ++a;
+    if (static_cast<std::int64_t>(a) + e != b) return false;
+    // D_odd 5^e = M: for e >= 0, M / 5^e = D_odd; for e < 0, D_odd / 5^-e = M.
+    U left = digits, right = big_m;
+    for (std::int64_t k = 0; k < (e >= 0 ? e : -e); ++k) {
+        U& divided = e >= 0 ? right : left;
+        if (divided % 5 != 0) return false;
+        divided /= 5;
+    }
+    return left == right;
+}
+
 std::optional<Rational> Rational::parse(std::string_view text) {
     std::size_t at = 0;
     bool negative = false;

@@ -127,7 +127,12 @@ std::shared_ptr<const BodyValues> exact_body_values(const Value& b, BodyValues v
     v.com = exact_vec2(*b.find("com"));
     if (const std::optional<Value> i = b.find("inertia")) v.inertia = exact_number(*i);
     if (const std::optional<Value> r = b.find("radius_of_gyration")) v.radius_of_gyration = exact_number(*r);
-    if (v.mass.is_double() && is_double(v.com) && v.inertia.is_double() && (!v.radius_of_gyration || v.radius_of_gyration->is_double())) {
+    if (const std::optional<Value> p = b.find("polygon")) {
+        std::vector<Rational2> typed = exact_polygon(*p);
+        if (!std::all_of(typed.begin(), typed.end(), [](const Rational2& x) { return is_double(x); })) v.polygon = std::move(typed);
+    }
+    if (v.mass.is_double() && is_double(v.com) && v.inertia.is_double() && (!v.radius_of_gyration || v.radius_of_gyration->is_double()) &&
+        v.polygon.empty()) {
         return nullptr;
     }
     return std::make_shared<const BodyValues>(std::move(v));

@@ -105,6 +105,17 @@ Rational2 Body::exact_com() const {
     return v ? v->com : rational(com);
 }
 
+std::vector<Rational2> Body::exact_polygon() const {
+    const BodyValues* v = exact_values();
+    bool typed = v && v->polygon.size() == polygon.size();
+    for (std::size_t i = 0; typed && i < polygon.size(); ++i) typed = to_double(v->polygon[i]) == polygon[i];  // not edited since
+    if (typed) return v->polygon;
+    std::vector<Rational2> out;
+    out.reserve(polygon.size());
+    for (const Vec2& p : polygon) out.push_back(rational(p));
+    return out;
+}
+
 ExactMatrix inertia_at_origin(const Body& body) {
     if (const BodyValues* v = body.exact_values()) return detail::cleared_inertia(*v);
     return detail::body_inertia<Dyadic>(body);

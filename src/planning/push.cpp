@@ -74,11 +74,16 @@ FreeParts free_parts(const Vec2& a, const Vec2& b, const std::vector<Polygon>& o
     return out;
 }
 
+// A feature's ends exactly (the outline's vertices as typed; a vertex twice).
+struct Ends {
+    Rational2 from, to;
+};
+
 // The cones of forces of a finger on vertex v whose inward normals run counter-clockwise from
 // `cw` to `ccw` (the two edges' normals). An arc of pi or more (a sticking finger on a sharp
 // vertex) is split at the bisector, so that each part is convex. At a notch the sticking
 // finger touches both edges: the sum of their cones.
-std::vector<Cone> vertex_actions(const Vec2& v, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, ContactMode slip,
+std::vector<Cone> vertex_actions(const Rational2& v, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, ContactMode slip,
                                  const Rational& mu, bool reflex) {
     if (reflex) {
         return {forces_across(v, v, {friction_edge(cw, mu, true), friction_edge(cw, mu, false),
@@ -124,7 +129,7 @@ Push representative(const PushFeature& f, const Cone& solutions) {
 namespace {
 
 // A finger's forces on the segment a-b with the exact inward normal `normal`.
-Cone edge_actions(const Vec2& a, const Vec2& b, const Exact2& normal, ContactMode slip, const Rational& mu) {
+Cone edge_actions(const Rational2& a, const Rational2& b, const Exact2& normal, ContactMode slip, const Rational& mu) {
     if (slip != ContactMode::Fixed) return forces_across(a, b, {friction_edge(normal, mu, opposing_friction(slip) > 0)});
     return forces_across(a, b, {friction_edge(normal, mu, true), friction_edge(normal, mu, false)});
 }
@@ -135,7 +140,7 @@ Cone push_actions(const Vec2& a, const Vec2& b, const Vec2& normal, ContactMode 
     if (slip == ContactMode::Separating) throw std::invalid_argument("push_actions: slip must be l, f or r");
     if (!(mu >= 0.0) || !std::isfinite(mu)) throw std::invalid_argument("push_actions: mu must be finite and >= 0");
     if (!normal.allFinite() || is_zero(normal)) throw std::invalid_argument("push_actions: the normal must be non-zero");
-    return edge_actions(a, b, exact(normal), slip, Rational(mu));
+    return edge_actions(rational(a), rational(b), exact(normal), slip, Rational(mu));
 }
 
 std::string PushFeature::name() const { return (kind == Kind::Edge ? "edge " : "vertex ") + std::to_string(index); }
@@ -156,18 +161,20 @@ Vec3 Push::wrench() const { return wrench_at(point, direction); }
 namespace {
 
 // The pieces of one case on the given parts of its feature (parameters along an edge).
-std::vector<PushPiece> solve_pieces(const PushFeature& f, const Exact2& cw, const Exact2& ccw, const Exact2& bisector,
-                                    ContactMode slip, const Rational& mu,
+std::vector<PushPiece> solve_pieces(const PushFeature& f, const Ends& ends, const Exact2& cw, const Exact2& ccw,
+                                    const Exact2& bisector, ContactMode slip, const Rational& mu,
                                     const std::vector<std::pair<double, double>>& parts, const Cone& goal,
                                     const std::vector<Polygon>* obstacles, bool interior_possible) {
     std::vector<PushPiece> pieces;
     for (const auto& [lo, hi] : parts) {
-        // The feature's own ends where the part reaches them (a + 1.0 (b - a) can round off b).
+        // The feature's own ends (as typed) where the part reaches them (a + 1.0 (b - a) can
+        // round off b); the ends of a part cut by obstacles are points found in doubles.
         const Vec2 p = lo == 0.0 ? f.from : Vec2(f.from + lo * (f.to - f.from));
         const Vec2 q = hi == 1.0 ? f.to : Vec2(f.from + hi * (f.to - f.from));
+        const Rational2 exact_p = lo == 0.0 ? ends.from : rational(p), exact_q = hi == 1.0 ? ends.to : rational(q);
         const std::vector<Cone> cones = f.kind == PushFeature::Kind::Edge
-                                            ? std::vector<Cone>{edge_actions(p, q, cw, slip, mu)}
-                                            : vertex_actions(f.from, cw, ccw, bisector, slip, mu, f.reflex);
+                                            ? std::vector<Cone>{edge_actions(exact_p, exact_q, cw, slip, mu)}
+                                            : vertex_actions(ends.from, cw, ccw, bisector, slip, mu, f.reflex);
         for (const Cone& w : cones) {
             PushPiece piece{p, q, w, intersection(w, goal), false, std::nullopt};
             // Robust: the solutions meet the interior of E_goal, and a concrete push, the rounded
@@ -297,7 +304,7 @@ void tell_uniqueness(PushCase& c, const std::vector<const PushPiece*>& shown, co
 
 thread_local std::size_t cases_solved = 0;
 
-PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, ContactMode slip, const Rational& mu,
+PushCase solve_case(const PushFeature& f, const Ends& ends, const Exact2& cw, const Exact2& ccw, const Exact2& bisector, ContactMode slip, const Rational& mu,
                     const std::optional<FreeParts>& free, const Cone& goal, const std::vector<Polygon>& obstacles,
                     const ModeForces& goal_mode, const PlanContext& context) {
     ++cases_solved;
@@ -312,7 +319,7 @@ PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, c
     // With a fixed wrench the cases are solved on E_goal + cone(-g), full-dimensional even when
     // E_goal is not; then no push puts g + lambda u inside E_goal: knife edges only.
     const bool interior_possible = !context.fixed || goal_mode.applied.dimension() == 3;
-    c.pieces = solve_pieces(f, cw, ccw, bisector, slip, mu, whole, goal, nullptr, interior_possible);
+    c.pieces = solve_pieces(f, ends, cw, ccw, bisector, slip, mu, whole, goal, nullptr, interior_possible);
     const auto has_solutions = [](const PushPiece& p) { return !p.solutions.is_zero(); };
     const auto robust = [](const PushPiece& p) { return p.robust; };
     const bool robust_anywhere = std::any_of(c.pieces.begin(), c.pieces.end(), robust);
@@ -322,7 +329,7 @@ PushCase solve_case(const PushFeature& f, const Exact2& cw, const Exact2& ccw, c
     if (free) {
         c.blocked = free->parts.empty() ? "all" : free->all_free ? "none" : "part";
         if (robust_anywhere && !free->all_free) {
-            auto reachable = solve_pieces(f, cw, ccw, bisector, slip, mu, free->parts, goal, &obstacles, interior_possible);
+            auto reachable = solve_pieces(f, ends, cw, ccw, bisector, slip, mu, free->parts, goal, &obstacles, interior_possible);
             if (std::any_of(reachable.begin(), reachable.end(), robust)) {
                 c.pieces = std::move(reachable);
             } else {
@@ -375,10 +382,12 @@ void plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& op
     if (options.slip == ContactMode::Separating) throw std::invalid_argument("plan_push: the slip must be l, f or r");
     const bool ccw = is_counter_clockwise(poly);
     const Cone target = planned_set(goal, context);
-    // The inward normal of edge i, exact (not unit: every condition is homogeneous in it), and
-    // its unit rounding for the feature's description.
+    const std::vector<Rational2> typed = scene.body->exact_polygon();  // the vertices as typed
+    // The inward normal of edge i, exact (not unit: every condition is homogeneous in it; the
+    // edge's denominators cleared), and its unit rounding for the feature's description.
     const auto normal = [&](std::size_t i) {
-        const Exact2 d = exact(poly[(i + 1) % n]) - exact(poly[i]);
+        const Rational2 &a = typed[i], &b = typed[(i + 1) % n];
+        const std::vector<Dyadic> d = clear_denominators(Rational2{b[0] - a[0], b[1] - a[1]});
         return ccw ? Exact2{-d[1], d[0]} : Exact2{d[1], -d[0]};
     };
     const auto unit = [](const Exact2& n_exact) -> Vec2 { return to_double(n_exact).normalized(); };
@@ -392,9 +401,9 @@ void plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& op
             if (kind == PushFeature::Kind::Edge) {
                 f = {PushFeature::Kind::Edge, i, poly[i], poly[(i + 1) % n], unit(cw), false};
             } else {
-                const Vec2 &prev = poly[(i + n - 1) % n], &next = poly[(i + 1) % n];
                 const Exact2 in = normal((i + n - 1) % n), out = cw;
-                const Sign turn = orient2d(prev, poly[i], next);
+                const Rational2 &p = typed[(i + n - 1) % n], &v = typed[i], &q = typed[(i + 1) % n];
+                const Sign turn = ((v[0] - p[0]) * (q[1] - v[1]) - (v[1] - p[1]) * (q[0] - v[0])).sign();
                 const bool reflex = turn == (ccw ? Sign::Negative : Sign::Positive);
                 // Convex: the normals turn counter-clockwise from n_in to n_out on a
                 // counter-clockwise outline, clockwise on a clockwise one.
@@ -413,7 +422,8 @@ void plan_push(const Scene& scene, const ModeForces& goal, const PushOptions& op
                 options.ignore_interference ? std::nullopt : std::optional(free_parts(f.from, f.to, scene.obstacles));
             for (ContactMode slip : {ContactMode::SlidingLeft, ContactMode::Fixed, ContactMode::SlidingRight}) {
                 if (options.slip && *options.slip != slip) continue;
-                each(solve_case(f, cw, ccw_normal, bisector, slip, options.mu, free, target, scene.obstacles, goal, context));
+                const Ends ends{typed[i], kind == PushFeature::Kind::Edge ? typed[(i + 1) % n] : typed[i]};
+                each(solve_case(f, ends, cw, ccw_normal, bisector, slip, options.mu, free, target, scene.obstacles, goal, context));
             }
         }
     }

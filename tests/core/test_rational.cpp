@@ -4,6 +4,8 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <random>
 #include <string>
@@ -60,6 +62,55 @@ TEST(Rational, ParsesDecimalsExactly) {
         // The denominator is odd (powers of two live in the numerator).
         ASSERT_TRUE(mpz_odd_p(to_q(r->den()).get_num_mpz_t())) << text;
     }
+}
+
+// Rational::spells (the readers' shortcut for text that is exactly a double) against GMP: the
+// exact expansions of random doubles (glibc's printf writes them exactly), with trailing zeros,
+// exponents and leading zeros, are the doubles; the same texts with a digit changed or appended,
+// and random decimals, are not (GMP compares the text's value with the double).
+TEST(Rational, SpellsExactlyTheDoublesItIsSaidTo) {
+    std::mt19937_64 gen(146);
+    int spelled = 0, not_spelled = 0;
+    const auto check = [&](const std::string& text, double d) {
+        const Q exact = to_q(*Rational::parse(text));
+        const bool equal = exact == Q(d);
+        const bool said = Rational::spells(text, d);
+        // true only when equal; equal texts of at most 38 significant digits are told
+        if (said) ASSERT_TRUE(equal) << text << " " << d;
+        std::string significant = text.substr(0, text.find_first_of("eE"));
+        significant.erase(std::remove(significant.begin(), significant.end(), '.'), significant.end());
+        significant.erase(0, significant.find_first_not_of("-+0"));
+        if (equal && significant.size() <= 38) ASSERT_TRUE(said) << text;
+        (said ? spelled : not_spelled)++;
+    };
+    for (int i = 0; i < 4000; ++i) {
+        // A dyadic double with up to 30 bits after the point, or any double of a random magnitude.
+        const double d = i % 2 == 0 ? std::ldexp(static_cast<double>(static_cast<std::int64_t>(gen() >> 11)) - 0x1p52, -static_cast<int>(gen() % 31) - 22)
+                                    : std::ldexp(std::uniform_real_distribution<double>(-1, 1)(gen), static_cast<int>(gen() % 120) - 60);
+        char buffer[1200];
+        std::snprintf(buffer, sizeof buffer, "%.1100f", d);
+        std::string text(buffer);
+        text.erase(text.find_last_not_of('0') + 1);
+        if (text.back() == '.') text.pop_back();
+        check(text, d);
+        check(text + "0", d);
+        check("00" + text.substr(text[0] == '-' ? 1 : 0), std::fabs(d));
+        if (text.find('.') != std::string::npos) {
+            std::string changed = text;
+            changed.back() = changed.back() == '9' ? '8' : static_cast<char>(changed.back() + 1);
+            check(changed, d);
+            check(text + "1", d);
+            check(text + "e0", d);
+            check(text + "e1", d);  // ten times the text: not d
+        }
+    }
+    for (const auto& [text, d] : std::vector<std::pair<std::string, double>>{
+             {"0.1", 0.1}, {"0.5", 0.5}, {"1e3", 1000.0}, {"-2.5E-1", -0.25}, {"+8", 8.0}, {"0", 0.0}, {"-0.0", 0.0},
+             {".5", 0.5}, {"5.", 5.0}, {"0.299999999813735485076904296875", 0x1.3333333p-2}, {"1e-400", 0.0}}) {
+        check(text, d);
+    }
+    EXPECT_GT(spelled, 4000);
+    EXPECT_GT(not_spelled, 4000);
 }
 
 TEST(Rational, RoundsRatiosToNearestTiesToEven) {

@@ -495,3 +495,18 @@ def test_python_scene_with_decimals_takes_numpy_scalars_and_names_bad_values():
     for bad in (float("nan"), np.float64("inf")):
         with pytest.raises(ValueError, match=r"^\$\.contacts\[0\]\.mu: expected a finite number"):
             ml.Scene(body=body, contacts=[{"point": [0, 0], "normal": [0, 1], "mu": bad}])
+
+
+def test_push_reads_the_outline_as_typed(tmp_path):
+    """The frictionless block spanning x 0.1 .. 1.1 (found by review): pushing its vertex 2 at
+    (1.1, 0.5) straight down is in E_rr in decimal (the oracle's LP), a knife edge: "boundary",
+    as for the same block at x 0 .. 1. Read as doubles the vertex is elsewhere and the case
+    fails ("no"), as it did before the outline was read as typed."""
+    text = ('{"body":{"mass":1,"com":[0.6,0.25],"inertia":0.1,"polygon":[[0.1,0],[1.1,0],[1.1,0.5],[0.1,0.5]]},'
+            '"contacts":[{"point":[0.1,0],"normal":[0,1],"mu":0},{"point":[1.1,0],"normal":[0,1],"mu":0}]}')
+    path = tmp_path / "b1.json"
+    path.write_text(text)
+    scene = oracle.exact_scene(json.loads(text, parse_float=Fraction, parse_int=Fraction))
+    assert oracle.produces(scene, "rr", oracle.wrench_at((Fraction("1.1"), Fraction("0.5")), (Fraction(0), Fraction(-1))))
+    out = cli("plan", "push", path, "--goal", "rr", "--vertex", "2", "--slip", "f", "--json")
+    assert [c["verdict"] for c in out["cases"]] == ["boundary"]

@@ -34,6 +34,11 @@ public:
     /// ("0.1" is 1/10, "-2.943e1" is -2943/100); nullopt for other text and for a decimal
     /// exponent beyond +-100000 (such a number is 0 or infinite as a double).
     static std::optional<Rational> parse(std::string_view text);
+    /// True when decimal text (as parse reads it) is exactly the finite double `value`, told
+    /// without big numbers for up to 38 significant digits ("0.5", "1e3", the exact expansion
+    /// "0.299999999813735485076904296875" of a dyadic double); false when it is not, or has more
+    /// digits (then parse tells). A reader of doubles skips parse where this holds.
+    static bool spells(std::string_view text, double value);
 
     [[nodiscard]] const Dyadic& num() const { return num_; }
     [[nodiscard]] const Dyadic& den() const { return den_; }

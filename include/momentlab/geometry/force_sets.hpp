@@ -74,6 +74,8 @@ template <class N>
 /// plane of forces through a vertex off its true position). For a segment the directions must
 /// lie in one open side of its line.
 [[nodiscard]] Cone forces_across(const Vec2& a, const Vec2& b, const std::vector<Exact2>& directions);
+/// The same for exact ends (decimals as typed: a body outline's vertices).
+[[nodiscard]] Cone forces_across(const Rational2& a, const Rational2& b, const std::vector<Exact2>& directions);
 
 /// Pure moments: positive (sign > 0), negative (sign < 0) or both (sign == 0).
 [[nodiscard]] Cone pure_moments(int sign);

@@ -90,6 +90,8 @@ struct BodyValues {
     Rational2 com;
     Rational inertia;
     std::optional<Rational> radius_of_gyration;
+    /// The outline as typed, when a vertex is not a double (else empty).
+    std::vector<Rational2> polygon;
     double mass_double = 0.0, inertia_double = 0.0;
     Vec2 com_double = Vec2::Zero();
     std::optional<double> radius_double;
@@ -111,6 +113,8 @@ struct Body {
     [[nodiscard]] const BodyValues* exact_values() const;
     /// The centre of mass exactly (as typed, or the double's own value).
     [[nodiscard]] Rational2 exact_com() const;
+    /// The outline's vertices exactly (as typed, or the doubles' own values; O(n)).
+    [[nodiscard]] std::vector<Rational2> exact_polygon() const;
 };
 
 /// The planar inertia at the world origin of a body of mass m, centre of mass (cx, cy) and
