@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "momentlab/geometry/labels.hpp"
+
 namespace momentlab {
 namespace {
 
@@ -69,11 +71,6 @@ std::array<ExactVector, 2> friction_cone_edges(const Vec2& point, const Vec2& no
     return {edge(true), edge(false)};
 }
 
-Cone forces_across(const Vec2& a, const Vec2& b, const std::vector<Exact2>& directions) {
-    return forces_across(rational(a), rational(b), directions);
-}
-
-// Moments about a point P / d: the functional (P.y, -P.x, d), d > 0 times (y, -x, 1).
 Cone forces_across(const Rational2& a, const Rational2& b, const std::vector<Exact2>& directions) {
     std::vector<ExactVector> gens;
     Exact2 sum{};
@@ -84,18 +81,14 @@ Cone forces_across(const Rational2& a, const Rational2& b, const std::vector<Exa
     gens.push_back(ExactVector::input(Vec3::UnitZ()));  // every pure moment
     gens.push_back(ExactVector::input(-Vec3::UnitZ()));
     const Cone turning = Cone::from_generators(gens);
-    const auto about = [](const Rational2& p) {
-        const ClearedPoint at = cleared_point(p);
-        return ExactVector::from_exact({at.p[1], -at.p[0], at.d});
-    };
-    const ExactVector about_a = about(a);
+    const ExactVector about_a = moment_functional(a);  // moments about a point
     std::vector<ExactVector> halfspaces;
     if (a == b) {
         halfspaces = {about_a, about_a.negated()};
     } else {
         const Exact2 ab = cleared_direction({b[0] - a[0], b[1] - a[1]});  // (a positive multiple)
         const bool positive = cross2(ab, sum).sign() == Sign::Positive;
-        const ExactVector about_b = about(b);
+        const ExactVector about_b = moment_functional(b);
         halfspaces = {positive ? about_a : about_a.negated(), positive ? about_b.negated() : about_b};
     }
     return intersection(turning, Cone::from_halfspaces(halfspaces));

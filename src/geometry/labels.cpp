@@ -171,15 +171,18 @@ Label label_from_dual(const Cone& dual, const Vec2& point) {
     return label_from_dual(dual, lambda, Vec3(-lambda));
 }
 
-// The point P / d: the functional (P.y, -P.x, d), d > 0 times (y, -x, 1).
 Label label_from_dual(const Cone& dual, const Rational2& point) {
-    Dyadic d;
-    const std::vector<Dyadic> p = clear_denominators(point, &d);
-    const ExactVector lambda = ExactVector::from_exact({p[1], -p[0], d});
+    const ExactVector lambda = moment_functional(point);
     return label_from_dual(dual, lambda, lambda.negated());
 }
 
 }  // namespace
+
+ExactVector moment_functional(const Rational2& point) {
+    Dyadic d;
+    const std::vector<Dyadic> p = clear_denominators(point, &d);
+    return ExactVector::from_exact({p[1], -p[0], d});
+}
 
 Label Labels::at(const Vec2& point) const { return label_from_dual(dual_, point); }
 

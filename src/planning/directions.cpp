@@ -7,6 +7,7 @@
 #include "momentlab/core/predicates.hpp"
 #include "momentlab/geometry/angular_order.hpp"
 #include "momentlab/geometry/force_sets.hpp"
+#include "momentlab/geometry/labels.hpp"
 #include "momentlab/planning/unique.hpp"
 
 namespace momentlab {
@@ -157,10 +158,7 @@ DirectionPlan plan_directions_through(const Rational2& point, const ModeForces& 
     if (!context.modes.empty() && !context.fixed) {
         // The plane of forces through the point, oriented so that counter-clockwise forces turn
         // positively about its normal (p.y, -p.x, 1).
-        // (P.y, -P.x, d) for the point P / d: a positive multiple.
-        Dyadic d;
-        const std::vector<Dyadic> p = clear_denominators(point, &d);
-        const ExactVector normal = ExactVector::from_exact({p[1], -p[0], d});
+        const ExactVector normal = moment_functional(point);
         const PlaneSplit split = split_plane(normal, plan.solutions, context.modes, goal);
         plan.uniqueness_known = true;
         const auto widest = add_arcs(plan.unique, normal, split.unique);

@@ -72,9 +72,8 @@ template <class N>
 /// moment, cut by the half-spaces of moments about a and b of opposite signs. Built from the
 /// directions and the points exactly (rounding the moments p x d of generators would tilt the
 /// plane of forces through a vertex off its true position). For a segment the directions must
-/// lie in one open side of its line.
-[[nodiscard]] Cone forces_across(const Vec2& a, const Vec2& b, const std::vector<Exact2>& directions);
-/// The same for exact ends (decimals as typed: a body outline's vertices).
+/// lie in one open side of its line. The ends are exact (a body outline's vertices as typed;
+/// rational(v) for a double v).
 [[nodiscard]] Cone forces_across(const Rational2& a, const Rational2& b, const std::vector<Exact2>& directions);
 
 /// Pure moments: positive (sign > 0), negative (sign < 0) or both (sign == 0).

@@ -103,5 +103,7 @@ private:
 [[nodiscard]] inline Vec3 moment_functional(const Vec2& point) {
     return Vec3(point.y(), -point.x(), 1.0);
 }
+/// The same for an exact point P / d (a decimal as typed): (P.y, -P.x, d), d > 0 times it.
+[[nodiscard]] ExactVector moment_functional(const Rational2& point);
 
 }  // namespace momentlab
