@@ -109,7 +109,11 @@ const CLI::Validator& number_check() {
             s.erase(0, first);
             char* end = nullptr;
             const double x = std::strtod(s.c_str(), &end);
-            if (end != s.c_str() + s.size()) return "expected a number, got \"" + printable(s) + "\"";
+            // One grammar in every front end: a decimal as Rational::parse reads it (no hex
+            // floats); "nan", "inf" and overflow pass here to be refused as not finite.
+            if (end != s.c_str() + s.size() || (std::isfinite(x) && !Rational::parse(s))) {
+                return "expected a number, got \"" + printable(s) + "\"";
+            }
             if (x == 0.0 && nonzero_digits(s)) {
                 return "\"" + printable(s) + "\" is too small for a double: it would be taken as 0 (expected " +
                        std::string(kMagnitudeRange) + ")";

@@ -106,10 +106,10 @@ class Contact:
 
 def contacts(points, normals, mu=0.0, mu_kinetic=None, names=None) -> list:
     """Contacts from arrays: points and normals of shape (n, 2), mu and mu_kinetic scalars or
-    of shape (n,)."""
-    p = _real(points, "points")
-    n = _real(normals, "normals")
-    if p.ndim != 2 or p.shape[1] != 2:
+    of shape (n,). Fractions and Decimals are kept as given (a scene reads them exactly)."""
+    p = _table(points, "points")
+    n = _table(normals, "normals")
+    if len(p.shape) != 2 or p.shape[1] != 2:
         raise ValueError(f"points: expected an array of shape (n, 2), got shape {p.shape}")
     if n.shape != p.shape:
         raise ValueError(f"normals: expected shape {p.shape} like the points, got shape {n.shape}")
@@ -118,19 +118,39 @@ def contacts(points, normals, mu=0.0, mu_kinetic=None, names=None) -> list:
     def per_contact(value, what):
         if value is None:
             return [None] * count
-        v = _real(value, what)
-        if v.ndim == 0:
-            return [float(v)] * count
+        v = _table(value, what)
+        if not v.shape:
+            return [v.values] * count
         if v.shape != (count,):
             raise ValueError(f"{what}: expected a number or an array of shape ({count},), got shape {v.shape}")
-        return [float(x) for x in v]
+        return v.values
 
     mus = per_contact(mu, "mu")
     kinetic = per_contact(mu_kinetic, "mu_kinetic")
     labels_ = list(names) if names is not None else [""] * count
     if len(labels_) != count:
         raise ValueError(f"names: expected {count} names, got {len(labels_)}")
-    return [Contact(p[i].tolist(), n[i].tolist(), mus[i], kinetic[i], str(labels_[i])) for i in range(count)]
+    return [Contact(p.values[i], n.values[i], mus[i], kinetic[i], str(labels_[i])) for i in range(count)]
+
+
+@dataclass
+class _Table:
+    values: Any  # a number or nested lists of numbers (floats, or Fractions and Decimals kept)
+    shape: tuple
+
+
+def _table(value, what) -> _Table:
+    """Numbers as _real reads them, or, when they hold a Fraction or a Decimal, kept as given in
+    nested lists of the same shape (the scene's reader reads them exactly and checks them)."""
+    if not _has_exact(value):
+        a = _real(value, what)
+        return _Table(a.tolist() if a.ndim else float(a), a.shape)
+    if isinstance(value, (Fraction, Decimal)):
+        return _Table(value, ())
+    rows = [_table(v, what) for v in _sequence(value, what)]
+    if any(r.shape != rows[0].shape for r in rows):
+        raise ValueError(f"{what}: expected numbers: rows of different shapes")
+    return _Table([r.values for r in rows], (len(rows),) + rows[0].shape)
 
 
 def _real(value, what) -> np.ndarray:
@@ -138,11 +158,15 @@ def _real(value, what) -> np.ndarray:
     (ValueError naming `what`), as are long doubles that would underflow to 0."""
     if np.ma.isMaskedArray(value):
         raise ValueError(f"{what}: a masked array is not read (fill it first)")
+    if _holds_bool(value):
+        raise ValueError(f"{what}: expected numbers, got a bool")
     try:
         raw = np.asarray(value)
     except ValueError as e:  # ragged nesting
         raise ValueError(f"{what}: expected numbers: {e}") from None
-    if raw.dtype.kind not in "biuf":
+    if raw.dtype.kind == "b":  # numpy reads True as 1
+        raise ValueError(f"{what}: expected numbers, got a bool")
+    if raw.dtype.kind not in "iuf":
         raise ValueError(f"{what}: expected real numbers, got an array of dtype {raw.dtype}")
     a = np.asarray(raw, dtype=np.float64)
     if a.ndim:
@@ -150,6 +174,15 @@ def _real(value, what) -> np.ndarray:
     if raw.dtype.kind == "f" and raw.dtype.itemsize > 8 and np.any((a == 0) & (raw != 0)):
         raise ValueError(f"{what}: a number is too small for a double: it would be taken as 0")
     return a
+
+
+def _holds_bool(value, depth: int = 0) -> bool:
+    """True for a bool, or a list or tuple holding one (numpy would read it as 0 or 1)."""
+    if isinstance(value, (bool, np.bool_)):
+        return True
+    if depth > 2 or not isinstance(value, (list, tuple)):
+        return False
+    return any(_holds_bool(v, depth + 1) for v in value)
 
 
 def _contact_doc(c) -> dict:
@@ -373,8 +406,13 @@ class Analysis:
 
         One wrench (shape (3,)): the list of mode strings, sorted (the order of every answer).
         A batch (shape (N, 3)): a bool array of shape (N, len(modes)); row k says which modes
-        wrench k produces. Runs in the compiled index without the interpreter's lock.
+        wrench k produces. Runs in the compiled index without the interpreter's lock. Fractions,
+        Decimals and numeric strings are read exactly (docs/design.md, "Numbers as typed").
         """
+        if _exact_wrench(w):
+            return self._analysis.query_one(w)
+        if _exact_wrenches(w):
+            return self._query_rows(w)
         a = _wrenches(w)
         if a.ndim == 1:
             return self._analysis.query_one(a)
@@ -385,19 +423,31 @@ class Analysis:
         Margins): Margins(.inside: {mode: distance to the boundary of its E}, .to_other: distance
         to the nearest other mode's E (math.inf when none), .reference, .length): distances (N)
         of (fx, fy, tau / length), tau about the reference (m)."""
-        a = _wrenches(w)
-        if a.ndim != 1:
-            raise ValueError("wrench: margins take one wrench of shape (3,)")
-        m = self._analysis.margins(a)
+        if _exact_wrench(w):
+            m = self._analysis.margins(w)
+        else:
+            a = _wrenches(w)
+            if a.ndim != 1:
+                raise ValueError("wrench: margins take one wrench of shape (3,)")
+            m = self._analysis.margins(a)
         return Margins(dict(m["inside"]), float(m["to_other"]), tuple(m["reference"]), float(m["length"]))
 
     def verdict(self, w):
         """'unique', 'ambiguous' or 'inconsistent' for one wrench; for a batch, an array of them."""
-        a = _wrenches(w)
-        if a.ndim == 1:
-            return VERDICTS[min(len(self._analysis.query_one(a)), 2)]
-        counts = np.minimum(self._analysis.query_batch(a).sum(axis=1), 2)
+        a = self.query(w)
+        if isinstance(a, list):
+            return VERDICTS[min(len(a), 2)]
+        counts = np.minimum(np.asarray(a).sum(axis=1), 2)
         return np.asarray(VERDICTS)[counts]
+
+    def _query_rows(self, rows) -> np.ndarray:
+        # A batch holding exact numbers, one wrench at a time (each row checked as one wrench).
+        out = np.zeros((len(rows), len(self.modes)), dtype=bool)
+        index = {m: k for k, m in enumerate(self.modes)}
+        for i, row in enumerate(rows):
+            for m in self._analysis.query_one(row):
+                out[i, index[m]] = True
+        return out
 
     def __repr__(self) -> str:
         return f"<Analysis: {len(self.modes)} modes>"
@@ -411,6 +461,17 @@ def _flag(value, what) -> bool:
     if isinstance(value, (int, np.integer)) and value in (0, 1):
         return bool(value)
     raise ValueError(f"{what}: expected True or False, got {value!r}")
+
+
+def _exact_wrench(w) -> bool:
+    """One wrench given as a list or tuple holding a Fraction, a Decimal or a string."""
+    return isinstance(w, (list, tuple)) and len(w) == 3 and any(isinstance(x, (Fraction, Decimal, str)) for x in w)
+
+
+def _exact_wrenches(w) -> bool:
+    """A batch given as a list or tuple of wrenches, one of them holding a Fraction, a Decimal or
+    a string."""
+    return isinstance(w, (list, tuple)) and any(_exact_wrench(r) for r in w)
 
 
 def _wrenches(w) -> np.ndarray:
@@ -462,8 +523,9 @@ def closure(scene: Scene, reference=None, length=None) -> Closure:
 
 
 def friction_cone(point, normal, mu) -> Cone:
-    """The Coulomb cone of a contact (Figure 1c): forces n + s t, |s| <= mu, at the point."""
-    return _momentlab.friction_cone(point, normal, _number(mu, "mu"))
+    """The Coulomb cone of a contact (Figure 1c): forces n + s t, |s| <= mu, at the point.
+    Fractions, Decimals and numeric strings are read as typed (mu = Decimal("0.3") is 3/10)."""
+    return _momentlab.friction_cone(point, normal, _exact_number(mu, "mu"))
 
 
 def pure_moments(sign: int) -> Cone:

@@ -104,14 +104,17 @@ class BestMargins:
 @dataclass(frozen=True)
 class Magnitudes:
     """The magnitudes (N) of a controlled force that produce the goal: from `from_` to `to`
-    (math.inf when it has no upper end)."""
+    (math.inf when it has no upper end). An end that is not exactly a double also has its exact
+    value, from_exact / to_exact (a Fraction; None otherwise)."""
 
     from_: float
     to: float
+    from_exact: Optional[Fraction] = None
+    to_exact: Optional[Fraction] = None
 
     @classmethod
     def from_json(cls, doc: dict) -> "Magnitudes":
-        return _read(cls, doc, {"from_": float, "to": _distance})
+        return _read(cls, doc, {"from_": float, "to": _distance, "from_exact": Fraction, "to_exact": Fraction})
 
 
 _PLAN = {

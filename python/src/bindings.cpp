@@ -59,6 +59,21 @@ py::array_t<bool> query_batch(Analysis& a, const py::handle& wrenches) {
     return out;
 }
 
+// A wrench with its exact meaning (floats their binary values; Fractions, Decimals and strings
+// as typed), its denominators cleared: a positive multiple, for cone membership.
+ExactVector exact_wrench_of(const py::handle& w) {
+    const Rational3 r = exact_vector_of<3>(w, "wrench");
+    if (is_double(r)) return ExactVector::input(to_double(r));
+    const std::vector<Dyadic> e = clear_denominators(r);
+    return ExactVector::from_exact({e[0], e[1], e[2]});
+}
+
+// The vector, refused when zero (as the builders of doubles refuse it).
+const Rational2& nonzero(const Rational2& v, const char* what) {
+    if (v[0].is_zero() && v[1].is_zero()) throw std::invalid_argument(std::string(what) + " must be non-zero");
+    return v;
+}
+
 // A load from the keyword arguments: gravity (GX, GY), wrench (FX, FY, TAU), forces [(point, force), ...].
 Load load_of(const py::handle& gravity, const py::handle& wrench, const py::handle& forces = py::none()) {
     Load load;
@@ -130,10 +145,9 @@ PYBIND11_MODULE(_momentlab, m) {
         .def_property_readonly("kind", &Cone::kind)
         .def_property_readonly("is_pointed", &Cone::is_pointed)
         .def_property_readonly("is_zero", &Cone::is_zero)
-        .def("contains", [](const Cone& c, const py::handle& w) { return c.has(vector_of<3>(w, "wrench")); },
-             py::arg("w"), "Exact membership of the wrench w.")
-        .def("in_relative_interior",
-             [](const Cone& c, const py::handle& w) { return c.in_relative_interior(vector_of<3>(w, "wrench")); },
+        .def("contains", [](const Cone& c, const py::handle& w) { return c.has(exact_wrench_of(w)); },
+             py::arg("w"), "Exact membership of the wrench w (floats as their binary values; Fractions, Decimals and strings as typed).")
+        .def("in_relative_interior", [](const Cone& c, const py::handle& w) { return c.in_relative_interior(exact_wrench_of(w)); },
              py::arg("w"))
         .def("dual", [](const Cone& c) { return c.dual(); })
         .def("negated", [](const Cone& c) { return c.negated(); })
@@ -377,19 +391,31 @@ PYBIND11_MODULE(_momentlab, m) {
 
     // Force sets of the paper's Figure 1, their combinations and files.
     m.def("force", [](const py::handle& p, const py::handle& d) {
-        const Vec2 point = vector_of<2>(p, "point");  // in this order: the first bad argument is named
-        return force_ray(point, vector_of<2>(d, "direction"));
+        const Rational2 point = exact_vector_of<2>(p, "point");  // in this order: the first bad argument is named
+        const Rational2 direction = nonzero(exact_vector_of<2>(d, "direction"), "direction");
+        if (is_double(point) && is_double(direction)) return force_ray(to_double(point), to_double(direction));
+        return force_ray(point, direction);
     }, py::arg("point"), py::arg("direction"), "The positive multiples of one force through a point (Figure 1a).");
     m.def("line_of_force", [](const py::handle& p, const py::handle& d) {
-        const Vec2 point = vector_of<2>(p, "point");
-        return line_of_force(point, vector_of<2>(d, "direction"));
+        const Rational2 point = exact_vector_of<2>(p, "point");
+        const Rational2 direction = nonzero(exact_vector_of<2>(d, "direction"), "direction");
+        if (is_double(point) && is_double(direction)) return line_of_force(to_double(point), to_double(direction));
+        return line_of_force(point, direction);
     }, py::arg("point"), py::arg("direction"), "The forces along a line, both senses.");
-    m.def("forces_through_point", [](const py::handle& p) { return forces_through_point(vector_of<2>(p, "point")); },
-          py::arg("point"), "Every force whose line of action passes through the point (Figure 1b).");
-    m.def("friction_cone", [](const py::handle& p, const py::handle& n, double mu) {
-        if (number_of(mu, "mu") < 0.0) throw InputError("mu", "expected a finite mu >= 0");
-        const Vec2 point = vector_of<2>(p, "point");
-        return friction_cone(point, vector_of<2>(n, "normal"), mu);
+    m.def("forces_through_point", [](const py::handle& p) {
+        const Rational2 point = exact_vector_of<2>(p, "point");
+        if (is_double(point)) return forces_through_point(to_double(point));
+        return forces_through_point(point);
+    }, py::arg("point"), "Every force whose line of action passes through the point (Figure 1b).");
+    m.def("friction_cone", [](const py::handle& p, const py::handle& n, const py::handle& mu) {
+        const Rational exact_mu = exact_vector_of<1>(py::make_tuple(mu), "mu")[0];
+        if (exact_mu.sign() == Sign::Negative) throw InputError("mu", "expected a finite mu >= 0");
+        const Rational2 point = exact_vector_of<2>(p, "point");
+        const Rational2 normal = nonzero(exact_vector_of<2>(n, "normal"), "normal");
+        if (is_double(point) && is_double(normal) && is_double(std::span<const Rational>(&exact_mu, 1))) {
+            return friction_cone(to_double(point), to_double(normal), exact_mu.to_double());
+        }
+        return friction_cone(point, normal, exact_mu);
     }, py::arg("point"), py::arg("normal"), py::arg("mu"), "The Coulomb cone of a contact (Figure 1c).");
     m.def("closure", [](const Scene& scene, const py::handle& reference, std::optional<double> length) {
         const std::optional<Vec2> r = reference.is_none() ? std::nullopt : std::optional<Vec2>(vector_of<2>(reference, "reference"));

@@ -124,20 +124,15 @@ MarginAnswer Problem::margins(const Load& load) {
 std::vector<MagnitudeBand> Problem::push_line(const Rational2& point, const Rational2& direction, const Load& load) {
     (void)checked_vector(to_double(point), names_.point);
     (void)checked_direction(to_double(direction), names_.direction);
-    // g + lambda u with both cleared: s_g g + lambda' s_u u, lambda' = lambda s_g / s_u, so each
-    // end found is lambda = lambda' s_u / s_g, exactly.
+    // g + lambda u with both cleared (Magnitude::scaled_back)
     const Rational3 fixed = wrench_of(load).value_or(Rational3{});
     const Rational3 u{direction[0], direction[1], point[0] * direction[1] - point[1] * direction[0]};
     Dyadic s_g, s_u;
     const Exact3 g = cleared(fixed, &s_g), cu = cleared(u, &s_u);
     std::vector<MagnitudeBand> bands = magnitude_bands(analysis("query"), g, cu);
-    const auto back = [&](Magnitude& m) {
-        m.num = m.num * s_u;
-        m.den = m.den * s_g;
-    };
     for (MagnitudeBand& b : bands) {
-        back(b.from);
-        if (b.to) back(*b.to);
+        b.from = b.from.scaled_back(s_u, s_g);
+        if (b.to) b.to = b.to->scaled_back(s_u, s_g);
     }
     return bands;
 }

@@ -181,13 +181,22 @@ bool Cone::has(const Vec3& w) const { return satisfies(equations_, facets_, w); 
 
 bool Cone::has(const ExactVector& w) const { return satisfies(equations_, facets_, w); }
 
-bool Cone::in_relative_interior(const Vec3& w) const {
-    if (!has(w)) return false;
-    for (const ExactVector& f : facets_) {
+namespace {
+
+template <class W>
+bool strictly_inside(const std::vector<ExactVector>& equations, const std::vector<ExactVector>& facets, const W& w) {
+    if (!satisfies(equations, facets, w)) return false;
+    for (const ExactVector& f : facets) {
         if (f.dot_sign(w) != Sign::Positive) return false;
     }
     return true;
 }
+
+}  // namespace
+
+bool Cone::in_relative_interior(const Vec3& w) const { return strictly_inside(equations_, facets_, w); }
+
+bool Cone::in_relative_interior(const ExactVector& w) const { return strictly_inside(equations_, facets_, w); }
 
 Membership Cone::contains(const Vec3& w) const {
     if (!w.allFinite()) throw std::invalid_argument("Cone::contains: w has a NaN or infinite coordinate");

@@ -77,9 +77,21 @@ nlohmann::json distance_json(double d) { return std::isfinite(d) ? nlohmann::jso
 
 }  // namespace
 
+namespace {
+
+// "<key>_exact": the exact magnitude as text, when it is not the double printed.
+void add_exact(nlohmann::json& out, const char* key, const Magnitude& m) {
+    if (!(m.num == Dyadic(m.value()) * m.den)) out[std::string(key) + "_exact"] = exact_text(m.num, m.den);
+}
+
+}  // namespace
+
 nlohmann::json to_json(const MagnitudeRange& range) {
-    return {{"from", output_value(range.lo.value())},
-            {"to", range.hi ? nlohmann::json(output_value(range.hi->value())) : nlohmann::json("unbounded")}};
+    nlohmann::json out = {{"from", output_value(range.lo.value())},
+                          {"to", range.hi ? nlohmann::json(output_value(range.hi->value())) : nlohmann::json("unbounded")}};
+    add_exact(out, "from", range.lo);
+    if (range.hi) add_exact(out, "to", *range.hi);
+    return out;
 }
 
 nlohmann::json to_json(const QueryMargins& margins) {
@@ -99,11 +111,8 @@ nlohmann::json to_json(const std::vector<MagnitudeBand>& bands, std::span<const 
                        {"to_closed", b.to_closed},
                        {"modes", modes},
                        {"verdict", to_string(verdict_of(b.modes.size()))}});
-        const auto exact = [&](const Magnitude& m, const char* key) {
-            if (!(m.num == Dyadic(m.value()) * m.den)) out.back()[key] = exact_text(m.num, m.den);
-        };
-        exact(b.from, "from_exact");
-        if (b.to) exact(*b.to, "to_exact");
+        add_exact(out.back(), "from", b.from);
+        if (b.to) add_exact(out.back(), "to", *b.to);
     }
     return out;
 }

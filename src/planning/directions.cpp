@@ -131,19 +131,13 @@ Cone planned_set(const ModeForces& goal, const PlanContext& context) {
 
 std::optional<MagnitudeRange> magnitudes_through(const ModeForces& goal, const PlanContext& context,
                                                 const Rational2& point, const Rational2& direction) {
-    // fixed / s_g + lambda u / s_u in E: fixed + lambda' u with lambda' = lambda s_g / s_u, so
-    // each end found is lambda = lambda' s_u / s_g, exactly.
     Dyadic s_u;
     const std::vector<Dyadic> c = clear_denominators(
         Rational3{direction[0], direction[1], point[0] * direction[1] - point[1] * direction[0]}, &s_u);
     std::optional<MagnitudeRange> r = magnitudes(goal.applied, *context.fixed, Exact3{c[0], c[1], c[2]});
     if (!r) return r;
-    const auto back = [&](Magnitude& m) {
-        m.num = m.num * s_u;
-        m.den = m.den * context.fixed_scale;
-    };
-    back(r->lo);
-    if (r->hi) back(*r->hi);
+    r->lo = r->lo.scaled_back(s_u, context.fixed_scale);
+    if (r->hi) r->hi = r->hi->scaled_back(s_u, context.fixed_scale);
     return r;
 }
 
@@ -155,6 +149,9 @@ DirectionPlan plan_directions_through(const Rational2& point, const ModeForces& 
                                       const Cone& target) {
     DirectionPlan plan = plan_directions_through(point, target);
     if (!plan.feasible()) return plan;
+    // A knife edge: no solution inside E_goal (with a fixed wrench: no g + lambda u inside it, which
+    // needs a full-dimensional E_goal and a direction inside E_goal + cone(-g)).
+    plan.knife_edge = !meets_interior(plan.solutions, target) || (context.fixed && goal.applied.dimension() < 3);
     if (!context.modes.empty() && !context.fixed) {
         // The plane of forces through the point, oriented so that counter-clockwise forces turn
         // positively about its normal (p.y, -p.x, 1).
@@ -168,19 +165,22 @@ DirectionPlan plan_directions_through(const Rational2& point, const ModeForces& 
             plan.best = std::remainder(widest->first + plan.margin, 2.0 * M_PI);
             plan.best_unique = true;
         }
-        if (context.metric) {
+        if (context.metric && !plan.knife_edge) {  // (a knife edge's margins are 0)
             plan.best_margins =
                 margins_of(context.modes, wrench_through(exact(to_double(point)), exact(Vec2(std::cos(plan.best), std::sin(plan.best)))),
                            *context.metric);
         }
     }
-    // A knife edge: no solution inside E_goal (with a fixed wrench: no g + lambda u inside it, which
-    // needs a full-dimensional E_goal and a direction inside E_goal + cone(-g)).
-    plan.knife_edge = !meets_interior(plan.solutions, target) || (context.fixed && goal.applied.dimension() < 3);
     if (plan.knife_edge) plan.margin = 0.0;
     if (plan.best >= M_PI) plan.best -= 2.0 * M_PI;  // [-pi, pi), as the intervals
     if (context.fixed) {
-        plan.best_magnitudes = magnitudes_through(goal, context, point, rational(Vec2(std::cos(plan.best), std::sin(plan.best))));
+        // A single direction (a knife edge) exactly as found: its rounding may miss E_goal.
+        const Cone& s = plan.solutions;
+        const bool single = s.lineality_dimension() == 0 && s.rays().size() == 1;
+        const Exact3 ray = single ? s.rays()[0].exact() : Exact3{};
+        const Rational2 best = single ? Rational2{Rational(ray[0], Dyadic(1.0)), Rational(ray[1], Dyadic(1.0))}
+                                      : rational(Vec2(std::cos(plan.best), std::sin(plan.best)));
+        plan.best_magnitudes = magnitudes_through(goal, context, point, best);
         plan.magnitudes_known = true;
     }
     return plan;

@@ -153,6 +153,10 @@ TEST(Cli, QueryGravityAndForcesAtPoints) {
     EXPECT_EQ(run("query " + scene + " --wrench 1 0 1e-61").status, 0) << stderr_text();
     EXPECT_EQ(run("query " + scene + " --wrench 1e-61 0 0").status, 2);
     EXPECT_NE(stderr_text().find("--wrench: out of range"), std::string::npos) << stderr_text();
+    // One number grammar in every front end (files, Python, the module): decimals, no hex floats.
+    EXPECT_EQ(run("query " + scene + " --wrench 0x1p3 0 0").status, 2);
+    EXPECT_NE(stderr_text().find("expected a number, got \"0x1p3\""), std::string::npos) << stderr_text();
+    EXPECT_EQ(modes("--wrench 8 0 0"), modes("--wrench ' 8.' 0 0"));
 }
 
 // A scene with too many modes to analyse (a cradle of 12,000 contacts: more than 12,000 modes

@@ -4,6 +4,7 @@ bundled examples. MOMENTLAB_CLI names the momentlab executable (ctest sets it)."
 import dataclasses
 import json
 import math
+from fractions import Fraction
 import os
 import subprocess
 from pathlib import Path
@@ -37,7 +38,8 @@ def examples():
 def as_json(value):
     """A result of the Python module (momentlab.results) in the form of the CLI's --json output,
     written here from the JSON's rules (not the module's reader): each dataclass field a key,
-    from_ as "from", math.inf as "unbounded", tuples as lists, a field that is None left out."""
+    from_ as "from", math.inf as "unbounded", tuples as lists, a Fraction as "p/q" (docs/formats.md:
+    an exact value in lowest terms), a field that is None left out."""
     if dataclasses.is_dataclass(value):
         return {("from" if f.name == "from_" else f.name): as_json(getattr(value, f.name))
                 for f in dataclasses.fields(value) if getattr(value, f.name) is not None}
@@ -47,6 +49,8 @@ def as_json(value):
         return [as_json(v) for v in value]
     if isinstance(value, float) and math.isinf(value) and value > 0:
         return "unbounded"
+    if isinstance(value, Fraction):
+        return f"{value.numerator}/{value.denominator}"
     return value
 
 

@@ -254,7 +254,7 @@ def test_results_are_typed_values_with_inf_for_unbounded_ends():
     mu, m = raw["contacts"][0]["mu"], raw["body"]["mass"]
     assert bands[0].modes == ["ff"] and bands[0].to == mu * m * 10
     # A fixed wrench: the magnitudes of the best tilt, with no upper end.
-    plan = ml.plan_tilt(a, "rr", wrench=(0.0, 0.0, 0.1))
+    plan = ml.plan_tilt(a, "rr", wrench=(0.0, 0.0, "0.1"))  # 1/10, as the CLI reads its option
     assert isinstance(plan, ml.DirectionPlan) and isinstance(plan.best_magnitudes, ml.Magnitudes)
     assert plan.best_magnitudes.to == math.inf
     want = cli("plan", "tilt", path, "--goal", "rr", "--wrench", 0, 0, 0.1, "--json")

@@ -250,7 +250,7 @@ def test_numbers_outside_the_clis_range_and_unrepresentable_answers(block):
     with pytest.raises(ValueError, match="^mu:"):
         ml.friction_cone((0, 0), (0, 1), 1e300)
     with pytest.raises(ValueError, match="^mu:"):
-        ml.friction_cone((0, 0), (0, 1), "0.5")
+        ml.friction_cone((0, 0), (0, 1), "0.5 N")  # a numeric string is its decimal; this is not one
     # A vector is in range by its largest coordinate (docs/formats.md, as the CLI and scene files
     # read vectors): (1, 1e-300) is accepted, (1e-300, 1e-300) refused.
     ml.force((0, 1e60), (1, 1e-300))
@@ -285,8 +285,8 @@ def test_complex_strings_and_masked_arrays_are_refused(block):
         ml.contacts([[0, 1j]], [[0, 1]])
     with pytest.raises(ValueError, match="^points: expected real numbers"):
         ml.contacts(np.array([["0", "1"]]), [[0, 1]])
-    with pytest.raises(ValueError, match="^point: expected real numbers"):
-        ml.force(("0", "0"), ("1", "0"))
+    with pytest.raises(ValueError, match="^point: expected numbers"):
+        ml.force(("0", "zero"), ("1", "0"))  # numeric strings are decimals (test_decimals_inputs.py)
     with pytest.raises(ValueError, match="^wrench: expected real numbers"):
         ml.force((0, 0), (1, 0)).contains([1, -1, -0.75 + 1j])
     with pytest.raises(ValueError, match="^wrench: a masked array"):

@@ -416,9 +416,11 @@ def test_planner_loads_are_exact(tmp_path, gravity):
     end = float(Fraction(3, 10) * Fraction(gravity))
     assert end != float(Fraction(3, 10) * Fraction(float(Fraction(gravity))))  # the rounded load's end differs
     plan = cli("plan", "comply", path, "--goal", "ff", "--centre", "0.5", "0.25", "--gravity", "0", f"-{gravity}", "--json")
-    assert plan["centre"]["best"] == 0.0 and plan["centre"]["best_magnitudes"] == {"from": 0.0, "to": end}
+    exact = Fraction(3, 10) * Fraction(gravity)  # not a double: also given exactly, "p/q"
+    assert plan["centre"]["best"] == 0.0 and plan["centre"]["best_magnitudes"] == {"from": 0.0, "to": end, "to_exact": str(exact)}
     got = ml.plan_comply(ml.analyze(ml.Scene.from_file(path)), "ff", ["0.5", "0.25"], gravity=["0", f"-{gravity}"]).centre
-    assert (got.best_magnitudes.from_, got.best_magnitudes.to) == (0.0, end)
+    assert (got.best_magnitudes.from_, got.best_magnitudes.to, got.best_magnitudes.to_exact) == (0.0, end, exact)
+    assert got.best_magnitudes.from_exact is None  # 0 is a double
 
 
 def test_python_labels_at_a_typed_point():
@@ -510,3 +512,95 @@ def test_push_reads_the_outline_as_typed(tmp_path):
     assert oracle.produces(scene, "rr", oracle.wrench_at((Fraction("1.1"), Fraction("0.5")), (Fraction(0), Fraction(-1))))
     out = cli("plan", "push", path, "--goal", "rr", "--vertex", "2", "--slip", "f", "--json")
     assert [c["verdict"] for c in out["cases"]] == ["boundary"]
+
+
+def test_python_analysis_takes_wrenches_as_typed():
+    """Analysis.query, .verdict and .margins read a wrench of Fractions, Decimals or strings as
+    typed: the threshold push mu m g (0.3 · 1 · 9.81 = 2.943) is ambiguous between ff and rr in
+    decimal (the oracle's LP on the decimal scene); a batch holding one typed row answers that row
+    as one wrench. Bools are refused (numpy would read True as 1)."""
+    from decimal import Decimal
+    import numpy as np
+    import momentlab as ml
+    from test_decimals_oracle import THRESHOLDS, as_decimals, block
+
+    mu, m, h, g = THRESHOLDS[0]
+    text = block(mu, m, h)
+    w = [mu * m * g, -m * g, -m * g / 2]
+    expected = oracle.query(as_decimals(text), w)
+    assert {"ff", "rr"} <= expected
+    analysis = ml.analyze(ml.Scene.from_json(text))
+    for typed in (w, [Decimal("2.943"), Decimal("-9.81"), Decimal("-4.905")], ["2.943", "-9.81", "-4.905"]):
+        assert set(analysis.query(typed)) == expected, typed
+        assert analysis.verdict(typed) == oracle.verdict(len(expected))
+        assert set(analysis.margins(typed).inside) == expected
+    floats = [float(x) for x in w]
+    batch = analysis.query([floats, ["2.943", "-9.81", "-4.905"]])
+    assert batch.shape == (2, len(analysis.modes))
+    assert {analysis.modes[k] for k in np.flatnonzero(batch[1])} == expected
+    assert {analysis.modes[k] for k in np.flatnonzero(batch[0])} == set(analysis.query(floats))
+    assert list(analysis.verdict([floats, w])) == [analysis.verdict(floats), analysis.verdict(w)]
+    for bad in ([True, -9.81, -4.905], np.array([1.0, 2.0, 3.0]) > 0, [np.bool_(False), 1, 2], [[1, 2, 3], [1, True, 3]]):
+        with pytest.raises(ValueError, match="^wrench: expected numbers, got a bool"):
+            analysis.query(bad)
+        with pytest.raises(ValueError, match="^wrench: expected numbers, got a bool"):
+            analysis.verdict(bad)
+    with pytest.raises(ValueError, match="^wrench: expected numbers, got a bool"):
+        analysis.margins([1, True, 3])
+
+
+def test_python_contacts_keep_typed_values_and_refuse_bools():
+    """ml.contacts keeps Fractions and Decimals as given, so a scene of them is decimal: the
+    threshold push is ambiguous as in the oracle's decimal scene (floats give one side); a bool mu
+    or point is refused."""
+    from decimal import Decimal
+    import momentlab as ml
+    from test_decimals_oracle import THRESHOLDS, as_decimals, block
+
+    mu, m, h, g = THRESHOLDS[0]
+    w = [mu * m * g, -m * g, -m * g / 2]
+    expected = oracle.query(as_decimals(block(mu, m, h)), w)
+    body = ml.Body(mass=1, com=[Fraction(1, 2), Decimal("0.25")], inertia=Decimal("0.1"))
+    for mus in (Decimal("0.3"), [Fraction(3, 10), Decimal("0.3")]):
+        cs = ml.contacts([[0, 0], [1, 0]], [[0, 1], [Fraction(0), Decimal(1)]], mu=mus)
+        assert set(ml.analyze(ml.Scene(body=body, contacts=cs)).query(w)) == expected
+    floats = ml.contacts([[0, 0], [1, 0]], [[0, 1], [0, 1]], mu=0.3)
+    assert len(ml.analyze(ml.Scene(body=body, contacts=floats)).query([float(x) for x in w])) == 1
+    for kwargs in ({"mu": True}, {"mu": [0.3, False]}, {"mu_kinetic": True}):
+        with pytest.raises(ValueError, match="expected numbers, got a bool"):
+            ml.contacts([[0, 0], [1, 0]], [[0, 1], [0, 1]], **kwargs)
+    with pytest.raises(ValueError, match="^points: expected numbers, got a bool"):
+        ml.contacts([[0, True], [1, 0]], [[0, 1], [0, 1]])
+    with pytest.raises(ValueError, match=r"^normals: expected shape \(2, 2\)"):
+        ml.contacts([[0, 0], [1, 0]], [[0, Decimal(1)]])
+
+
+def test_python_force_sets_and_cones_take_typed_numbers():
+    """The friction cone at (0.1, 0) with normal (0, 1) and mu 0.3 has the edge force (0.3, 1),
+    whose wrench is (0.3, 1, 0.1 · 1 - 0 · 0.3) = (0.3, 1, 0.1) in decimal (the oracle's
+    wrench_at): on the cone's boundary, not inside; a tangential force a hair above mu is outside.
+    The same for a force ray through a decimal point."""
+    from decimal import Decimal
+    import momentlab as ml
+
+    p, f = (Fraction("0.1"), Fraction(0)), (Fraction("0.3"), Fraction(1))
+    w = list(oracle.wrench_at(p, f))
+    assert w == [Fraction("0.3"), 1, Fraction("0.1")]
+    hair = [w[0] + Fraction(1, 10 ** 30), w[1], w[2]]
+    for mu in (Fraction(3, 10), Decimal("0.3"), "0.3"):
+        cone = ml.friction_cone([Decimal("0.1"), 0], [0, 1], mu)
+        assert cone.contains(w) and not cone.in_relative_interior(w)
+        assert cone.contains(["0", "1", "0.1"])  # the normal force
+        assert cone.in_relative_interior([0, 1, Fraction("0.1")])
+        assert not cone.contains(hair)
+    ray = ml.force(["0.1", "0"], ["0.3", "1"])
+    assert ray.contains(w) and not ray.contains(hair) and not ray.contains([Fraction("0.3"), 1, 0.1])
+    assert ml.line_of_force([Fraction(1, 10), 0], ["0.3", 1]).contains([-x for x in w])
+    assert ml.forces_through_point(["0.1", 0]).contains([5, 7, Fraction("0.7")])  # 0.1 · 7
+    assert not ml.forces_through_point([0.1, 0]).contains([5, 7, Fraction("0.7")])  # the double 0.1 is not 1/10
+    with pytest.raises(ValueError, match="^mu: expected a number, got bool"):
+        ml.friction_cone([0, 0], [0, 1], True)
+    with pytest.raises(ValueError, match="direction must be non-zero"):
+        ml.force(["0.1", 0], [Fraction(0), "0"])
+    with pytest.raises(ValueError, match="^mu: expected a finite mu >= 0"):
+        ml.friction_cone([0, 0], [0, 1], "-0.1")

@@ -30,6 +30,8 @@ function momentlabGot(x) {
 // Decimal text as the CLI reads its options (Rational::parse): a sign, digits with at most one
 // point (.3 and 3. too), an exponent.
 const momentlabDecimal = /^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$/;
+// Blanks around a number as the CLI and Python strip them (space, tab, CR, LF; not Unicode's).
+const momentlabStrip = (text) => text.replace(/^[ \t\r\n]+|[ \t\r\n]+$/g, '');
 
 // n finite numbers (an array or a typed array) at `where`, as a plain array; with `typed`, a
 // decimal string may stand for a number ('0.1' is exactly 1/10, as the CLI reads its options;
@@ -39,16 +41,14 @@ function momentlabNumbers(value, n, where, shape, typed = false) {
   if (!isList || value.length !== n) {
     throw new Error(`${where}: expected ${n} numbers ${shape}, ${isList ? `got ${value.length}` : momentlabGot(value)}`);
   }
-  const out = Array.from(value);
-  out.forEach((x, i) => {
-    if (typed && typeof x === 'string' && momentlabDecimal.test(x.trim())) {
-      out[i] = x.trim();
-    } else if (typeof x !== 'number' || !Number.isFinite(x)) {
-      throw new Error(typed && typeof x === 'string' ? `${where}[${i}]: expected a finite number (or a decimal string such as "0.1"), got "${x}"`
-                                                     : `${where}[${i}]: expected a finite number, ${momentlabGot(x)}`);
-    }
-  });
-  return out;
+  return Array.from(value, (x, i) => (typed ? momentlabTypedNumber(x, `${where}[${i}]`) : momentlabNumber(x, `${where}[${i}]`)));
+}
+
+// A finite number, or a decimal string standing for one (kept as given for bindings.cpp).
+function momentlabTypedNumber(x, where) {
+  if (typeof x === 'string' && momentlabDecimal.test(momentlabStrip(x))) return momentlabStrip(x);
+  if (typeof x === 'string') throw new Error(`${where}: expected a finite number (or a decimal string such as "0.1"), got "${x}"`);
+  return momentlabNumber(x, where);
 }
 
 const momentlabTyped = (value, n, where, shape) => momentlabNumbers(value, n, where, shape, true);
@@ -211,7 +211,7 @@ class MomentlabAnalysis {
    *  {mu (0.5), ignoreInterference, edge, vertex, slip ('l', 'f' or 'r'), gravity, wrench, forces}. */
   planPush(goal, options) {
     const o = momentlabOptions(options, 'planPush', ['mu', 'ignoreInterference', 'edge', 'vertex', 'slip', ...momentlabLoadKeys]);
-    const mu = o.mu === undefined ? 0.5 : momentlabNumber(o.mu, 'mu');
+    const mu = o.mu === undefined ? 0.5 : momentlabTypedNumber(o.mu, 'mu');
     const index = (key) => {
       if (o[key] === undefined) return -1;
       if (!Number.isInteger(o[key]) || o[key] < 0 || o[key] > 2 ** 31 - 1) throw new Error(`${key}: expected an index 0, 1, ..., ${momentlabGot(o[key])}`);
@@ -219,7 +219,7 @@ class MomentlabAnalysis {
     };
     if (o.slip !== undefined && !['l', 'f', 'r'].includes(o.slip)) throw new Error(`slip: expected 'l', 'f' or 'r'`);
     if (o.ignoreInterference !== undefined && typeof o.ignoreInterference !== 'boolean') throw new Error(`ignoreInterference: expected true or false, ${momentlabGot(o.ignoreInterference)}`);
-    return momentlabAnswer(this._session.planPush(String(goal), mu, Boolean(o.ignoreInterference), index('edge'), index('vertex'),
+    return momentlabAnswer(this._session.planPush(String(goal), JSON.stringify(mu), Boolean(o.ignoreInterference), index('edge'), index('vertex'),
                                                   o.slip || '', momentlabLoad(o)));
   }
   /** Compliance, as `plan comply --json`: {goal, labels: {plus, minus} of E_goal (+ cone(-g) with

@@ -198,18 +198,21 @@ public:
     }
 
     // As `plan push --json`; edge and vertex -1 for none, slip "" for every slip.
-    [[nodiscard]] std::string plan_push(const std::string& goal, double mu, bool ignore_interference, int edge, int vertex,
-                                        const std::string& slip, const std::string& load_text) {
+    // mu: api.js's JSON text of a number or a decimal string (as loads).
+    [[nodiscard]] std::string plan_push(const std::string& goal, const std::string& mu_text, bool ignore_interference, int edge,
+                                        int vertex, const std::string& slip, const std::string& load_text) {
         return guarded([&] {
             const Load load = load_of(load_text);
-            PushRequest request{Rational(checked_coefficient(mu, "mu")), ignore_interference, std::nullopt, std::nullopt, std::nullopt};
+            const Rational mu = checked_coefficient(typed(json::parse(mu_text), "mu"), "mu");
+            PushRequest request{mu, ignore_interference, std::nullopt, std::nullopt, std::nullopt};
             if (edge >= 0) request.edge = static_cast<std::size_t>(edge);
             if (vertex >= 0) request.vertex = static_cast<std::size_t>(vertex);
             if (!slip.empty()) request.slip = contact_mode(slip[0]);
             json out = {{"goal", goal},
-                        {"mu", mu},
+                        {"mu", mu.to_double()},
                         {"interference", ignore_interference ? "ignored" : "considered"},
                         {"cases", json::array()}};
+            add_exact(out, "mu", std::span<const Rational>(&mu, 1));  // as the CLI's echo
             for (const PushCase& c : problem_->plan_push(goal, request, load)) out["cases"].push_back(to_json(c));
             if (const std::optional<Rational3> fixed = problem_->wrench_of(load)) {
                 out["fixed"] = vector_json(to_double(*fixed));

@@ -147,6 +147,7 @@ public:
     [[nodiscard]] bool has(const ExactVector& w) const;
     /// Exact test that w lies in the relative interior.
     [[nodiscard]] bool in_relative_interior(const Vec3& w) const;
+    [[nodiscard]] bool in_relative_interior(const ExactVector& w) const;
 
     /// All faces, the cone itself first and the lineality space (minimal face) last.
     [[nodiscard]] std::vector<Face> faces() const;

@@ -32,7 +32,7 @@ namespace momentlab {
 
 /// {"intervals": [[from, to], ...], "best", "margin"} (best and margin only when feasible):
 /// the answer of `plan tilt` and of one compliance centre, radians from +x; told the modes also
-/// "unique", "shared" (intervals) and "best_unique"; "best_margins" with a metric;
+/// "unique", "shared" (intervals) and "best_unique"; "best_margins" with a metric (not on a knife edge);
 /// "best_magnitudes" (a range or null) with a fixed wrench.
 [[nodiscard]] nlohmann::json to_json(const DirectionPlan& plan);
 /// {"feature", "from", "to", "slip", "verdict", "feasible", "blocked", "touch", "directions",
@@ -45,7 +45,8 @@ namespace momentlab {
 ///  {...}, "reference", "length", "metric"} (docs/formats.md, Closure).
 [[nodiscard]] nlohmann::json to_json(const Closure& closure);
 
-/// {"from": lo, "to": hi or "unbounded"}: magnitudes of a controlled force.
+/// {"from": lo, "to": hi or "unbounded"}: magnitudes of a controlled force; "from_exact" and
+/// "to_exact" give an end's exact value as text ("2943/1000") when it is not the double printed.
 [[nodiscard]] nlohmann::json to_json(const MagnitudeRange& range);
 /// {"inside": [d, ...], "to_other": d}: distances, "unbounded" for infinite ones (or no other set).
 [[nodiscard]] nlohmann::json to_json(const QueryMargins& margins);

@@ -32,6 +32,12 @@ struct Magnitude {
     Dyadic den = Dyadic(1.0);
     /// The ratio correctly rounded to a double (nearest_double, core/rounding.hpp).
     [[nodiscard]] double value() const;
+    /// A magnitude found for cleared wrenches, scaled back: with the push's wrench times
+    /// push_scale and the fixed wrench times fixed_scale (both > 0), fixed_scale g + l push_scale u
+    /// is fixed_scale (g + lambda u) for lambda = l push_scale / fixed_scale. Exact.
+    [[nodiscard]] Magnitude scaled_back(const Dyadic& push_scale, const Dyadic& fixed_scale) const {
+        return {num * push_scale, den * fixed_scale};
+    }
 };
 
 /// -1, 0 or +1 as a < b, a == b, a > b (exact).
