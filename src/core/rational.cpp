@@ -1,6 +1,8 @@
 #include "momentlab/core/rational.hpp"
 #include "momentlab/core/rounding.hpp"
 
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -62,65 +64,112 @@ Rational::Rational(Dyadic num, const Dyadic& den) {
 bool Rational::spells(std::string_view text, double value) {
     using U = unsigned __int128;
     if (!std::isfinite(value)) return false;
-    std::size_t at = 0;
+    const char* p = text.data();
+    const char* const end = p + text.size();
     bool negative = false;
-    if (at < text.size() && (text[at] == '-' || text[at] == '+')) negative = text[at++] == '-';
-    // The significant digits as an integer D (at most 38: below 10^38 < 2^127) and the decimal
-    // exponent e: the text is D 10^e.
-    U digits = 0;
-    int count = 0;
+    if (p < end && (*p == '-' || *p == '+')) negative = *p++ == '-';
+    const auto is_digit = [](char c) { return c >= '0' && c <= '9'; };
+    // The text is [int].[frac][e exp]: first the spans, then the significant digits D (at most
+    // 38: below 10^38 < 2^127) without leading or trailing zeros, and the exponent e: D 10^e.
+    const char* const int_begin = p;
+    while (p < end && is_digit(*p)) ++p;
+    const char* const int_end = p;
+    const char* frac_begin = p;
+    const char* frac_end = p;
+    if (p < end && *p == '.') {
+        frac_begin = ++p;
+        while (p < end && is_digit(*p)) ++p;
+        frac_end = p;
+    }
+    if (int_begin == int_end && frac_begin == frac_end) return false;  // no digit
     std::int64_t e = 0;
-    bool any = false, point = false;
-    for (; at < text.size(); ++at) {
-        const char c = text[at];
-        if (c == '.' && !point) {
-            point = true;
-            continue;
-        }
-        if (c < '0' || c > '9') break;
-        any = true;
-        if (digits == 0 && c == '0') {
-            if (point) --e;  // a leading zero after the point
-            continue;
-        }
-        if (++count > 38) return false;
-        digits = digits * 10 + static_cast<unsigned>(c - '0');
-        if (point) --e;
-    }
-    if (!any) return false;
-    if (at < text.size() && (text[at] == 'e' || text[at] == 'E')) {
-        ++at;
+    if (p < end && (*p == 'e' || *p == 'E')) {
+        ++p;
         bool minus = false;
-        if (at < text.size() && (text[at] == '-' || text[at] == '+')) minus = text[at++] == '-';
-        if (at == text.size()) return false;
+        if (p < end && (*p == '-' || *p == '+')) minus = *p++ == '-';
+        if (p == end) return false;
         std::int64_t x = 0;
-        for (; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at) {
+        for (; p < end && is_digit(*p); ++p) {
             if (x > 100000) return false;
-            x = x * 10 + (text[at] - '0');
+            x = x * 10 + (*p - '0');
         }
-        e += minus ? -x : x;
+        e = minus ? -x : x;
     }
-    if (at != text.size()) return false;
+    if (p != end) return false;
+    // Leading zeros of the integer part, trailing zeros of the fraction; with no integer digits
+    // left, the fraction's leading zeros too, and with no fraction digits, the integer's trailing
+    // zeros (each moving e).
+    const char* a = int_begin;
+    while (a < int_end && *a == '0') ++a;
+    const char* f = frac_end;
+    while (f > frac_begin && f[-1] == '0') --f;
+    e -= f - frac_begin;
+    const char* b = int_end;
+    const char* c = frac_begin;
+    if (a == int_end) {
+        while (c < f && *c == '0') ++c;
+    }
+    if (c == f) {
+        while (b > a && b[-1] == '0') --b;
+        e += int_end - b;
+    }
+    if ((b - a) + (f - c) > 38) return false;
+    U digits = 0;
+    std::uint64_t chunk = 0;  // fewer than 19 digits, folded into D when full
+    int in_chunk = 0;
+    std::uint64_t scale = 1;
+    const auto add = [&](const char* from, const char* to) {
+        for (; from < to; ++from) {
+            chunk = chunk * 10 + static_cast<unsigned>(*from - '0');
+            scale *= 10;
+            if (++in_chunk == 19) digits = digits * scale + chunk, chunk = 0, in_chunk = 0, scale = 1;
+        }
+    };
+    add(a, b);
+    add(c, f);
+    digits = digits * scale + chunk;
     if (digits == 0) return value == 0.0;
     if (value == 0.0 || (value < 0.0) != negative) return false;
-    // value = M 2^b with M odd; the text is D_odd 2^(a + e) 5^e with D = D_odd 2^a.
-    int b = 0;
-    const double m = std::frexp(std::fabs(value), &b);  // |value| = m 2^b, m in [0.5, 1)
-    auto big_m = static_cast<std::uint64_t>(std::ldexp(m, 64));  // exact: m has at most 53 bits
-    b -= 64;
-    while ((big_m & 1u) == 0) big_m >>= 1, ++b;
-    while (digits % 10 == 0) digits /= 10, ++e;
-    int a = 0;
-    while ((digits & 1u) == 0) digits >>= 1, ++a;
-    if (static_cast<std::int64_t>(a) + e != b) return false;
-    // D_odd 5^e = M: for e >= 0, M / 5^e = D_odd; for e < 0, D_odd / 5^-e = M.
-    U left = digits, right = big_m;
-    for (std::int64_t k = 0; k < (e >= 0 ? e : -e); ++k) {
-        U& divided = e >= 0 ? right : left;
-        if (divided % 5 != 0) return false;
-        divided /= 5;
+    // value = M 2^k with M odd; the text is D_odd 2^(t + e) 5^e with D = D_odd 2^t.
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);  // (std::bit_cast: not in the WebAssembly build's library)
+    const auto biased = static_cast<int>((bits >> 52) & 0x7ff);
+    std::uint64_t big_m = bits & ((std::uint64_t{1} << 52) - 1);  // (subnormal: no hidden bit)
+    if (biased != 0) big_m |= std::uint64_t{1} << 52;
+    int k = (biased != 0 ? biased : 1) - 1075;
+    const int m_twos = std::countr_zero(big_m);
+    big_m >>= m_twos;
+    k += m_twos;
+    const auto low = static_cast<std::uint64_t>(digits);
+    const int t = low != 0 ? std::countr_zero(low) : 64 + std::countr_zero(static_cast<std::uint64_t>(digits >> 64));
+    digits >>= t;
+    if (static_cast<std::int64_t>(t) + e != k) return false;
+    // D_odd 5^e = M: for e >= 0, D_odd 5^e reaches M; for e < 0, M 5^-e reaches D_odd (in steps
+    // of at most 5^27 < 2^63, each checked against its target first: nothing overflows).
+    static constexpr auto kFives = [] {
+        std::array<std::uint64_t, 28> f{};
+        f[0] = 1;
+        for (std::size_t i = 1; i < f.size(); ++i) f[i] = f[i - 1] * 5;
+        return f;
+    }();
+    const std::int64_t fives = e >= 0 ? e : -e;
+    if ((digits >> 64) == 0) {  // (most texts: 64-bit products, checked for overflow)
+        std::uint64_t small = e >= 0 ? static_cast<std::uint64_t>(digits) : big_m;
+        const std::uint64_t target = e >= 0 ? big_m : static_cast<std::uint64_t>(digits);
+        for (std::int64_t left = fives; left > 0; left -= 27) {
+            const std::uint64_t five = kFives[static_cast<std::size_t>(std::min<std::int64_t>(left, 27))];
+            if (__builtin_mul_overflow(small, five, &small) || small > target) return false;
+        }
+        return small == target;
     }
-    return left == right;
+    U small = e >= 0 ? digits : U(big_m);
+    const U target = e >= 0 ? U(big_m) : digits;
+    for (std::int64_t left = fives; left > 0; left -= 27) {
+        const U five = kFives[static_cast<std::size_t>(std::min<std::int64_t>(left, 27))];
+        if (small > target / five) return false;  // (then small 5^j > target)
+        small *= five;
+    }
+    return small == target;
 }
 
 std::optional<Rational> Rational::parse(std::string_view text) {
@@ -192,8 +241,6 @@ std::optional<Rational> Rational::parse(std::string_view text) {
     out.den_ = power(Dyadic::from_integer(5), fives);
     return out;
 }
-
-bool Rational::is_double() const { return den_ == Dyadic(1.0) && num_.fits_double(); }
 
 double Rational::to_double() const { return nearest_double(num_, den_); }
 

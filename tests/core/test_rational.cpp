@@ -104,9 +104,23 @@ TEST(Rational, SpellsExactlyTheDoublesItIsSaidTo) {
             check(text + "e1", d);  // ten times the text: not d
         }
     }
+    // Short dyadic numbers (at most 19 significant digits: the 64-bit path), as users type them.
+    for (int i = 0; i < 2000; ++i) {
+        const double d = std::ldexp(static_cast<double>(static_cast<std::int64_t>(gen() % (1u << 20)) - (1 << 19)), -static_cast<int>(gen() % 21));
+        char buffer[64];
+        std::snprintf(buffer, sizeof buffer, "%.25f", d);
+        std::string text(buffer);
+        text.erase(text.find_last_not_of('0') + 1);
+        if (text.back() == '.') text.pop_back();
+        check(text, d);
+        check(text + "1", d);
+        check(text + "e2", d);
+        check(text + "e2", d * 100.0);  // exact when d 100 is a double; GMP tells
+    }
     for (const auto& [text, d] : std::vector<std::pair<std::string, double>>{
              {"0.1", 0.1}, {"0.5", 0.5}, {"1e3", 1000.0}, {"-2.5E-1", -0.25}, {"+8", 8.0}, {"0", 0.0}, {"-0.0", 0.0},
-             {".5", 0.5}, {"5.", 5.0}, {"0.299999999813735485076904296875", 0x1.3333333p-2}, {"1e-400", 0.0}}) {
+             {".5", 0.5}, {"5.", 5.0}, {"0.299999999813735485076904296875", 0x1.3333333p-2}, {"1e-400", 0.0},
+             {"100.25", 100.25}, {"1200", 1200.0}, {"120e-1", 12.0}, {"0.000", 0.0}, {"2000.5000", 2000.5}, {"1200.001", 1200.001}}) {
         check(text, d);
     }
     EXPECT_GT(spelled, 4000);

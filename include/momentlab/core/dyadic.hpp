@@ -63,6 +63,8 @@ public:
     /// The exact sign.
     [[nodiscard]] Sign sign() const { return sign_of_int(sign_); }
     [[nodiscard]] bool is_zero() const { return size_ == 0; }
+    /// Exactly 1 (told from the canonical form: an odd magnitude 1 at exponent 0).
+    [[nodiscard]] bool is_one() const { return size_ == 1 && sign_ > 0 && exponent_ == 0 && data()[0] == 1; }
 
     [[nodiscard]] Dyadic operator-() const;
     friend Dyadic operator+(const Dyadic& a, const Dyadic& b);

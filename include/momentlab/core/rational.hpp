@@ -45,7 +45,7 @@ public:
     [[nodiscard]] Sign sign() const { return num_.sign(); }
     [[nodiscard]] bool is_zero() const { return num_.is_zero(); }
     /// True when the value is exactly a finite double.
-    [[nodiscard]] bool is_double() const;
+    [[nodiscard]] bool is_double() const { return den_.is_one() && num_.fits_double(); }
     /// The value correctly rounded to a double (to nearest, ties to even); +-inf beyond the range.
     [[nodiscard]] double to_double() const;
 
