@@ -9,8 +9,6 @@ Bodies are numbered 1..N in the order given and 0 is the fixed world; a contact'
 from __future__ import annotations
 
 import os
-from typing import Optional
-
 import numpy as np
 
 from . import Body, Scene, _exact_json, _flag, _has_exact, _momentlab, _sequence, friction_cone

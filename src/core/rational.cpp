@@ -113,7 +113,17 @@ bool Rational::spells(std::string_view text, double value) {
         while (b > a && b[-1] == '0') --b;
         e += int_end - b;
     }
-    if ((b - a) + (f - c) > 38) return false;
+    if ((b - a) + (f - c) > 38) {
+        // Longer: in Dyadic numbers. A double's exact text has at most 767 significant digits
+        // and |e| <= 1074 + 767; beyond, it is not one.
+        if ((b - a) + (f - c) > 800 || e > 400 || e < -2000 || value == 0.0 || (value < 0.0) != negative) return false;
+        std::string all(a, b);
+        all.append(c, f);
+        const Dyadic d = integer_of(all), v(std::fabs(value));
+        const Dyadic five_power = power(Dyadic::from_integer(5), e >= 0 ? e : -e);
+        // D 10^e = v: for e >= 0, D 5^e 2^e = v; for e < 0, D = v 5^-e 2^-e.
+        return e >= 0 ? compare((d * five_power).scaled(e), v) == 0 : compare(d, (v * five_power).scaled(-e)) == 0;
+    }
     U digits = 0;
     std::uint64_t chunk = 0;  // fewer than 19 digits, folded into D when full
     int in_chunk = 0;

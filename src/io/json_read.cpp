@@ -7,8 +7,10 @@
 #include <cassert>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 #include <type_traits>
 
 namespace momentlab::json_read {
@@ -241,6 +243,25 @@ Document Builder::finish() {
 
 namespace {
 
+// The JSON library's message as one short line of ASCII: its "last read" text holds the file's
+// bytes as they were (a character cut in two is not UTF-8, which Python and a terminal refuse):
+// a control or non-ASCII byte as \xNN, and at most 200 bytes of it (a 10^5-digit number).
+std::string library_message(const char* what) {
+    std::string out;
+    for (const char* p = what; *p != '\0' && out.size() < 200; ++p) {
+        const auto c = static_cast<unsigned char>(*p);
+        if (c < 0x20 || c >= 0x7f) {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02x", c);
+            out += hex;
+        } else {
+            out += static_cast<char>(c);
+        }
+    }
+    if (out.size() >= 200) out += "...";
+    return out;
+}
+
 // The JSON library's SAX events, to a Builder (its texts do not outlive the event).
 class LibraryEvents {
 public:
@@ -262,9 +283,9 @@ public:
     template <class Exception>
     bool parse_error(std::size_t, const std::string&, const Exception& e) {
         if constexpr (std::is_same_v<Exception, nlohmann::detail::out_of_range>) {  // e.g. 1e999
-            throw InputError("$", "a number is out of range (expected " + std::string(kMagnitudeRange) + "): " + e.what());
+            throw InputError("$", "a number is out of range (expected " + std::string(kMagnitudeRange) + "): " + library_message(e.what()));
         }
-        throw InputError("$", std::string("malformed JSON: ") + e.what());
+        throw InputError("$", "malformed JSON: " + library_message(e.what()));
     }
 
 private:

@@ -198,16 +198,45 @@ struct Extents {
     std::optional<DirectionRange> directions;
 };
 
-Extents extents(const PushFeature& f, const std::vector<const Cone*>& cones) {
+// num / den as a Rational (den != 0): the signs and powers of two moved so that the denominator
+// is a positive integer.
+Rational ratio(Dyadic num, Dyadic den) {
+    if (den.sign() == Sign::Negative) num = -num, den = -den;
+    if (den.binary_exponent() < 0) {
+        const std::int64_t k = -den.binary_exponent();
+        num = num.scaled(k), den = den.scaled(k);
+    }
+    return {std::move(num), den};
+}
+
+// Where the line of action of the exact wrench w = (F, tau) crosses the edge from a to b: the
+// parameter s = (tau - a x F) / ((b - a) x F), exactly (the edge's ends as typed); none for a
+// force along the edge (not a push across it).
+std::optional<Rational> touch_parameter(const Ends& ends, const ExactVector& w) {
+    const Exact3 x = w.exact();
+    Dyadic p, q;  // a = A / p, b - a = D / q with A, D integers
+    const std::vector<Dyadic> a = clear_denominators(ends.from, &p);
+    const std::vector<Dyadic> d = clear_denominators(Rational2{ends.to[0] - ends.from[0], ends.to[1] - ends.from[1]}, &q);
+    // s = q (p tau - A x F) / (p (D x F))
+    const Dyadic across = d[0] * x[1] - d[1] * x[0];
+    if (across.is_zero()) return std::nullopt;
+    return ratio(q * (p * x[2] - (a[0] * x[1] - a[1] * x[0])), p * across);
+}
+
+Extents extents(const PushFeature& f, const Ends& ends, const std::vector<const Cone*>& cones) {
     Extents out;
     double lo_angle = INFINITY, hi_angle = -INFINITY;
+    const Rational zero, one(1.0);
+    const auto clamped = [&](Rational s) { return compare(s, zero) < 0 ? zero : compare(s, one) > 0 ? one : s; };
     for (const Cone* cone : cones) {
-        double s0 = INFINITY, s1 = -INFINITY;
-        for (const Vec3& w : cone->generator_values()) {
-            if (f.kind == PushFeature::Kind::Edge) {
-                const double s = std::clamp(touch_parameter(f, w), 0.0, 1.0);
-                s0 = std::min(s0, s);
-                s1 = std::max(s1, s);
+        std::optional<Rational> s0, s1;
+        for (const ExactVector& g : cone->generators()) {
+            const Vec3 w = g.value();
+            const std::optional<Rational> exact_s = f.kind == PushFeature::Kind::Edge ? touch_parameter(ends, g) : std::nullopt;
+            if (exact_s) {
+                const Rational s = clamped(*exact_s);
+                if (!s0 || compare(s, *s0) < 0) s0 = s;
+                if (!s1 || compare(s, *s1) > 0) s1 = s;
             }
             const double angle = relative_angle(f.normal, force_of(w));
             lo_angle = std::min(lo_angle, angle);
@@ -215,9 +244,12 @@ Extents extents(const PushFeature& f, const std::vector<const Cone*>& cones) {
         }
         if (f.kind == PushFeature::Kind::Vertex) {
             if (out.touch.empty()) out.touch.emplace_back(f.from, f.from);
-        } else if (s0 <= s1) {
-            const Vec2 d = f.to - f.from;
-            out.touch.emplace_back(f.from + s0 * d, f.from + s1 * d);
+        } else if (s0) {
+            // The touch points exactly, correctly rounded (an end printed is the end's nearest double).
+            const auto at = [&](const Rational& s) {
+                return to_double(Rational2{ends.from[0] + s * (ends.to[0] - ends.from[0]), ends.from[1] + s * (ends.to[1] - ends.from[1])});
+            };
+            out.touch.emplace_back(at(*s0), at(*s1));
         }
     }
     if (lo_angle <= hi_angle) {
@@ -231,10 +263,10 @@ Extents extents(const PushFeature& f, const std::vector<const Cone*>& cones) {
 }
 
 // Touch segments, direction range and a representative push from the chosen pieces.
-void describe(PushCase& c, const std::vector<const PushPiece*>& chosen) {
+void describe(PushCase& c, const Ends& ends, const std::vector<const PushPiece*>& chosen) {
     std::vector<const Cone*> cones;
     for (const PushPiece* piece : chosen) cones.push_back(&piece->solutions);
-    Extents e = extents(c.feature, cones);
+    Extents e = extents(c.feature, ends, cones);
     c.touch = std::move(e.touch);
     c.directions = e.directions;
     if (!chosen.empty()) c.best = chosen.front()->representative ? *chosen.front()->representative
@@ -245,7 +277,7 @@ void describe(PushCase& c, const std::vector<const PushPiece*>& chosen) {
 // still lies in E_goal's interior, in no other mode's set and where the finger is free: of the
 // unique parts' representatives (the mean of each part's extreme unit forces), the one farthest
 // from every boundary in the wrench metric when there is one, else the first.
-void tell_uniqueness(PushCase& c, const std::vector<const PushPiece*>& shown, const ModeForces& goal,
+void tell_uniqueness(PushCase& c, const Ends& ends, const std::vector<const PushPiece*>& shown, const ModeForces& goal,
                      std::span<const ModeForces> modes, const std::vector<Polygon>* obstacles, const WrenchMetric* metric) {
     c.uniqueness_known = true;
     std::vector<Cone> parts;
@@ -284,7 +316,7 @@ void tell_uniqueness(PushCase& c, const std::vector<const PushPiece*>& shown, co
     }
     std::vector<const Cone*> cones;
     for (const Cone& part : parts) cones.push_back(&part);
-    Extents e = extents(c.feature, cones);
+    Extents e = extents(c.feature, ends, cones);
     // The parts of a 3-D case overlap along the edge: their segments merged, in the edge's order.
     const Vec2 d = c.feature.to - c.feature.from;
     const auto along = [&](const Vec2& p) { return (p - c.feature.from).dot(d); };
@@ -341,9 +373,9 @@ PushCase solve_case(const PushFeature& f, const Ends& ends, const Exact2& cw, co
     for (const PushPiece& p : c.pieces) {
         if (c.verdict == PushVerdict::Feasible ? p.robust : has_solutions(p)) shown.push_back(&p);
     }
-    describe(c, shown);
+    describe(c, ends, shown);
     if (!context.modes.empty() && !context.fixed && !shown.empty()) {
-        tell_uniqueness(c, shown, goal_mode, context.modes, free ? &obstacles : nullptr, context.metric ? &*context.metric : nullptr);
+        tell_uniqueness(c, ends, shown, goal_mode, context.modes, free ? &obstacles : nullptr, context.metric ? &*context.metric : nullptr);
     }
     if (!context.modes.empty() && !context.fixed && context.metric && c.best) {
         c.best_margins = margins_of(context.modes, wrench_through(exact(c.best->point), exact(c.best->direction)), *context.metric);

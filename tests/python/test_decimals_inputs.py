@@ -604,3 +604,50 @@ def test_python_force_sets_and_cones_take_typed_numbers():
         ml.force(["0.1", 0], [Fraction(0), "0"])
     with pytest.raises(ValueError, match="^mu: expected a finite mu >= 0"):
         ml.friction_cone([0, 0], [0, 1], "-0.1")
+
+
+@pytest.mark.parametrize("com_y", ["1.2", "1.23", "1.37"])
+def test_push_touch_ends_are_the_exact_end_correctly_rounded(tmp_path, com_y):
+    """Review of issue 46: a finger sliding (r) on the top of a unit block on a frictionless floor,
+    com (0.5, y): the force (1, -2) of the finger's friction edge at (x, 1) gives rr from x =
+    (y - 1) / 2 on (the oracle's LP: rr and rs at that point, rs alone just before it, rr just
+    after). The touch segment printed ends at that point's nearest double (0.1, 0.115, 0.185), not
+    at a rounded intersection a few ulps off (0.09999999999999998 lay outside E_rr)."""
+    import momentlab as ml
+
+    text = ('{"body":{"mass":1,"com":[0.5,%s],"inertia":0.1,"polygon":[[0,0],[1,0],[1,1],[0,1]]},'
+            '"obstacles":[{"polygon":[[-2,-1],[3,-1],[3,0],[-2,0]]}]}' % com_y)
+    doc = {"body": {"mass": 1, "com": [Fraction("0.5"), Fraction(com_y)], "inertia": Fraction("0.1")},
+           "contacts": [{"point": [0, 0], "normal": [0, 1], "mu": 0}, {"point": [1, 0], "normal": [0, 1], "mu": 0}]}
+    scene = oracle.exact_scene(doc)
+    end = (Fraction(com_y) - 1) / 2
+    at = lambda x: oracle.query(scene, oracle.wrench_at((x, Fraction(1)), (Fraction(1), Fraction(-2))))
+    assert at(end) == {"rr", "rs"} and at(end - Fraction(1, 10 ** 12)) == {"rs"} and at(end + Fraction(1, 10 ** 12)) == {"rr"}
+    path = tmp_path / "block.json"
+    path.write_text(text)
+    cases = cli("plan", "push", path, "--goal", "rr", "--edge", "2", "--slip", "r", "--json")["cases"]
+    assert [c["touch"] for c in cases] == [[[[1.0, 1.0], [float(end), 1.0]]]]
+    assert cases[0]["unique_touch"] == cases[0]["touch"]
+    python = [c for c in ml.plan_push(ml.Scene.from_json(text), "rr") if c.feature == "edge 2" and c.slip == "r"]
+    assert [[list(p) for p in seg] for seg in python[0].touch] == [[[1.0, 1.0], [float(end), 1.0]]]
+
+
+def test_malformed_json_messages_are_one_short_ascii_line(tmp_path):
+    """Review of issue 46: the JSON library's "last read" text cut a non-ASCII character in two
+    (Python raised a ValueError with no message; the CLI wrote bytes that are not UTF-8), and a
+    number of 10^5 digits was echoed whole. Now one ASCII line naming "$", at most a few hundred
+    bytes."""
+    import subprocess
+    import momentlab as ml
+    from conftest import CLI
+
+    for bad in ('{"contacts":[{"point":[0,0],"normal":[0,1],"mu":\u00e9}]}', '{"contacts":[{"point":[0,0],"normal":[0,1],"mu":\u00a01}]}',
+                '{"contacts":[{"point":[0,0],"normal":[0,1],"mu":1' + "0" * 100000 + '}]}'):
+        with pytest.raises(ValueError) as e:
+            ml.Scene.from_json(bad)
+        message = str(e.value)
+        assert message.startswith("$: ") and message.isascii() and len(message) < 400, message[:500]
+        path = tmp_path / "bad.json"
+        path.write_text(bad, encoding="utf-8")
+        r = subprocess.run([CLI, "modes", str(path)], capture_output=True)
+        assert r.returncode == 2 and r.stderr.decode("ascii").strip() == "momentlab: " + message

@@ -36,8 +36,9 @@ public:
     static std::optional<Rational> parse(std::string_view text);
     /// True when decimal text (as parse reads it) is exactly the finite double `value`, told
     /// without big numbers for up to 38 significant digits ("0.5", "1e3", the exact expansion
-    /// "0.299999999813735485076904296875" of a dyadic double); false when it is not, or has more
-    /// digits (then parse tells). A reader of doubles skips parse where this holds.
+    /// "0.299999999813735485076904296875" of a dyadic double), with Dyadic numbers for longer
+    /// texts (up to a double's longest exact expansion); false when it is not. A reader of
+    /// doubles skips parse where this holds.
     static bool spells(std::string_view text, double value);
 
     [[nodiscard]] const Dyadic& num() const { return num_; }
