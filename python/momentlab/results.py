@@ -158,7 +158,8 @@ class CentrePlan:
     """A compliance centre (m) and the directions (radians) of the force through it that produce
     the goal (`momentlab plan comply --centre X Y --json`, its "centre"): point, its moment label
     ('+', '-', '+-', 'none') for E_goal, verdict ('works', 'boundary', 'fails'), and the fields
-    of DirectionPlan (without goal)."""
+    of DirectionPlan (without goal). A centre given as Fractions, Decimals or strings that are not
+    doubles also has point_exact, its exact coordinates (Fractions)."""
 
     point: tuple
     label: str
@@ -172,10 +173,11 @@ class CentrePlan:
     best_unique: Optional[bool] = None
     best_margins: Optional[BestMargins] = None
     best_magnitudes: Optional[Magnitudes] = None
+    point_exact: Optional[tuple] = None
 
     @classmethod
     def from_json(cls, doc: dict) -> "CentrePlan":
-        return _read(cls, doc, {**_PLAN, "point": _point})
+        return _read(cls, doc, {**_PLAN, "point": _point, "point_exact": lambda p: tuple(Fraction(x) for x in p)})
 
 
 @dataclass(frozen=True)

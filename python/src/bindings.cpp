@@ -293,7 +293,11 @@ PYBIND11_MODULE(_momentlab, m) {
                  py::dict out;
                  out["goal"] = goal;
                  out["labels"] = python_of(to_json(answer.labels));  // plain data, as the CLI writes it
-                 if (answer.centre) out["centre"] = python_of(to_json(*answer.centre));
+                 if (answer.centre) {
+                     nlohmann::json centre_json = to_json(*answer.centre);
+                     add_exact(centre_json, "point", *at);  // as the CLI's echo of a typed centre
+                     out["centre"] = python_of(centre_json);
+                 }
                  return out;
              })
         .def("push_line",

@@ -374,8 +374,9 @@ def test_comply_centre_is_read_as_typed(tmp_path):
     for typed in (["0.775", "0.75"], [Fraction("0.775"), Fraction("0.75")], [decimal.Decimal("0.775"), "0.75"]):
         got = ml.plan_comply(analysis, "rr", typed).centre
         assert (got.verdict, got.intervals) == ("boundary", [(angle, angle)]), typed
+        assert got.point_exact == centre and plan["point_exact"] == ["31/40", "3/4"]  # echoed as read
     binary = ml.plan_comply(analysis, "rr", [0.775, 0.75]).centre
-    assert binary.verdict == "fails" and binary.intervals == []
+    assert binary.verdict == "fails" and binary.intervals == [] and binary.point_exact is None
     centre_binary = (Fraction(0.775), Fraction(0.75))
     assert not any(oracle.produces(scene, "rr", oracle.wrench_at(centre_binary, v)) for v in (d, (-d[0], -d[1])))
 
