@@ -66,11 +66,16 @@ Builder::Builder(const Schema& schema, std::string_view source) : root_(&schema)
     doc_.source_ = source;
 }
 
-std::string Builder::path() const {
+std::string Builder::path() const { return path_of(false); }
+
+std::string Builder::next_path() const { return path_of(true); }
+
+std::string Builder::path_of(bool next) const {
     std::string out = "$";
     for (const Frame& f : frames_) {
         if (f.is_array) {
-            out.append(1, '[').append(std::to_string(f.count - 1)).append(1, ']');
+            const std::size_t index = next && &f == &frames_.back() ? f.count : f.count - 1;
+            out.append(1, '[').append(std::to_string(index)).append(1, ']');
         } else {
             out.append(1, '.').append(f.key);
         }
@@ -283,7 +288,7 @@ public:
     template <class Exception>
     bool parse_error(std::size_t, const std::string&, const Exception& e) {
         if constexpr (std::is_same_v<Exception, nlohmann::detail::out_of_range>) {  // e.g. 1e999
-            throw InputError("$", "a number is out of range (expected " + std::string(kMagnitudeRange) + "): " + library_message(e.what()));
+            throw InputError(b_.next_path(), "a number beyond the doubles is out of range (expected " + std::string(kMagnitudeRange) + ")");
         }
         throw InputError("$", "malformed JSON: " + library_message(e.what()));
     }

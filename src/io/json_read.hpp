@@ -231,6 +231,8 @@ public:
     void end_array();
     /// The document, once the root value is complete.
     [[nodiscard]] Document finish();
+    /// The JSON path of the value that begins next ("$.contacts[0].mu"), for a reader's message.
+    [[nodiscard]] std::string next_path() const;
 
 private:
     // An open container. Its keys so far (for a repeated one) are keys_[keys_from ..), and the
@@ -251,7 +253,8 @@ private:
     static constexpr std::size_t kFewKeys = 16;
     static constexpr std::size_t kMaxDepth = 1'000'000;  // 80 MB of frames
 
-    [[nodiscard]] std::string path() const;
+    [[nodiscard]] std::string path() const;  // of the value begun last
+    [[nodiscard]] std::string path_of(bool next) const;
     Node* begin_value(Kind kind, const Schema*& place);
     Node& push(Kind kind, bool skipped);
     void open(Kind kind);

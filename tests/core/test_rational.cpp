@@ -68,6 +68,17 @@ TEST(Rational, ParsesDecimalsExactly) {
 // exact expansions of random doubles (glibc's printf writes them exactly), with trailing zeros,
 // exponents and leading zeros, are the doubles; the same texts with a digit changed or appended,
 // and random decimals, are not (GMP compares the text's value with the double).
+// The exact decimal expansion of a double (glibc's printf writes every digit), without trailing
+// zeros or point.
+std::string exact_expansion(double d) {
+    char buffer[1200];
+    std::snprintf(buffer, sizeof buffer, "%.1100f", d);
+    std::string text(buffer);
+    text.erase(text.find_last_not_of('0') + 1);
+    if (text.back() == '.') text.pop_back();
+    return text;
+}
+
 TEST(Rational, SpellsExactlyTheDoublesItIsSaidTo) {
     std::mt19937_64 gen(146);
     int spelled = 0, not_spelled = 0;
@@ -85,11 +96,7 @@ TEST(Rational, SpellsExactlyTheDoublesItIsSaidTo) {
         // A dyadic double with up to 30 bits after the point, or any double of a random magnitude.
         const double d = i % 2 == 0 ? std::ldexp(static_cast<double>(static_cast<std::int64_t>(gen() >> 11)) - 0x1p52, -static_cast<int>(gen() % 31) - 22)
                                     : std::ldexp(std::uniform_real_distribution<double>(-1, 1)(gen), static_cast<int>(gen() % 120) - 60);
-        char buffer[1200];
-        std::snprintf(buffer, sizeof buffer, "%.1100f", d);
-        std::string text(buffer);
-        text.erase(text.find_last_not_of('0') + 1);
-        if (text.back() == '.') text.pop_back();
+        const std::string text = exact_expansion(d);
         check(text, d);
         check(text + "0", d);
         check("00" + text.substr(text[0] == '-' ? 1 : 0), std::fabs(d));
@@ -105,11 +112,7 @@ TEST(Rational, SpellsExactlyTheDoublesItIsSaidTo) {
     // The longest exact expansions: the smallest subnormal (751 significant digits) and the
     // largest double (309 digits, no point).
     for (const double d : {0x1p-1074, 0x1.fffffffffffffp1023, -0x1.8p-1070}) {
-        char buffer[1200];
-        std::snprintf(buffer, sizeof buffer, "%.1100f", d);
-        std::string text(buffer);
-        text.erase(text.find_last_not_of('0') + 1);
-        if (text.back() == '.') text.pop_back();
+        const std::string text = exact_expansion(d);
         check(text, d);
         check(text + "1", d);
         check("0" + text.substr(text[0] == '-' ? 1 : 0) + "e-1", std::fabs(d) / 10);  // d / 10 is not a double: false
@@ -117,11 +120,7 @@ TEST(Rational, SpellsExactlyTheDoublesItIsSaidTo) {
     // Short dyadic numbers (at most 19 significant digits: the 64-bit path), as users type them.
     for (int i = 0; i < 2000; ++i) {
         const double d = std::ldexp(static_cast<double>(static_cast<std::int64_t>(gen() % (1u << 20)) - (1 << 19)), -static_cast<int>(gen() % 21));
-        char buffer[64];
-        std::snprintf(buffer, sizeof buffer, "%.25f", d);
-        std::string text(buffer);
-        text.erase(text.find_last_not_of('0') + 1);
-        if (text.back() == '.') text.pop_back();
+        const std::string text = exact_expansion(d);
         check(text, d);
         check(text + "1", d);
         check(text + "e2", d);

@@ -187,7 +187,10 @@ TEST(JsonRead, PlainReaderDeclinesWhatTheLibraryMustReport) {
                              "[true false]", "{\"a\" 1}", "[nul]", "[\"\xc3\xa9\"]"}) {
         EXPECT_FALSE(json_read::read_plain(text, json_read::kEverything).has_value()) << text;
     }
-    EXPECT_EQ(by_library("[1e400]").rfind("error: $: a number is out of range", 0), 0U) << by_library("[1e400]");
+    EXPECT_EQ(by_library("[1e400]").rfind("error: $[0]: a number beyond the doubles is out of range", 0), 0U) << by_library("[1e400]");
+    // named by its path, in an object and in a nested array (review of issue 46: it was "$")
+    EXPECT_EQ(by_library("{\"a\": [0, {\"b\": [1, -1e999]}]}").rfind("error: $.a[1].b[1]: a number beyond the doubles", 0), 0U)
+        << by_library("{\"a\": [0, {\"b\": [1, -1e999]}]}");
     EXPECT_EQ(by_library("[0.3,]").rfind("error: $: malformed JSON", 0), 0U);
     // A repeated key and an underflowing number are named by their path, by either reader.
     for (const auto& read : {std::function<Document(const std::string&)>([](const std::string& t) {
