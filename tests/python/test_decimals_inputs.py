@@ -636,18 +636,19 @@ def test_push_touch_ends_are_the_exact_end_correctly_rounded(tmp_path, com_y):
 def test_malformed_json_messages_are_one_short_ascii_line(tmp_path):
     """Review of issue 46: the JSON library's "last read" text cut a non-ASCII character in two
     (Python raised a ValueError with no message; the CLI wrote bytes that are not UTF-8), and a
-    number of 10^5 digits was echoed whole. Now one ASCII line naming "$", at most a few hundred
-    bytes."""
+    number of 10^5 digits was echoed whole, at "$". Now one ASCII line of at most a few hundred
+    bytes, the number named by its path."""
     import subprocess
     import momentlab as ml
     from conftest import CLI
 
-    for bad in ('{"contacts":[{"point":[0,0],"normal":[0,1],"mu":\u00e9}]}', '{"contacts":[{"point":[0,0],"normal":[0,1],"mu":\u00a01}]}',
-                '{"contacts":[{"point":[0,0],"normal":[0,1],"mu":1' + "0" * 100000 + '}]}'):
+    for bad, at in (('{"contacts":[{"point":[0,0],"normal":[0,1],"mu":\u00e9}]}', "$: malformed JSON"),
+                    ('{"contacts":[{"point":[0,0],"normal":[0,1],"mu":\u00a01}]}', "$: malformed JSON"),
+                    ('{"contacts":[{"point":[0,0],"normal":[0,1],"mu":1' + "0" * 100000 + '}]}', "$.contacts[0].mu: a number beyond")):
         with pytest.raises(ValueError) as e:
             ml.Scene.from_json(bad)
         message = str(e.value)
-        assert message.startswith("$: ") and message.isascii() and len(message) < 400, message[:500]
+        assert message.startswith(at) and message.isascii() and len(message) < 400, message[:500]
         path = tmp_path / "bad.json"
         path.write_text(bad, encoding="utf-8")
         r = subprocess.run([CLI, "modes", str(path)], capture_output=True)
