@@ -339,35 +339,7 @@ function drawPicture(a, produced, s) {
   }
 }
 
-// --- friction sliders, files, exports --------------------------------------------------------
-
-function buildMuSliders() {
-  const box = $('mus');
-  box.textContent = '';
-  (app.doc.contacts || []).forEach((c, j) => {
-    const row = document.createElement('div');
-    row.className = 'row';
-    const label = document.createElement('label');
-    label.textContent = `contact ${j}${c.name ? ` (${c.name})` : ''} \u03bc (static = kinetic)`;
-    const input = document.createElement('input');
-    Object.assign(input, { type: 'range', min: 0, max: Math.max(1.5, c.mu || 0), step: 0.05, value: c.mu || 0 });
-    input.id = `mu-${j}`;
-    label.htmlFor = input.id;
-    const value = document.createElement('span');
-    value.textContent = String(c.mu || 0);
-    input.title = 'static and kinetic friction (the slider sets both)';
-    input.addEventListener('input', () => {
-      c.mu = Number(input.value);
-      c.mu_kinetic = c.mu;
-      value.textContent = input.value;
-      app.sliding = true;  // the push table waits for the release
-      recompute();
-    });
-    input.addEventListener('change', () => { app.sliding = false; recompute(); });
-    row.append(label, input, value);
-    box.appendChild(row);
-  });
-}
+// --- files (the friction sliders: panels.js) -----------------------------------------------
 
 function loadScene(text, name) {
   let parsed = null;

@@ -1,7 +1,8 @@
 // The viewer's answers (docs/web.md): the plans of the picked mode (tilt, push, compliance), grasp
 // closure, and the bands of the applied force's magnitude, each as text in the side panel and
-// marked on the picture. Each panel keeps the module's answer (the CLI's --json view) in its
-// element's data-answer, so that what is shown can be checked against the CLI. Needs draw.js.
+// marked on the picture; and the panel's friction sliders. Each panel keeps the module's answer
+// (the CLI's --json view) in its element's data-answer, so that what is shown can be checked
+// against the CLI. Needs draw.js.
 'use strict';
 
 // Each changes the page only when the value changed (a drag redraws often; unchanged text costs no layout).
@@ -238,4 +239,33 @@ function legendEntries(show) {
     [swatch.dot(COLOURS.friction, 5), 'handle: contact (square: normal)'],
     [swatch.ring(COLOURS.ink), 'handle: force point (dot: tip)'],
   ]);
+}
+
+// The friction sliders, one a contact (static and kinetic mu together), in the side panel.
+function buildMuSliders() {
+  const box = $('mus');
+  box.textContent = '';
+  (app.doc.contacts || []).forEach((c, j) => {
+    const row = document.createElement('div');
+    row.className = 'row';
+    const label = document.createElement('label');
+    label.textContent = `contact ${j}${c.name ? ` (${c.name})` : ''} \u03bc (static = kinetic)`;
+    const input = document.createElement('input');
+    Object.assign(input, { type: 'range', min: 0, max: Math.max(1.5, c.mu || 0), step: 0.05, value: c.mu || 0 });
+    input.id = `mu-${j}`;
+    label.htmlFor = input.id;
+    const value = document.createElement('span');
+    value.textContent = String(c.mu || 0);
+    input.title = 'static and kinetic friction (the slider sets both)';
+    input.addEventListener('input', () => {
+      c.mu = Number(input.value);
+      c.mu_kinetic = c.mu;
+      value.textContent = input.value;
+      app.sliding = true;  // the push table waits for the release
+      recompute();
+    });
+    input.addEventListener('change', () => { app.sliding = false; recompute(); });
+    row.append(label, input, value);
+    box.appendChild(row);
+  });
 }

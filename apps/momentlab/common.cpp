@@ -111,7 +111,7 @@ const CLI::Validator& number_check() {
             const double x = std::strtod(s.c_str(), &end);
             // One grammar in every front end: a decimal as Rational::parse reads it (no hex
             // floats); "nan", "inf" and overflow pass here to be refused as not finite.
-            if (end != s.c_str() + s.size() || (std::isfinite(x) && !Rational::parse(s))) {
+            if (end != s.c_str() + s.size() || (std::isfinite(x) && !Rational::is_decimal(s))) {
                 return "expected a number, got \"" + printable(s) + "\"";
             }
             if (x == 0.0 && nonzero_digits(s)) {

@@ -20,6 +20,12 @@ bool holds_bool(const py::handle& value, int depth = 0) {
 
 }  // namespace
 
+std::string stripped(std::string t) {
+    t.erase(t.find_last_not_of(" \t\r\n") + 1);
+    t.erase(0, std::min(t.size(), t.find_first_not_of(" \t\r\n")));
+    return t;
+}
+
 bool is_bool(const py::handle& x) {
     static const py::object numpy_bool = py::module_::import("numpy").attr("bool_");
     return py::isinstance<py::bool_>(x) || py::isinstance(x, numpy_bool);
@@ -67,12 +73,7 @@ std::optional<Rational> exact_number(const py::handle& x) {
         return Rational(num->num(), den->num());
     }
     if (py::isinstance(x, decimal)) return Rational::parse(py::str(x).cast<std::string>());
-    if (py::isinstance<py::str>(x)) {
-        std::string t = x.cast<std::string>();
-        t.erase(t.find_last_not_of(" \t\r\n") + 1);
-        t.erase(0, std::min(t.size(), t.find_first_not_of(" \t\r\n")));
-        return Rational::parse(t);
-    }
+    if (py::isinstance<py::str>(x)) return Rational::parse(stripped(x.cast<std::string>()));
     return std::nullopt;
 }
 

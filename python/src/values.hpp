@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 
 #include <array>
+#include <cstdlib>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -68,6 +69,9 @@ Eigen::Matrix<double, K, 1> vector_of(const py::handle& value, const char* what)
     return v;
 }
 
+// The text without the blanks every front end strips around a number (space, tab, CR, LF).
+std::string stripped(std::string text);
+
 // A Python or numpy bool (not a number here, though numpy reads True as 1).
 bool is_bool(const py::handle& x);
 
@@ -100,8 +104,15 @@ std::array<Rational, K> exact_vector_of(const py::handle& value, const char* wha
         if (r && !r->is_zero() && r->to_double() == 0.0) {
             throw InputError(what, "a number is too small for a double: it would be taken as 0");
         }
+        if (!r && py::isinstance<py::str>(x)) {
+            // A decimal whose exponent takes it beyond the doubles (1e-999999999): as files say it.
+            const std::string t = stripped(x.cast<std::string>());
+            if (!Rational::is_decimal(t)) throw InputError(what, "expected numbers");
+            if (std::strtod(t.c_str(), nullptr) == 0.0) throw InputError(what, "a number is too small for a double: it would be taken as 0");
+            throw InputError(what, "expected finite numbers");
+        }
         if (!r) {
-            if (py::isinstance<py::str>(x) || !py::hasattr(x, "__float__")) throw InputError(what, "expected numbers");
+            if (!py::hasattr(x, "__float__")) throw InputError(what, "expected numbers");
             double d = 0.0;
             try {
                 d = x.attr("__float__")().cast<double>();

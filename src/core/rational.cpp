@@ -182,6 +182,25 @@ bool Rational::spells(std::string_view text, double value) {
     return small == target;
 }
 
+bool Rational::is_decimal(std::string_view text) {
+    std::size_t at = 0;
+    const auto digits = [&] {
+        const std::size_t from = at;
+        while (at < text.size() && text[at] >= '0' && text[at] <= '9') ++at;
+        return at - from;
+    };
+    if (at < text.size() && (text[at] == '-' || text[at] == '+')) ++at;
+    std::size_t mantissa = digits();
+    if (at < text.size() && text[at] == '.') ++at, mantissa += digits();
+    if (mantissa == 0) return false;
+    if (at < text.size() && (text[at] == 'e' || text[at] == 'E')) {
+        ++at;
+        if (at < text.size() && (text[at] == '-' || text[at] == '+')) ++at;
+        if (digits() == 0) return false;
+    }
+    return at == text.size();
+}
+
 std::optional<Rational> Rational::parse(std::string_view text) {
     std::size_t at = 0;
     bool negative = false;

@@ -157,6 +157,9 @@ TEST(Cli, QueryGravityAndForcesAtPoints) {
     EXPECT_EQ(run("query " + scene + " --wrench 0x1p3 0 0").status, 2);
     EXPECT_NE(stderr_text().find("expected a number, got \"0x1p3\""), std::string::npos) << stderr_text();
     EXPECT_EQ(modes("--wrench 8 0 0"), modes("--wrench ' 8.' 0 0"));
+    // An exponent beyond the doubles is a number too small, as in files, Python and the module.
+    EXPECT_EQ(run("query " + scene + " --wrench 1e-999999999 0 0").status, 2);
+    EXPECT_NE(stderr_text().find("\"1e-999999999\" is too small for a double"), std::string::npos) << stderr_text();
 }
 
 // A scene with too many modes to analyse (a cradle of 12,000 contacts: more than 12,000 modes

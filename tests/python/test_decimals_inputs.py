@@ -480,9 +480,13 @@ def test_python_refuses_bools_and_numbers_too_small_for_a_double():
             ml.plan_comply(analysis, "ff", gravity=gravity)
     with pytest.raises(ValueError, match="^centre: expected numbers, got a bool"):
         ml.plan_comply(analysis, "ff", ["0.5", False])
-    for tiny in (["1e-400", -1], [Fraction(1, 10 ** 400), -1]):
+    for tiny in (["1e-400", -1], [Fraction(1, 10 ** 400), -1], ["1e-999999999", -1]):  # (the last: beyond parse's exponents)
         with pytest.raises(ValueError, match="^gravity: a number is too small for a double"):
             ml.plan_comply(analysis, "ff", gravity=tiny)
+    with pytest.raises(ValueError, match="^gravity: expected finite numbers"):
+        ml.plan_comply(analysis, "ff", gravity=["1e999999999", -1])
+    with pytest.raises(ValueError, match="^gravity: expected numbers$"):
+        ml.plan_comply(analysis, "ff", gravity=["0x1p3", -1])
 
 
 def test_python_scene_with_decimals_takes_numpy_scalars_and_names_bad_values():

@@ -402,6 +402,8 @@ test('numbers as typed: decimal strings in loads and stand\'s gravity are the de
   // blanks as the CLI strips them (space, tab, CR, LF), not Unicode's no-break space
   assert.throws(() => a.query(['3', '-10', '-5\u00a0']), /wrench\[2\]: expected a finite number/);
   assert.throws(() => a.query(['1e-400', 0, 0]), /wrench\[0\]: a number is too small for a double: it would be taken as 0/);
+  assert.throws(() => a.query(['1e-999999999', 0, 0]), /wrench\[0\]: a number is too small for a double: it would be taken as 0/);
+  assert.throws(() => a.query(['1e999999999', 0, 0]), /wrench\[0\]: expected a finite number/);
   // A compliance centre on the line of force (-0.3, 1) through (0.925, 0.25) in decimal: a knife
   // edge as the CLI reads --centre; as numbers the centre is off that line and fails.
   const comply = JSON.parse(execFileSync(CLI, ['plan', 'comply', file, '--goal', 'rr', '--centre', '0.775', '0.75', '--json'], { encoding: 'utf8' }));

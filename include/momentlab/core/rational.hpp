@@ -34,6 +34,10 @@ public:
     /// ("0.1" is 1/10, "-2.943e1" is -2943/100); nullopt for other text and for a decimal
     /// exponent beyond +-100000 (such a number is 0 or infinite as a double).
     static std::optional<Rational> parse(std::string_view text);
+    /// True when the text is in parse's grammar (a sign, digits with at most one point, an
+    /// exponent), whatever its exponent: every front end's one number grammar (no hex, no
+    /// "inf"); parse refuses beyond that only exponents whose number is 0 or infinite as a double.
+    static bool is_decimal(std::string_view text);
     /// True when decimal text (as parse reads it) is exactly the finite double `value`, told
     /// without big numbers for up to 38 significant digits ("0.5", "1e3", the exact expansion
     /// "0.299999999813735485076904296875" of a dyadic double), with Dyadic numbers for longer
