@@ -28,6 +28,8 @@ def _table(value, what) -> _Table:
         a = _real(value, what)
         return _Table(a.tolist() if a.ndim else float(a), a.shape)
     if isinstance(value, (Fraction, Decimal)):
+        if isinstance(value, Decimal) and not value.is_finite():
+            raise ValueError(f"{what}: expected finite numbers")
         return _Table(value, ())
     rows = [_table(v, what) for v in _sequence(value, what)]
     if any(r.shape != rows[0].shape for r in rows):

@@ -578,6 +578,9 @@ def test_python_contacts_keep_typed_values_and_refuse_bools():
         ml.contacts([[0, True], [1, 0]], [[0, 1], [0, 1]])
     with pytest.raises(ValueError, match=r"^normals: expected shape \(2, 2\)"):
         ml.contacts([[0, 0], [1, 0]], [[0, Decimal(1)]])
+    for bad in (Decimal("NaN"), Decimal("sNaN"), Decimal("-Infinity")):
+        with pytest.raises(ValueError, match="^mu: expected finite numbers"):
+            ml.contacts([[0, 0], [1, 0]], [[0, 1], [0, 1]], mu=bad)
 
 
 def test_python_force_sets_and_cones_take_typed_numbers():
