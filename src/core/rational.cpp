@@ -220,8 +220,7 @@ std::optional<Rational> Rational::parse(std::string_view text) {
         if (at == text.size()) return std::nullopt;
         std::int64_t e = 0;
         for (; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at) {
-            if (e > kMaxDecimalExponent) return std::nullopt;
-            e = e * 10 + (text[at] - '0');
+            if (e <= kMaxDecimalExponent) e = e * 10 + (text[at] - '0');  // (beyond: held there; 0e99999999 is 0)
         }
         exponent += minus ? -e : e;
     }

@@ -290,8 +290,11 @@ public:
         if constexpr (std::is_same_v<Exception, nlohmann::detail::out_of_range>) {  // e.g. 1e999
             throw InputError(b_.next_path(), "a number beyond the doubles is out of range (expected " + std::string(kMagnitudeRange) + ")");
         }
+        malformed_ = true;
         throw InputError("$", "malformed JSON: " + library_message(e.what()));
     }
+    /// The library found the text malformed (not an error of the values it gave).
+    [[nodiscard]] bool malformed() const { return malformed_; }
 
 private:
     template <class Integer>
@@ -304,6 +307,7 @@ private:
     }
 
     Builder& b_;
+    bool malformed_ = false;
 };
 
 }  // namespace
@@ -311,8 +315,19 @@ private:
 Document read_by_library(std::string_view text, const Schema& schema) {
     Builder b(schema, text);
     LibraryEvents events(b);
-    json::sax_parse(text.begin(), text.end(), &events);
-    return b.finish();
+    // The library takes a NUL as the text's end (it would read "[1]\0x" as [1]): the text before
+    // it is read for the errors it holds, then the NUL is refused as files refuse it (io/files.cpp).
+    const std::size_t nul = text.find('\0');
+    if (nul == std::string_view::npos) {
+        json::sax_parse(text.begin(), text.end(), &events);
+        return b.finish();
+    }
+    try {
+        json::sax_parse(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), &events);
+    } catch (const InputError&) {
+        if (!events.malformed()) throw;  // an error before the NUL (a repeated key, an underflow)
+    }
+    throw InputError("$", "not a JSON document: a control byte, byte 0x00 at offset " + std::to_string(nul));
 }
 
 Document read(std::string_view text, const Schema& schema) {

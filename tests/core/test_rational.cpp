@@ -42,6 +42,14 @@ TEST(Rational, ParsesDecimalsExactly) {
     EXPECT_FALSE(Rational::parse("0.1")->is_double());
     for (const char* bad : {"", "-", ".", "1e", "0x1p3", "inf", "nan", "1.2.3", "1e+", "1 "}) {
         EXPECT_FALSE(Rational::parse(bad).has_value()) << bad;
+        EXPECT_FALSE(Rational::is_decimal(bad)) << bad;
+    }
+    // Zero with any exponent is 0; a non-zero number past +-100000 is not read (0 or infinite as
+    // a double), though it is in the grammar.
+    for (const char* zero : {"0e99999999", "0e-999999999", "-0.000e2147483647999"}) EXPECT_TRUE(Rational::parse(zero)->is_zero()) << zero;
+    for (const char* beyond : {"1e-999999999", "1e999999999"}) {
+        EXPECT_FALSE(Rational::parse(beyond).has_value()) << beyond;
+        EXPECT_TRUE(Rational::is_decimal(beyond)) << beyond;
     }
     std::mt19937_64 gen(46);
     for (int i = 0; i < 2000; ++i) {

@@ -660,3 +660,20 @@ def test_malformed_json_messages_are_one_short_ascii_line(tmp_path):
         path.write_text(bad, encoding="utf-8")
         r = subprocess.run([CLI, "modes", str(path)], capture_output=True)
         assert r.returncode == 2 and r.stderr.decode("ascii").strip() == "momentlab: " + message
+
+
+def test_zero_with_any_exponent_and_control_bytes_in_json_text():
+    """Re-check of issue 46's review: "0e-999999999" is 0 in every front end (Python refused it as
+    too small while the CLI and files read 0), and a NUL in JSON text given as a string is refused
+    as the CLI refuses it in a file (the JSON library took it as the text's end)."""
+    import momentlab as ml
+
+    analysis = ml.analyze(ml.Scene.from_json(PLAN_BLOCK % ("0.5", "0.25")))
+    assert analysis.query(["0e-999999999", -1, "-0.5"]) == analysis.query([0, -1, -0.5])
+    valid = PLAN_BLOCK % ("0.5", "0.25")
+    for text, offset in ((valid + "\x00garbage", len(valid)), (valid[:10] + "\x00" + valid[10:], 10)):
+        with pytest.raises(ValueError, match=rf"^\$: not a JSON document: a control byte, byte 0x00 at offset {offset}$"):
+            ml.Scene.from_json(text)
+    with pytest.raises(ValueError, match=r"^\$\.body\.mass: duplicate key"):  # an error before the NUL comes first
+        ml.Scene.from_json('{"body": {"mass": 1, "mass": 2}}\x00')
+

@@ -403,6 +403,8 @@ test('numbers as typed: decimal strings in loads and stand\'s gravity are the de
   assert.throws(() => a.query(['3', '-10', '-5\u00a0']), /wrench\[2\]: expected a finite number/);
   assert.throws(() => a.query(['1e-400', 0, 0]), /wrench\[0\]: a number is too small for a double: it would be taken as 0/);
   assert.throws(() => a.query(['1e-999999999', 0, 0]), /wrench\[0\]: a number is too small for a double: it would be taken as 0/);
+  assert.deepEqual(a.query(['0e-999999999', '-9.81', '-4.905']), a.query([0, -9.81, -4.905]));  // zero with any exponent
+  assert.throws(() => ml.analyze(block + '\u0000x'), /^Error: \$: not a JSON document: a control byte, byte 0x00 at offset/);
   assert.throws(() => a.query(['1e999999999', 0, 0]), /wrench\[0\]: expected a finite number/);
   // A compliance centre on the line of force (-0.3, 1) through (0.925, 0.25) in decimal: a knife
   // edge as the CLI reads --centre; as numbers the centre is off that line and fails.

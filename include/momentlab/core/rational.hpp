@@ -30,9 +30,9 @@ public:
     explicit Rational(double x) : num_(x), den_(1.0) {}
     /// num / den for a positive integer den (std::invalid_argument otherwise).
     Rational(Dyadic num, const Dyadic& den);
-    /// The exact value of decimal text in JSON's number grammar, a leading '+' also allowed
-    /// ("0.1" is 1/10, "-2.943e1" is -2943/100); nullopt for other text and for a decimal
-    /// exponent beyond +-100000 (such a number is 0 or infinite as a double).
+    /// The exact value of decimal text in JSON's number grammar, a leading '+', ".5" and "5."
+    /// also allowed ("0.1" is 1/10, "-2.943e1" is -2943/100); nullopt for other text and for a
+    /// non-zero number whose decimal exponent passes +-100000 (0 or infinite as a double).
     static std::optional<Rational> parse(std::string_view text);
     /// True when the text is in parse's grammar (a sign, digits with at most one point, an
     /// exponent), whatever its exponent: every front end's one number grammar (no hex, no
