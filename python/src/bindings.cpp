@@ -397,28 +397,21 @@ PYBIND11_MODULE(_momentlab, m) {
     m.def("force", [](const py::handle& p, const py::handle& d) {
         const Rational2 point = exact_vector_of<2>(p, "point");  // in this order: the first bad argument is named
         const Rational2 direction = nonzero(exact_vector_of<2>(d, "direction"), "direction");
-        if (is_double(point) && is_double(direction)) return force_ray(to_double(point), to_double(direction));
         return force_ray(point, direction);
     }, py::arg("point"), py::arg("direction"), "The positive multiples of one force through a point (Figure 1a).");
     m.def("line_of_force", [](const py::handle& p, const py::handle& d) {
         const Rational2 point = exact_vector_of<2>(p, "point");
         const Rational2 direction = nonzero(exact_vector_of<2>(d, "direction"), "direction");
-        if (is_double(point) && is_double(direction)) return line_of_force(to_double(point), to_double(direction));
         return line_of_force(point, direction);
     }, py::arg("point"), py::arg("direction"), "The forces along a line, both senses.");
     m.def("forces_through_point", [](const py::handle& p) {
-        const Rational2 point = exact_vector_of<2>(p, "point");
-        if (is_double(point)) return forces_through_point(to_double(point));
-        return forces_through_point(point);
+        return forces_through_point(exact_vector_of<2>(p, "point"));
     }, py::arg("point"), "Every force whose line of action passes through the point (Figure 1b).");
     m.def("friction_cone", [](const py::handle& p, const py::handle& n, const py::handle& mu) {
         const Rational exact_mu = exact_vector_of<1>(py::make_tuple(mu), "mu")[0];
         if (exact_mu.sign() == Sign::Negative) throw InputError("mu", "expected a finite mu >= 0");
         const Rational2 point = exact_vector_of<2>(p, "point");
         const Rational2 normal = nonzero(exact_vector_of<2>(n, "normal"), "normal");
-        if (is_double(point) && is_double(normal) && is_double(std::span<const Rational>(&exact_mu, 1))) {
-            return friction_cone(to_double(point), to_double(normal), exact_mu.to_double());
-        }
         return friction_cone(point, normal, exact_mu);
     }, py::arg("point"), py::arg("normal"), py::arg("mu"), "The Coulomb cone of a contact (Figure 1c).");
     m.def("closure", [](const Scene& scene, const py::handle& reference, std::optional<double> length) {

@@ -140,11 +140,13 @@ Cone pure_moments(int sign) {
 }
 
 Cone force_ray(const Rational2& point, const Rational2& direction) {
+    if (is_double(point) && is_double(direction)) return force_ray(to_double(point), to_double(direction));
     const ExactVector g[] = {cleared_force(cleared_point(point), cleared_direction(direction))};
     return Cone::from_generators(g);
 }
 
 Cone line_of_force(const Rational2& point, const Rational2& direction) {
+    if (is_double(point) && is_double(direction)) return line_of_force(to_double(point), to_double(direction));
     const ExactVector w = cleared_force(cleared_point(point), cleared_direction(direction));
     const ExactVector g[] = {w, w.negated()};
     return Cone::from_generators(g);
@@ -152,6 +154,7 @@ Cone line_of_force(const Rational2& point, const Rational2& direction) {
 
 // All forces through the point P / d: (d, 0, -P.y), (0, d, P.x) and their negatives.
 Cone forces_through_point(const Rational2& point) {
+    if (is_double(point)) return forces_through_point(to_double(point));
     const ClearedPoint at = cleared_point(point);
     const Dyadic zero;
     const ExactVector ex = ExactVector::from_exact({at.d, zero, -at.p[1]});
@@ -162,6 +165,7 @@ Cone forces_through_point(const Rational2& point) {
 
 // The edges b N +- a t at P / d, each times d (friction_direction with a denominator).
 Cone friction_cone(const Rational2& point, const Rational2& normal, const Rational& mu) {
+    if (is_double(point) && is_double(normal) && mu.is_double()) return friction_cone(to_double(point), to_double(normal), mu.to_double());
     const ClearedPoint at = cleared_point(point);
     const Exact2 n = cleared_direction(normal);
     Dyadic b;

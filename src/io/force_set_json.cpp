@@ -72,27 +72,23 @@ Cone read_set(const Value& s, const Path& path, InputWarnings* w, int depth) {
     if (type == "wrenches") known_fields(s, path, {"type", "generators"}, w);
     if (type == "halfspaces") known_fields(s, path, {"type", "normals"}, w);
     if (type == "sum" || type == "intersection") known_fields(s, path, {"type", "sets"}, w);
-    // Each number as the decimal it spells; the double builders when every value is a double.
+    // Each number as the decimal it spells (the builders take the doubles' path when every value
+    // is a double); the doubles read first for the checks and their messages.
     if (type == "force" || type == "line") {
-        const Vec2 point = vec2(field(s, path, "point"), Path(path, "point"));
-        const Vec2 direction = nonzero2(s, path, "direction");
+        (void)vec2(field(s, path, "point"), Path(path, "point"));
+        (void)nonzero2(s, path, "direction");
         const Rational2 p = exact2(s, path, "point"), d = exact2(s, path, "direction");
-        if (!is_double(p) || !is_double(d)) return type == "force" ? force_ray(p, d) : line_of_force(p, d);
-        return type == "force" ? force_ray(point, direction) : line_of_force(point, direction);
+        return type == "force" ? force_ray(p, d) : line_of_force(p, d);
     }
     if (type == "point") {
-        const Vec2 point = vec2(field(s, path, "point"), Path(path, "point"));
-        const Rational2 p = exact2(s, path, "point");
-        return is_double(p) ? forces_through_point(point) : forces_through_point(p);
+        (void)vec2(field(s, path, "point"), Path(path, "point"));
+        return forces_through_point(exact2(s, path, "point"));
     }
     if (type == "friction_cone") {
-        const double mu = nonnegative(field(s, path, "mu"), Path(path, "mu"), "mu");
-        const Vec2 point = vec2(field(s, path, "point"), Path(path, "point"));
-        const Vec2 normal = nonzero2(s, path, "normal");
-        const Rational2 p = exact2(s, path, "point"), n = exact2(s, path, "normal");
-        const Rational m = exact_number(field(s, path, "mu"));
-        if (!is_double(p) || !is_double(n) || !m.is_double()) return friction_cone(p, n, m);
-        return friction_cone(point, normal, mu);
+        (void)nonnegative(field(s, path, "mu"), Path(path, "mu"), "mu");
+        (void)vec2(field(s, path, "point"), Path(path, "point"));
+        (void)nonzero2(s, path, "normal");
+        return friction_cone(exact2(s, path, "point"), exact2(s, path, "normal"), exact_number(field(s, path, "mu")));
     }
     if (type == "moment") {
         const double sign = number(field(s, path, "sign"), Path(path, "sign"));

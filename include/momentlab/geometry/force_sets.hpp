@@ -25,8 +25,9 @@ namespace momentlab {
 
 /// The same three sets for an exact point and direction (decimals as typed: 0.1 is 1/10,
 /// docs/design.md, "Numbers as typed"): each generator times a positive number, its
-/// denominators cleared, so the same cone with Dyadic coordinates. Precondition: the direction
-/// is non-zero.
+/// denominators cleared, so the same cone with Dyadic coordinates; when every value is a double,
+/// the builder of doubles (its generators as it makes them). Precondition: the direction is
+/// non-zero.
 [[nodiscard]] Cone force_ray(const Rational2& point, const Rational2& direction);
 [[nodiscard]] Cone line_of_force(const Rational2& point, const Rational2& direction);
 [[nodiscard]] Cone forces_through_point(const Rational2& point);
