@@ -38,6 +38,67 @@ bool boxes_meet(const AxisBox& a, const AxisBox& b) {
 // tests decide).
 double box_margin(double distance) { return distance * 2.0 + 1e-9; }
 
+// The box of exact points: of their doubles, grown by their rounding too.
+AxisBox box_of(const ExactPolygon& p, double margin) {
+    const Polygon r = rounded(p);
+    double largest = 0.0;
+    for (const Vec2& v : r) largest = std::max(largest, v.cwiseAbs().maxCoeff());
+    return box_of(r, margin + 1e-9 * largest);
+}
+
+// The contacts of a polygon with others: checked (find_contacts) for doubles; for exact points,
+// checked by the reader (check_assembly).
+std::vector<Contact> contacts_between(const Polygon& a, const std::vector<Polygon>& others, const ContactFinding& options,
+                                      double, std::vector<ContactOrigin>* where) {
+    return find_contacts(a, others, options, where);
+}
+std::vector<Contact> contacts_between(const ExactPolygon& a, const std::vector<ExactPolygon>& others,
+                                      const ContactFinding& options, const Dyadic& distance, std::vector<ContactOrigin>* where) {
+    return detail::find_contacts_of_simple(a, others, options, distance, where);
+}
+
+// find_assembly_contacts on the outlines (the bodies' n, then the obstacles'; doubles, or exact
+// points with an exact distance): every polygon found simple and no two overlapping by the caller.
+template <class P, class Distance>
+std::vector<AssemblyContact> assembly_contacts(const std::vector<std::vector<P>>& outlines, std::size_t n,
+                                               const ContactFinding& options, const Distance& distance,
+                                               std::vector<ContactOrigin>* origins) {
+    std::vector<AssemblyContact> found;
+    const double margin = box_margin(options.distance);
+    std::vector<AxisBox> boxes;
+    for (const auto& p : outlines) boxes.push_back(p.empty() ? AxisBox{} : box_of(p, margin));
+    std::vector<ContactOrigin> where;
+    // The contacts of body a with `others` (the obstacles at `index`, or body b alone).
+    const auto add = [&](std::size_t a, std::size_t b, const std::vector<std::vector<P>>& others, const std::vector<std::size_t>& index) {
+        where.clear();
+        for (Contact& c : contacts_between(outlines[a], others, options, distance, &where)) {
+            found.push_back({a + 1, b, std::move(c)});
+        }
+        if (!origins) return;
+        for (ContactOrigin o : where) {
+            o.obstacle = index[o.obstacle];
+            origins->push_back(o);
+        }
+    };
+    for (std::size_t a = 0; a < n; ++a) {
+        if (outlines[a].empty()) continue;
+        std::vector<std::vector<P>> near;
+        std::vector<std::size_t> index;
+        for (std::size_t k = 0; n + k < outlines.size(); ++k) {
+            if (boxes_meet(boxes[a], boxes[n + k])) {
+                near.push_back(outlines[n + k]);
+                index.push_back(k);
+            }
+        }
+        if (!near.empty()) add(a, 0, near, index);
+        for (std::size_t b = 0; b < a; ++b) {
+            if (outlines[b].empty() || !boxes_meet(boxes[a], boxes[b])) continue;
+            add(a, b + 1, {outlines[b]}, {0});
+        }
+    }
+    return found;
+}
+
 }  // namespace
 
 const BodyValues* AssemblyBody::exact_values() const {
@@ -89,41 +150,47 @@ Assembly assembly_of(const Scene& scene) {
 std::vector<AssemblyContact> find_assembly_contacts(const std::vector<AssemblyBody>& bodies,
                                                     const std::vector<Polygon>& obstacles, const ContactFinding& options,
                                                     std::vector<ContactOrigin>* origins) {
-    std::vector<AssemblyContact> found;
-    const double margin = box_margin(options.distance);
-    std::vector<AxisBox> boxes;
-    for (const AssemblyBody& b : bodies) boxes.push_back(b.polygon.empty() ? AxisBox{} : box_of(b.polygon, margin));
-    std::vector<AxisBox> obstacle_boxes;
-    for (const Polygon& o : obstacles) obstacle_boxes.push_back(box_of(o, margin));
-    std::vector<ContactOrigin> where;
-    // The contacts of body a with `others` (the obstacles at `index`, or body b alone).
-    const auto add = [&](std::size_t a, std::size_t b, const std::vector<Polygon>& others, const std::vector<std::size_t>& index) {
-        where.clear();
-        for (Contact& c : find_contacts(bodies[a].polygon, others, options, &where)) found.push_back({a + 1, b, std::move(c)});
-        if (!origins) return;
-        for (ContactOrigin o : where) {
-            o.obstacle = index[o.obstacle];
-            origins->push_back(o);
-        }
-    };
-    for (std::size_t a = 0; a < bodies.size(); ++a) {
-        if (bodies[a].polygon.empty()) continue;
-        std::vector<Polygon> near;
-        std::vector<std::size_t> index;
-        for (std::size_t k = 0; k < obstacles.size(); ++k) {
-            if (boxes_meet(boxes[a], obstacle_boxes[k])) {
-                near.push_back(obstacles[k]);
-                index.push_back(k);
+    std::vector<Polygon> outlines;
+    for (const AssemblyBody& b : bodies) outlines.push_back(b.polygon);
+    outlines.insert(outlines.end(), obstacles.begin(), obstacles.end());
+    return assembly_contacts(outlines, bodies.size(), options, options.distance, origins);
+}
+
+std::vector<AssemblyContact> detail::find_assembly_contacts_of_simple(const std::vector<ExactPolygon>& outlines, std::size_t n,
+                                                                      const ContactFinding& options, const Dyadic& distance,
+                                                                      std::vector<ContactOrigin>* origins) {
+    return assembly_contacts(outlines, n, options, distance, origins);
+}
+
+namespace {
+
+// Refuses the first pair of overlapping outlines (the bodies' n, then the obstacles').
+template <class P>
+void overlaps(const std::vector<std::vector<P>>& outlines, std::size_t n, double margin) {
+    std::vector<AxisBox> boxes(outlines.size());
+    for (std::size_t k = 0; k < outlines.size(); ++k) {
+        if (!outlines[k].empty()) boxes[k] = box_of(outlines[k], margin);
+    }
+    for (std::size_t a = 0; a < n; ++a) {
+        const std::vector<P>& pa = outlines[a];
+        if (pa.empty()) continue;
+        for (std::size_t k = 0; n + k < outlines.size(); ++k) {
+            if (boxes_meet(boxes[a], boxes[n + k]) && polygons_overlap(pa, outlines[n + k])) {
+                throw InputError(at("$.bodies", a) + ".polygon", "overlaps obstacle " + std::to_string(k) +
+                                                                     " (bodies may touch the obstacles, not overlap them)");
             }
         }
-        if (!near.empty()) add(a, 0, near, index);
         for (std::size_t b = 0; b < a; ++b) {
-            if (bodies[b].polygon.empty() || !boxes_meet(boxes[a], boxes[b])) continue;
-            add(a, b + 1, {bodies[b].polygon}, {0});
+            const std::vector<P>& pb = outlines[b];
+            if (!pb.empty() && boxes_meet(boxes[a], boxes[b]) && polygons_overlap(pa, pb)) {
+                throw InputError(at("$.bodies", a) + ".polygon", "overlaps the polygon of body " + std::to_string(b + 1) +
+                                                                     " (bodies may touch, not overlap)");
+            }
         }
     }
-    return found;
 }
+
+}  // namespace
 
 void check_assembly(const Assembly& assembly) {
     const std::size_t n = assembly.bodies.size();
@@ -176,31 +243,18 @@ void check_assembly(const Assembly& assembly) {
     std::vector<Polygon> outlines;
     for (const AssemblyBody& b : assembly.bodies) outlines.push_back(b.polygon);
     outlines.insert(outlines.end(), assembly.obstacles.begin(), assembly.obstacles.end());
-    double scale = 1.0;
-    if (const auto* exact = assembly.exact_polygons_in_force()) {
-        if (std::optional<std::vector<Polygon>> scaled = scaled_polygons(*exact, scale)) outlines = std::move(*scaled);
-    }
-    const double margin = box_margin(distance * scale);
-    std::vector<AxisBox> boxes(outlines.size());
-    for (std::size_t k = 0; k < outlines.size(); ++k) {
-        if (!outlines[k].empty()) boxes[k] = box_of(outlines[k], margin);
-    }
-    for (std::size_t a = 0; a < n; ++a) {
-        const Polygon& pa = outlines[a];
-        if (pa.empty()) continue;
-        for (std::size_t k = 0; k < assembly.obstacles.size(); ++k) {
-            if (boxes_meet(boxes[a], boxes[n + k]) && polygons_overlap(pa, outlines[n + k])) {
-                throw InputError(at("$.bodies", a) + ".polygon", "overlaps obstacle " + std::to_string(k) +
-                                                                     " (bodies may touch the obstacles, not overlap them)");
-            }
+    std::optional<ScaledPolygons> scaled;
+    if (const auto* exact = assembly.exact_polygons_in_force()) scaled = scaled_polygons(*exact);
+    if (scaled && scaled->exact.empty()) outlines = scaled->doubles;
+    if (scaled && !scaled->exact.empty()) {
+        for (std::size_t k = 0; k < scaled->exact.size(); ++k) {  // simple as typed too (read as doubles)
+            if (scaled->exact[k].empty()) continue;
+            const std::string problem = polygon_problem(scaled->exact[k]);
+            if (!problem.empty()) throw InputError(k < n ? at("$.bodies", k) + ".polygon" : at("$.obstacles", k - n) + ".polygon", problem);
         }
-        for (std::size_t b = 0; b < a; ++b) {
-            const Polygon& pb = outlines[b];
-            if (!pb.empty() && boxes_meet(boxes[a], boxes[b]) && polygons_overlap(pa, pb)) {
-                throw InputError(at("$.bodies", a) + ".polygon", "overlaps the polygon of body " + std::to_string(b + 1) +
-                                                                     " (bodies may touch, not overlap)");
-            }
-        }
+        overlaps(scaled->exact, n, box_margin(scaled->rounded_distance(distance)));
+    } else {
+        overlaps(outlines, n, box_margin(distance * (scaled ? scaled->scale.to_double() : 1.0)));
     }
 }
 

@@ -109,21 +109,28 @@ std::shared_ptr<const std::vector<std::vector<Rational2>>> exact_polygons(const 
 }
 
 // The contacts found from the polygons, as typed (contact_as_typed): on the polygons scaled to
-// exact doubles when they are decimals (scaled_polygons), else on their doubles.
+// integers when they are decimals (scaled_polygons: exact doubles, or exact points beyond them),
+// else on their doubles.
 std::vector<AssemblyContact> found_contacts(const Assembly& a, ContactFinding finding, const Rational& mu) {
     const std::size_t n = a.bodies.size();
-    double scale = 1.0;
-    std::optional<std::vector<Polygon>> scaled;
-    if (a.exact_polygons) scaled = scaled_polygons(*a.exact_polygons, scale);
-    std::vector<AssemblyBody> bodies = a.bodies;
-    std::vector<Polygon> obstacles = a.obstacles;
-    if (scaled) {
-        for (std::size_t k = 0; k < n; ++k) bodies[k].polygon = (*scaled)[k];
-        obstacles.assign(scaled->begin() + static_cast<std::ptrdiff_t>(n), scaled->end());
-        finding.distance *= scale;
-    }
+    std::optional<ScaledPolygons> scaled;
+    if (a.exact_polygons) scaled = scaled_polygons(*a.exact_polygons);
     std::vector<ContactOrigin> origins;
-    std::vector<AssemblyContact> found = find_assembly_contacts(bodies, obstacles, finding, &origins);
+    std::vector<AssemblyContact> found;
+    if (scaled && !scaled->exact.empty()) {  // decimals beyond the doubles when scaled: exact points
+        ContactFinding rounded = finding;
+        rounded.distance = scaled->rounded_distance(finding.distance);
+        found = detail::find_assembly_contacts_of_simple(scaled->exact, n, rounded, scaled->distance(finding.distance), &origins);
+    } else {
+        std::vector<AssemblyBody> bodies = a.bodies;
+        std::vector<Polygon> obstacles = a.obstacles;
+        if (scaled) {
+            for (std::size_t k = 0; k < n; ++k) bodies[k].polygon = scaled->doubles[k];
+            obstacles.assign(scaled->doubles.begin() + static_cast<std::ptrdiff_t>(n), scaled->doubles.end());
+            finding.distance = scaled->rounded_distance(finding.distance);
+        }
+        found = find_assembly_contacts(bodies, obstacles, finding, &origins);
+    }
     // The polygons as typed (bodies' then obstacles'; their doubles when every vertex is one).
     std::vector<std::vector<Rational2>> doubles;
     if (!a.exact_polygons) {

@@ -1,6 +1,7 @@
 #include "momentlab/core/rational.hpp"
 #include "momentlab/core/rounding.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -9,6 +10,9 @@
 #include <limits>
 #include <numeric>
 #include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace momentlab {
 namespace {
@@ -40,6 +44,55 @@ Dyadic power(Dyadic base, std::int64_t k) {
     return out;
 }
 
+// The exact decimal digits of the finite double |x| != 0, without trailing zeros, into `out`
+// (room for 800), and the power of ten of the last: |x| = digits 10^exponent. With x = M 2^k (M
+// odd), that is the integer M 2^k for k >= 0 and M 5^-k 10^k for k < 0 (at most 767 digits),
+// built in base-10^9 limbs multiplied by 2^30 or 5^13 at a time (a limb times either, plus a
+// carry, stays below 2^64). Returns the number of digits.
+std::size_t exact_digits(double x, char* out, std::int64_t& exponent) {
+    constexpr std::uint64_t kBase = 1000000000;
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &x, sizeof bits);
+    const auto biased = static_cast<int>((bits >> 52) & 0x7ff);
+    std::uint64_t m = bits & ((std::uint64_t{1} << 52) - 1);
+    if (biased != 0) m |= std::uint64_t{1} << 52;
+    std::int64_t k = (biased != 0 ? biased : 1) - 1075;
+    const int twos = std::countr_zero(m);
+    m >>= twos;
+    k += twos;
+    std::array<std::uint32_t, 90> limbs{};  // least significant first
+    std::size_t n = 0;
+    for (; m != 0; m /= kBase) limbs[n++] = static_cast<std::uint32_t>(m % kBase);
+    const auto times = [&](std::uint64_t factor) {
+        std::uint64_t carry = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::uint64_t product = limbs[i] * factor + carry;
+            limbs[i] = static_cast<std::uint32_t>(product % kBase);
+            carry = product / kBase;
+        }
+        for (; carry != 0; carry /= kBase) limbs[n++] = static_cast<std::uint32_t>(carry % kBase);
+    };
+    for (std::int64_t left = k >= 0 ? k : -k; left > 0;) {
+        const std::int64_t step = std::min<std::int64_t>(left, k >= 0 ? 30 : 13);
+        std::uint64_t factor = 1;
+        for (std::int64_t i = 0; i < step; ++i) factor *= k >= 0 ? 2 : 5;
+        times(factor);
+        left -= step;
+    }
+    std::size_t length = 0;
+    for (std::size_t i = n; i-- > 0;) {
+        char limb[9];
+        std::uint32_t v = limbs[i];
+        for (int d = 8; d >= 0; --d, v /= 10) limb[d] = static_cast<char>('0' + v % 10);
+        int from = 0;
+        if (i + 1 == n) while (from < 8 && limb[from] == '0') ++from;  // the leading limb unpadded
+        for (int d = from; d < 9; ++d) out[length++] = limb[d];
+    }
+    exponent = k >= 0 ? 0 : k;
+    while (out[length - 1] == '0') --length, ++exponent;
+    return length;
+}
+
 // The odd integer x as a 64-bit word, when it is one.
 std::optional<std::uint64_t> word(const Dyadic& x) {
     const auto limbs = x.limbs();
@@ -62,7 +115,7 @@ Rational::Rational(Dyadic num, const Dyadic& den) {
 }
 
 bool Rational::spells(std::string_view text, double value) {
-    using U = unsigned __int128;
+    __extension__ typedef unsigned __int128 U;
     if (!std::isfinite(value)) return false;
     const char* p = text.data();
     const char* const end = p + text.size();
@@ -114,15 +167,15 @@ bool Rational::spells(std::string_view text, double value) {
         e += int_end - b;
     }
     if ((b - a) + (f - c) > 38) {
-        // Longer: in Dyadic numbers. A double's exact text has at most 767 significant digits
-        // and |e| <= 1074 + 767; beyond, it is not one.
-        if ((b - a) + (f - c) > 800 || e > 400 || e < -2000 || value == 0.0 || (value < 0.0) != negative) return false;
-        std::string all(a, b);
-        all.append(c, f);
-        const Dyadic d = integer_of(all), v(std::fabs(value));
-        const Dyadic five_power = power(Dyadic::from_integer(5), e >= 0 ? e : -e);
-        // D 10^e = v: for e >= 0, D 5^e 2^e = v; for e < 0, D = v 5^-e 2^-e.
-        return e >= 0 ? compare((d * five_power).scaled(e), v) == 0 : compare(d, (v * five_power).scaled(-e)) == 0;
+        // Longer: against the double's own exact digits. A double's exact text has at most 767
+        // significant digits; beyond, the text is not one.
+        if ((b - a) + (f - c) > 800 || value == 0.0 || (value < 0.0) != negative) return false;
+        char exact[800];
+        std::int64_t exponent = 0;
+        const std::size_t length = exact_digits(value, exact, exponent);
+        const auto whole = static_cast<std::size_t>(b - a);
+        return exponent == e && length == whole + static_cast<std::size_t>(f - c) && std::equal(a, b, exact) &&
+               std::equal(c, f, exact + whole);
     }
     U digits = 0;
     std::uint64_t chunk = 0;  // fewer than 19 digits, folded into D when full
@@ -157,10 +210,10 @@ bool Rational::spells(std::string_view text, double value) {
     // D_odd 5^e = M: for e >= 0, D_odd 5^e reaches M; for e < 0, M 5^-e reaches D_odd (in steps
     // of at most 5^27 < 2^63, each checked against its target first: nothing overflows).
     static constexpr auto kFives = [] {
-        std::array<std::uint64_t, 28> f{};
-        f[0] = 1;
-        for (std::size_t i = 1; i < f.size(); ++i) f[i] = f[i - 1] * 5;
-        return f;
+        std::array<std::uint64_t, 28> fives{};
+        fives[0] = 1;
+        for (std::size_t i = 1; i < fives.size(); ++i) fives[i] = fives[i - 1] * 5;
+        return fives;
     }();
     const std::int64_t fives = e >= 0 ? e : -e;
     if ((digits >> 64) == 0) {  // (most texts: 64-bit products, checked for overflow)

@@ -18,13 +18,15 @@ namespace {
 Vec3 lift(const Vec2& p) { return Vec3(p.x(), p.y(), 1.0); }
 
 // c lies on the closed segment ab, given that a, b, c are collinear (exact comparisons).
-bool within(const Vec2& a, const Vec2& b, const Vec2& c) {
+template <class P>
+bool within(const P& a, const P& b, const P& c) {
     return std::min(a.x(), b.x()) <= c.x() && c.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= c.y() &&
            c.y() <= std::max(a.y(), b.y());
 }
 
 // The closed segments pq and rs share a point.
-bool segments_meet(const Vec2& p, const Vec2& q, const Vec2& r, const Vec2& s) {
+template <class P>
+bool segments_meet(const P& p, const P& q, const P& r, const P& s) {
     const Sign o1 = orient2d(p, q, r), o2 = orient2d(p, q, s), o3 = orient2d(r, s, p), o4 = orient2d(r, s, q);
     if (o1 != Sign::Zero && o2 != Sign::Zero && o3 != Sign::Zero && o4 != Sign::Zero) return o1 != o2 && o3 != o4;
     return (o1 == Sign::Zero && within(p, q, r)) || (o2 == Sign::Zero && within(p, q, s)) ||
@@ -71,21 +73,29 @@ Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
     return det_sign(lift(a), lift(b), lift(c));
 }
 
-bool is_counter_clockwise(std::span<const Vec2> p) {
+Sign orient2d(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
+    return ((b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x())).sign();
+}
+
+namespace {
+
+template <class P>
+bool turns_counter_clockwise(std::span<const P> p) {
     const std::size_t n = p.size();
-    const auto leftmost = static_cast<std::size_t>(std::min_element(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
+    const auto leftmost = static_cast<std::size_t>(std::min_element(p.begin(), p.end(), [](const P& a, const P& b) {
                                                      return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
                                                  }) - p.begin());
     return orient2d(p[(leftmost + n - 1) % n], p[leftmost], p[(leftmost + 1) % n]) == Sign::Positive;
 }
 
-bool in_closed_polygon(std::span<const Vec2> polygon, const Vec2& p) {
+template <class P>
+bool in_closed(std::span<const P> polygon, const P& p) {
     // Winding number with exact orientations (Sunday's crossing rule); the boundary first.
     int winding = 0;
     const std::size_t n = polygon.size();
     for (std::size_t i = 0; i < n; ++i) {
-        const Vec2& a = polygon[i];
-        const Vec2& b = polygon[(i + 1) % n];
+        const P& a = polygon[i];
+        const P& b = polygon[(i + 1) % n];
         const Sign side = orient2d(a, b, p);
         if (side == Sign::Zero && within(a, b, p)) return true;
         if (a.y() <= p.y()) {
@@ -97,25 +107,27 @@ bool in_closed_polygon(std::span<const Vec2> polygon, const Vec2& p) {
     return winding != 0;
 }
 
-namespace {
-
-bool lex_less(const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); }
+template <class P>
+bool lex_less(const P& a, const P& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); }
 
 // An edge of the sweep: its lexicographically smaller end `l`, larger end `r`, and its number.
+template <class P>
 struct SweepEdge {
-    Vec2 l, r;
+    P l, r;
     std::size_t index = 0;
 };
 
 // Where q lies from the edge e: +1 above its line (a vertical edge: above its top), -1 below, 0 on.
-int side(const SweepEdge& e, const Vec2& q) {
+template <class P>
+int side(const SweepEdge<P>& e, const P& q) {
     if (e.l.x() == e.r.x()) return q.y() > e.r.y() ? 1 : (q.y() < e.l.y() ? -1 : 0);
     const Sign s = orient2d(e.l, e.r, q);
     return s == Sign::Positive ? 1 : (s == Sign::Negative ? -1 : 0);
 }
 
 // +1 when b rises more steeply than a (directions l -> r, all in x >= 0), -1 less, 0 parallel. Exact.
-int steeper(const SweepEdge& a, const SweepEdge& b) {
+template <class P>
+int steeper(const SweepEdge<P>& a, const SweepEdge<P>& b) {
     using D = Dyadic;
     const D c = (D(a.r.x()) - D(a.l.x())) * (D(b.r.y()) - D(b.l.y())) - (D(a.r.y()) - D(a.l.y())) * (D(b.r.x()) - D(b.l.x()));
     return c.sign() == Sign::Positive ? 1 : (c.sign() == Sign::Negative ? -1 : 0);
@@ -123,11 +135,12 @@ int steeper(const SweepEdge& a, const SweepEdge& b) {
 
 // a below b at the sweep line, judged where the later of them starts: while no two edges have
 // met, the order of the edges crossing the sweep line does not change between events.
-bool below(const SweepEdge& a, const SweepEdge& b) {
+template <class P>
+bool below(const SweepEdge<P>& a, const SweepEdge<P>& b) {
     if (a.index == b.index) return false;
     const bool b_later = !lex_less(b.l, a.l);
-    const SweepEdge& first = b_later ? a : b;
-    const SweepEdge& later = b_later ? b : a;
+    const SweepEdge<P>& first = b_later ? a : b;
+    const SweepEdge<P>& later = b_later ? b : a;
     int up = side(first, later.l);  // +1: the later edge lies above the first
     if (up == 0) up = steeper(first, later);
     if (up == 0) up = later.index > first.index ? 1 : -1;  // collinear: they overlap (and meet)
@@ -139,21 +152,22 @@ bool below(const SweepEdge& a, const SweepEdge& b) {
 // neighbours along the sweep line when it enters and when it leaves, so the first meeting is
 // seen before the order could go wrong. Needs distinct vertices, and their numbers in sweep order
 // (lex_less). O(n log n), exact.
-std::optional<std::pair<std::size_t, std::size_t>> meeting_edges(std::span<const Vec2> p, const std::vector<std::size_t>& order) {
+template <class P>
+std::optional<std::pair<std::size_t, std::size_t>> meeting_edges(std::span<const P> p, const std::vector<std::size_t>& order) {
     const std::size_t n = p.size();
-    std::vector<SweepEdge> edges(n);
+    std::vector<SweepEdge<P>> edges(n);
     for (std::size_t i = 0; i < n; ++i) {
-        const Vec2 &a = p[i], &b = p[(i + 1) % n];
-        edges[i] = lex_less(a, b) ? SweepEdge{a, b, i} : SweepEdge{b, a, i};
+        const P &a = p[i], &b = p[(i + 1) % n];
+        edges[i] = lex_less(a, b) ? SweepEdge<P>{a, b, i} : SweepEdge<P>{b, a, i};
     }
     const auto adjacent = [n](std::size_t i, std::size_t j) { return (i + 1) % n == j || (j + 1) % n == i; };
     const auto cmp = [&](std::size_t i, std::size_t j) { return below(edges[i], edges[j]); };
     std::set<std::size_t, decltype(cmp)> status(cmp);
-    std::vector<std::set<std::size_t, decltype(cmp)>::iterator> where(n, status.end());
+    std::vector<typename std::set<std::size_t, decltype(cmp)>::iterator> where(n, status.end());
     std::optional<std::pair<std::size_t, std::size_t>> found;
     const auto check = [&](std::size_t i, std::size_t j) {
         if (found || adjacent(i, j)) return;
-        const SweepEdge &a = edges[i], &b = edges[j];
+        const SweepEdge<P> &a = edges[i], &b = edges[j];
         if (segments_meet(a.l, a.r, b.l, b.r)) found = std::pair(std::min(i, j), std::max(i, j));
     };
     for (std::size_t v : order) {
@@ -177,13 +191,15 @@ std::optional<std::pair<std::size_t, std::size_t>> meeting_edges(std::span<const
     return found;
 }
 
-}  // namespace
+bool finite(const Vec2& p) { return p.allFinite(); }
+bool finite(const ExactPoint&) { return true; }
 
-std::string polygon_problem(std::span<const Vec2> polygon) {
+template <class P>
+std::string problem_of(std::span<const P> polygon) {
     const std::size_t n = polygon.size();
     if (n < 3) return "expected a polygon of at least 3 vertices, got " + std::to_string(n);
     for (std::size_t i = 0; i < n; ++i) {
-        if (!polygon[i].allFinite()) return "vertex " + std::to_string(i) + " is not finite";
+        if (!finite(polygon[i])) return "vertex " + std::to_string(i) + " is not finite";
     }
     for (std::size_t i = 0; i < n; ++i) {
         if (polygon[i] == polygon[(i + 1) % n]) {
@@ -193,7 +209,7 @@ std::string polygon_problem(std::span<const Vec2> polygon) {
     }
     for (std::size_t i = 0; i < n; ++i) {
         // The next edge b c may only touch this one at b: not fold back along it.
-        const Vec2 &a = polygon[i], &b = polygon[(i + 1) % n], &c = polygon[(i + 2) % n];
+        const P &a = polygon[i], &b = polygon[(i + 1) % n], &c = polygon[(i + 2) % n];
         if (orient2d(a, b, c) == Sign::Zero && (within(a, b, c) || within(b, c, a))) {
             return "edges " + std::to_string(i) + " and " + std::to_string((i + 1) % n) +
                    " fold back along each other (expected a simple polygon of non-zero area)";
@@ -204,16 +220,16 @@ std::string polygon_problem(std::span<const Vec2> polygon) {
                " cross or touch (expected a simple polygon, either orientation)";
     };
     // Two vertices at one point (not consecutive: checked above): the edges leaving them touch.
-    // Sorted as (x, y, number) records rather than numbers looked up in the polygon: the
+    // Sorted as (point, number) records rather than numbers looked up in the polygon: the
     // comparisons read neighbouring memory.
     struct Key {
-        double x, y;
+        P p;
         std::size_t i;
     };
     std::vector<Key> keys(n);
-    for (std::size_t i = 0; i < n; ++i) keys[i] = {polygon[i].x(), polygon[i].y(), i};
+    for (std::size_t i = 0; i < n; ++i) keys[i] = {polygon[i], i};
     std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
-        return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.i < b.i)));
+        return a.p.x() < b.p.x() || (a.p.x() == b.p.x() && (a.p.y() < b.p.y() || (a.p.y() == b.p.y() && a.i < b.i)));
     });
     std::vector<std::size_t> order(n);
     for (std::size_t k = 0; k < n; ++k) order[k] = keys[k].i;
@@ -225,15 +241,19 @@ std::string polygon_problem(std::span<const Vec2> polygon) {
     return {};
 }
 
-bool within_distance_of_segment(const Vec2& p, const Vec2& a, const Vec2& b, double distance) {
-    // The float distance errs by a few units in the last place of the coordinates involved;
-    // far beyond that margin the answer is certain.
-    const double scale = p.cwiseAbs().maxCoeff() + a.cwiseAbs().maxCoeff() + b.cwiseAbs().maxCoeff();
-    if (distance_to_segment(a, b, p) > 2.0 * distance + 1e-6 * scale) return false;
+// p within `distance` (exact; its double `rounded_distance`) of the closed segment ab.
+template <class P, class Distance>
+bool within_distance(const P& p, const P& a, const P& b, const Distance& distance, double rounded_distance) {
+    // The float distance errs by a few units in the last place of the coordinates involved (and
+    // of their rounding, for exact points); far beyond that margin the answer is certain.
+    const Vec2 rp = rounded(p), ra = rounded(a), rb = rounded(b);
+    const double scale = rp.cwiseAbs().maxCoeff() + ra.cwiseAbs().maxCoeff() + rb.cwiseAbs().maxCoeff();
+    if (distance_to_segment(ra, rb, rp) > 2.0 * rounded_distance + 1e-6 * scale) return false;
     using D = Dyadic;
     const D ux = D(p.x()) - D(a.x()), uy = D(p.y()) - D(a.y());
     const D vx = D(b.x()) - D(a.x()), vy = D(b.y()) - D(a.y());
-    const D d2 = D(distance) * D(distance);
+    const D exact_distance(distance);
+    const D d2 = exact_distance * exact_distance;
     const D uu = ux * ux + uy * uy, uv = ux * vx + uy * vy, vv = vx * vx + vy * vy;
     if (uv.sign() != Sign::Positive || vv.is_zero()) return compare(uu, d2) <= 0;  // closest to a
     if (compare(uv, vv) >= 0) {                                                      // closest to b
@@ -244,11 +264,43 @@ bool within_distance_of_segment(const Vec2& p, const Vec2& a, const Vec2& b, dou
     return compare(cross * cross, d2 * vv) <= 0;
 }
 
-bool within_distance_of_boundary(std::span<const Vec2> polygon, const Vec2& p, double distance) {
+template <class P, class Distance>
+bool within_distance_of_outline(std::span<const P> polygon, const P& p, const Distance& distance, double rounded_distance) {
     for (std::size_t i = 0; i < polygon.size(); ++i) {
-        if (within_distance_of_segment(p, polygon[i], polygon[(i + 1) % polygon.size()], distance)) return true;
+        if (within_distance(p, polygon[i], polygon[(i + 1) % polygon.size()], distance, rounded_distance)) return true;
     }
     return false;
+}
+
+}  // namespace
+
+std::vector<Vec2> rounded(std::span<const ExactPoint> polygon) {
+    std::vector<Vec2> out;
+    out.reserve(polygon.size());
+    for (const ExactPoint& x : polygon) out.push_back(rounded(x));
+    return out;
+}
+
+std::string polygon_problem(std::span<const Vec2> polygon) { return problem_of(polygon); }
+std::string polygon_problem(std::span<const ExactPoint> polygon) { return problem_of(polygon); }
+bool is_counter_clockwise(std::span<const Vec2> p) { return turns_counter_clockwise(p); }
+bool is_counter_clockwise(std::span<const ExactPoint> p) { return turns_counter_clockwise(p); }
+bool in_closed_polygon(std::span<const Vec2> polygon, const Vec2& p) { return in_closed(polygon, p); }
+bool in_closed_polygon(std::span<const ExactPoint> polygon, const ExactPoint& p) { return in_closed(polygon, p); }
+
+bool within_distance_of_segment(const Vec2& p, const Vec2& a, const Vec2& b, double distance) {
+    return within_distance(p, a, b, distance, distance);
+}
+bool within_distance_of_segment(const ExactPoint& p, const ExactPoint& a, const ExactPoint& b, const Dyadic& distance,
+                                double rounded_distance) {
+    return within_distance(p, a, b, distance, rounded_distance);
+}
+bool within_distance_of_boundary(std::span<const Vec2> polygon, const Vec2& p, double distance) {
+    return within_distance_of_outline(polygon, p, distance, distance);
+}
+bool within_distance_of_boundary(std::span<const ExactPoint> polygon, const ExactPoint& p, const Dyadic& distance,
+                                 double rounded_distance) {
+    return within_distance_of_outline(polygon, p, distance, rounded_distance);
 }
 
 double distance_to_boundary(std::span<const Vec2> polygon, const Vec2& p) {

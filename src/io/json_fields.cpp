@@ -148,10 +148,13 @@ std::vector<Vec2> vec2_list(const Value& v, const Path& path) {
 
 Rational exact_number(const Value& v) {
     const JsonNumber n = v.number();
-    // An integer of at most 15 digits is its double (no need to parse it again).
-    const std::string_view t = n.text.substr(!n.text.empty() && n.text[0] == '-' ? 1 : 0);
-    if (t.size() <= 15 && t.find_first_not_of("0123456789") == std::string_view::npos) return Rational(n.value);
-    if (Rational::spells(n.text, n.value)) return Rational(n.value);  // a double written exactly (dyadic)
+    if (n.spelling == JsonNumber::Spelling::Exact) return Rational(n.value);
+    if (n.spelling == JsonNumber::Spelling::Unknown) {
+        // An integer of at most 15 digits is its double (no need to parse it again).
+        const std::string_view t = n.text.substr(!n.text.empty() && n.text[0] == '-' ? 1 : 0);
+        if (t.size() <= 15 && t.find_first_not_of("0123456789") == std::string_view::npos) return Rational(n.value);
+        if (Rational::spells(n.text, n.value)) return Rational(n.value);  // a double written exactly (dyadic)
+    }
     const std::optional<Rational> r = Rational::parse(n.text);
     return r ? *r : Rational(n.value);
 }

@@ -38,7 +38,18 @@ const char* Value::type_name() const {
 JsonNumber Value::number() const {
     const Node& n = node();
     assert(n.kind() == Kind::Number && !n.skipped());
-    return {n.number_, doc_->text(n.text_, n.tag_ >> Node::kLengthShift, n)};
+    const auto spelling = (n.tag_ & Node::kExact) != 0     ? JsonNumber::Spelling::Exact
+                          : (n.tag_ & Node::kInexact) != 0 ? JsonNumber::Spelling::Inexact
+                                                           : JsonNumber::Spelling::Unknown;
+    return {n.number_, doc_->text(n.text_, n.tag_ >> Node::kLengthShift, n), spelling};
+}
+
+bool Value::spells_doubles() const {
+    for (std::size_t i = index_, end = after(); i < end; ++i) {
+        const Node& n = doc_->node(i);
+        if (n.skipped() || (n.kind() != Kind::Array && (n.tag_ & Node::kExact) == 0)) return false;
+    }
+    return true;
 }
 
 std::string_view Value::string() const {
@@ -153,7 +164,7 @@ void Builder::boolean(bool b) {
     begin_value(b ? Kind::True : Kind::False, place);
 }
 
-void Builder::number(double value, std::string_view text, Text lifetime) {
+void Builder::number(double value, std::string_view text, Text lifetime, JsonNumber::Spelling spelling) {
     const Schema* place = nullptr;
     Node* n = begin_value(Kind::Number, place);
     if (value == 0.0 && nonzero_digits(text)) {
@@ -162,10 +173,12 @@ void Builder::number(double value, std::string_view text, Text lifetime) {
     }
     if (n == nullptr || n->skipped()) return;
     if (text.size() >= (std::size_t{1} << (32 - Node::kLengthShift))) {
-        throw InputError(path(), "a number of more than 100 million characters (expected fewer)");
+        throw InputError(path(), "a number of more than 33 million characters (expected fewer)");
     }
     n->number_ = value;
     n->text_ = keep(text, lifetime, n->tag_);
+    if (spelling == JsonNumber::Spelling::Exact) n->tag_ |= Node::kExact;
+    if (spelling == JsonNumber::Spelling::Inexact) n->tag_ |= Node::kInexact;
     n->tag_ |= static_cast<std::uint32_t>(text.size()) << Node::kLengthShift;
 }
 

@@ -59,6 +59,9 @@ namespace momentlab::json_read {
 struct JsonNumber {
     double value = 0.0;
     std::string_view text;
+    /// Whether the text spells `value` exactly, when the reader found out while reading it (the
+    /// plain reader does for texts of at most 19 digits); Unknown otherwise.
+    enum class Spelling : std::uint8_t { Unknown, Exact, Inexact } spelling = Spelling::Unknown;
 };
 
 /// A decimal exactly: (-1)^negative x digits x 10^exponent, with digits free of leading and
@@ -116,7 +119,7 @@ private:
     friend class Builder;
     friend class Document;
     friend class Value;
-    static constexpr std::uint32_t kSkipped = 8, kCopied = 16, kLengthShift = 5;
+    static constexpr std::uint32_t kSkipped = 8, kCopied = 16, kExact = 32, kInexact = 64, kLengthShift = 7;
 
     // No initialisers: a new block of nodes is not written (nor its pages touched) until used.
     union {
@@ -124,7 +127,8 @@ private:
         std::uint32_t pair_[2];    // String, Key: where its text is, its length; Array, Object: end, size
     };
     std::uint32_t text_;           // Number: where its text is
-    std::uint32_t tag_;            // the kind, kSkipped, kCopied (the text is a copy), a number text's length
+    std::uint32_t tag_;            // the kind, kSkipped, kCopied (the text is a copy), the number's
+                                   // Spelling (kExact, kInexact), a number text's length
 };
 
 /// A value of a Document (a handle: valid while the document and the text it was read from are).
@@ -146,6 +150,10 @@ public:
     [[nodiscard]] bool kept() const { return !node().skipped(); }
     /// A kept number (precondition: is_number()).
     [[nodiscard]] JsonNumber number() const;
+    /// True when this kept value is a number, or a list of them (nested), whose reader found each
+    /// one the double its text spells exactly (JsonNumber::Spelling::Exact): the doubles are the
+    /// exact values, with nothing to parse.
+    [[nodiscard]] bool spells_doubles() const;
     /// A kept string (precondition: is_string()).
     [[nodiscard]] std::string_view string() const;
     /// The value of member `key` of a kept object, if it has one.
@@ -221,7 +229,8 @@ public:
     void null();
     void boolean(bool b);
     /// Throws InputError at the number's path when it is not 0 but `value` is (an underflow).
-    void number(double value, std::string_view text, Text lifetime);
+    void number(double value, std::string_view text, Text lifetime,
+                JsonNumber::Spelling spelling = JsonNumber::Spelling::Unknown);
     void string(std::string_view s, Text lifetime);
     void start_object();
     /// Throws InputError at the key's path when the object already has it.

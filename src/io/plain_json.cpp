@@ -2,7 +2,10 @@
 // "The JSON reader"); anything else goes to the JSON library (json_read.cpp).
 #include "json_read.hpp"
 
+#include <array>
+#include <bit>
 #include <charconv>
+#include <cstdint>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -124,31 +127,53 @@ private:
         const bool negative = *q == '-';
         if (negative) ++q;
         if (q == end_ || !digit(*q)) return false;
+        // The digits as one integer w while they fit (at most 19), and the decimal exponent:
+        // the text is w 10^e.
+        std::uint64_t w = 0;
+        int digits = 0;
+        const auto take = [&](char c) {
+            if (digits < 19) w = w * 10 + static_cast<std::uint64_t>(c - '0');
+            ++digits;
+        };
         if (*q == '0') {
             ++q;
         } else {
-            while (q != end_ && digit(*q)) ++q;
+            for (; q != end_ && digit(*q); ++q) take(*q);
         }
         const char* const integer_end = q;
+        std::int64_t e = 0;
         if (q != end_ && *q == '.') {
-            const char* const digits = ++q;
-            while (q != end_ && digit(*q)) ++q;
-            if (q == digits) return false;
+            const char* const fraction = ++q;
+            for (; q != end_ && digit(*q); ++q) {
+                if (digits == 0 && *q == '0') continue;  // (leading zeros of 0.00x)
+                take(*q);
+            }
+            if (q == fraction) return false;
+            e = -(q - fraction);
         }
         if (q != end_ && (*q == 'e' || *q == 'E')) {
             ++q;
+            const bool minus = q != end_ && *q == '-';
             if (q != end_ && (*q == '+' || *q == '-')) ++q;
-            const char* const digits = q;
-            while (q != end_ && digit(*q)) ++q;
-            if (q == digits) return false;
+            const char* const exponent = q;
+            std::int64_t x = 0;
+            for (; q != end_ && digit(*q); ++q) x = x < 100000 ? x * 10 + (*q - '0') : x;
+            if (q == exponent) return false;
+            e += minus ? -x : x;
         }
         p_ = q;
         const std::string_view text(start, static_cast<std::size_t>(q - start));
         double x = 0.0;
-        if (q == integer_end && integer_end - start <= 19) {  // up to 18 digits: exact in 64 bits
-            std::uint64_t v = 0;
-            for (const char* d = start + (negative ? 1 : 0); d != integer_end; ++d) v = v * 10 + static_cast<std::uint64_t>(*d - '0');
-            x = negative ? static_cast<double>(-static_cast<std::int64_t>(v)) : static_cast<double>(v);
+        using S = JsonNumber::Spelling;
+        const S spelling = digits <= 19 ? spelled(w, e, x) : S::Unknown;
+        if (spelling == S::Exact) {
+            if (negative && !(x == 0.0 && q == integer_end)) x = -x;  // ("-0" is the integer 0)
+        } else if (digits <= 19 && w <= (std::uint64_t{1} << 53) && e >= -22 && e <= 22) {
+            // w and 10^|e| are doubles: one correctly rounded product or quotient is the nearest
+            // double (Clinger, "How to read floating point numbers accurately", PLDI 1990).
+            x = e >= 0 ? static_cast<double>(w) * kTens[static_cast<std::size_t>(e)]
+                       : static_cast<double>(w) / kTens[static_cast<std::size_t>(-e)];
+            if (negative) x = -x;
         } else {
 #if defined(__cpp_lib_to_chars)
             const auto [end, error] = std::from_chars(start, q, x);
@@ -157,8 +182,50 @@ private:
             return false;  // no exact conversion without a locale: the library reads the text
 #endif
         }
-        b_.number(x, text, Builder::Text::Lasting);
+        b_.number(x, text, Builder::Text::Lasting, spelling);
         return true;
+    }
+
+    static constexpr std::array<double, 23> kTens = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                                      1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                                      1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    static constexpr std::array<std::uint64_t, 28> kFives = [] {  // 5^27 < 2^63
+        std::array<std::uint64_t, 28> f{};
+        f[0] = 1;
+        for (std::size_t k = 1; k < f.size(); ++k) f[k] = f[k - 1] * 5;
+        return f;
+    }();
+
+    // Whether w 10^e (w < 10^19) is a double, and then that double in x: w 10^e is
+    // odd(w) 5^e 2^(e + twos(w)) for e >= 0, and for e < 0, when 5^-e divides w,
+    // odd(w / 5^-e) 2^(e + twos(w / 5^-e)) (else it is no dyadic number); a double when the odd
+    // factor is below 2^53 (the exponents here are far inside the doubles' range). Unknown for
+    // |e| > 27 (the text's spelling then decided where it is needed: Rational::spells).
+    static JsonNumber::Spelling spelled(std::uint64_t w, std::int64_t e, double& x) {
+        using S = JsonNumber::Spelling;
+        if (w == 0) return x = 0.0, S::Exact;
+        if (e < -27 || e > 27) return S::Unknown;
+        const std::uint64_t five = kFives[static_cast<std::size_t>(e >= 0 ? e : -e)];
+        std::uint64_t odd = 0;
+        int twos = 0;
+        if (e >= 0) {
+            twos = std::countr_zero(w);
+            if (__builtin_mul_overflow(w >> twos, five, &odd)) return S::Inexact;
+            twos += static_cast<int>(e);
+        } else {
+            if (w % five != 0) return S::Inexact;
+            const std::uint64_t m = w / five;
+            twos = std::countr_zero(m);
+            odd = m >> twos;
+            twos += static_cast<int>(e);
+        }
+        if (odd >= (std::uint64_t{1} << 53)) return S::Inexact;
+        // odd 2^twos, exactly (odd < 2^53; 2^twos a normal double: |twos| < 100).
+        const std::uint64_t power_bits = static_cast<std::uint64_t>(1023 + twos) << 52;
+        double power = 0.0;
+        std::memcpy(&power, &power_bits, sizeof power);
+        x = static_cast<double>(odd) * power;
+        return S::Exact;
     }
 
     const char* p_;

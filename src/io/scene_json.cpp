@@ -152,6 +152,10 @@ Contact contact_of(const Value& c, const Path& path) {
     if (name && !name->is_string()) throw InputError(Path(path, "name").str(), "expected a string");
     std::string text = name ? std::string(name->string()) : std::string();
     // The exact values (0.1 is 1/10), kept beside the doubles when some are not doubles.
+    if (given_point->spells_doubles() && given_normal->spells_doubles() && (!mu || mu->spells_doubles()) &&
+        (!mu_kinetic || mu_kinetic->spells_doubles())) {
+        return Contact::make(point, normal, friction, kinetic, std::move(text));
+    }
     ContactValues v;
     v.point = exact_vec2(*given_point);
     v.normal = exact_vec2(*given_normal);
@@ -229,16 +233,29 @@ Scene read_scene(const Value& doc, InputWarnings* w) {
         std::vector<std::vector<Rational2>> exact;
         exact.push_back(exact_polygon(*doc.find("body")->find("polygon")));
         doc.find("obstacles")->for_each_element([&](std::size_t, const Value& o) { exact.push_back(exact_polygon(*o.find("polygon"))); });
-        double scale = 1.0;
-        const std::optional<std::vector<Polygon>> scaled = scaled_polygons(exact, scale);
+        const std::optional<ScaledPolygons> scaled = scaled_polygons(exact);
+        const bool exactly = scaled && !scaled->exact.empty();  // decimals beyond the doubles when scaled
+        const double scale = scaled ? scaled->scale.to_double() : 1.0;
+        const std::vector<Polygon>* scaled_doubles = scaled && !exactly ? &scaled->doubles : nullptr;
         std::vector<Polygon> scaled_obstacles;
-        if (scaled) scaled_obstacles.assign(scaled->begin() + 1, scaled->end());
-        const Polygon& body = scaled ? scaled->front() : scene.body->polygon;
-        const std::vector<Polygon>& obstacles = scaled ? scaled_obstacles : scene.obstacles;
+        if (scaled_doubles) scaled_obstacles.assign(scaled_doubles->begin() + 1, scaled_doubles->end());
+        const Polygon& body = scaled_doubles ? scaled_doubles->front() : scene.body->polygon;
+        const std::vector<Polygon>& obstacles = scaled_doubles ? scaled_obstacles : scene.obstacles;
+        const auto polygon_path = [](std::size_t k) {  // k = 0 the body's, else obstacle k - 1's
+            return k == 0 ? std::string("$.body.polygon") : "$.obstacles[" + std::to_string(k - 1) + "].polygon";
+        };
+        if (exactly) {  // each outline simple as typed too (read as its doubles above)
+            for (std::size_t k = 0; k < scaled->exact.size(); ++k) {
+                const std::string problem = polygon_problem(scaled->exact[k]);
+                if (!problem.empty()) throw InputError(polygon_path(k), problem);
+            }
+        }
         // Drawn touching, not overlapping: decided exactly (polygons_overlap), before the contacts.
-        for (std::size_t i = 0; i < obstacles.size(); ++i) {
-            if (const std::optional<Vec2> x = polygons_overlap(body, obstacles[i])) {
-                throw InputError("$.obstacles[" + std::to_string(i) + "].polygon",
+        for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
+            const std::optional<Vec2> x = exactly ? polygons_overlap(scaled->exact[0], scaled->exact[i + 1])
+                                                  : polygons_overlap(body, obstacles[i]);
+            if (x) {
+                throw InputError(polygon_path(i + 1),
                                  "overlaps the body polygon ($.body.polygon), for instance at (" + json(x->x() / scale).dump() +
                                      ", " + json(x->y() / scale).dump() + ") (expected them to touch, not overlap)");
             }
@@ -246,8 +263,15 @@ Scene read_scene(const Value& doc, InputWarnings* w) {
         try {
             // The outlines were found simple as they were read (polygon()).
             ContactFinding found = options;
-            found.distance *= scale;
-            scene.contacts = detail::find_contacts_of_simple(body, obstacles, found, &scene.origins);
+            if (exactly) {
+                found.distance = scaled->rounded_distance(options.distance);
+                const std::vector<ExactPolygon> exact_obstacles(scaled->exact.begin() + 1, scaled->exact.end());
+                scene.contacts = detail::find_contacts_of_simple(scaled->exact[0], exact_obstacles, found,
+                                                                 scaled->distance(options.distance), &scene.origins);
+            } else {
+                if (scaled) found.distance = scaled->rounded_distance(options.distance);
+                scene.contacts = detail::find_contacts_of_simple(body, obstacles, found, &scene.origins);
+            }
         } catch (const std::invalid_argument& e) {
             throw InputError("$", e.what());
         }

@@ -20,11 +20,22 @@ namespace momentlab {
 namespace {
 
 // The polygon (simple, checked by the caller) counter-clockwise.
-Polygon counter_clockwise(const Polygon& p) {
-    Polygon q = p;
+template <class P>
+std::vector<P> counter_clockwise(std::span<const P> p) {
+    std::vector<P> q(p.begin(), p.end());
     if (!is_counter_clockwise(p)) std::reverse(q.begin(), q.end());
     return q;
 }
+
+// The polygons' points: doubles, or exact (ExactPoint, with the distance exact too).
+bool within(const Vec2& p, const Vec2& a, const Vec2& b, double distance, double) {
+    return within_distance_of_segment(p, a, b, distance);
+}
+bool within(const ExactPoint& p, const ExactPoint& a, const ExactPoint& b, const Dyadic& distance, double rounded_distance) {
+    return within_distance_of_segment(p, a, b, distance, rounded_distance);
+}
+EdgeGrid grid_of(std::span<const Vec2> p, double distance) { return EdgeGrid(p, distance); }
+EdgeGrid grid_of(std::span<const ExactPoint> p, double distance) { return EdgeGrid(rounded(p), distance); }
 
 // Outward unit normal of the counter-clockwise edge a -> b.
 Vec2 outward(const Vec2& a, const Vec2& b) {
@@ -46,24 +57,24 @@ std::size_t given_edge(std::size_t i, std::size_t n, bool reversed) { return rev
 // Vertices of `touching` lying on edges of `touched` (both counter-clockwise; `*_reversed` says
 // whether they were given clockwise); `body_is_touching` gives the normal's sense. Each contact's
 // origin goes to `origins`, against obstacle `obstacle`.
-void vertex_on_edge(const Polygon& touching, const Polygon& touched, bool body_is_touching, bool touching_reversed,
-                    bool touched_reversed, std::size_t obstacle, const ContactFinding& o, std::vector<Contact>& out,
-                    std::vector<ContactOrigin>& origins) {
+template <class P, class Distance>
+void vertex_on_edge(const std::vector<P>& touching, const std::vector<P>& touched, bool body_is_touching, bool touching_reversed,
+                    bool touched_reversed, std::size_t obstacle, const ContactFinding& o, const Distance& distance,
+                    std::vector<Contact>& out, std::vector<ContactOrigin>& origins) {
     const std::size_t n = touching.size(), m = touched.size();
-    const EdgeGrid grid(touched, o.distance);
+    const EdgeGrid grid = grid_of(std::span<const P>(touched), o.distance);
     for (std::size_t i = 0; i < n; ++i) {
-        const Vec2& v = touching[i];
+        const Vec2 v = rounded(touching[i]);
         for (std::size_t k : grid.near(v)) {
-            const Vec2& a = touched[k];
-            const Vec2& b = touched[(k + 1) % m];
-            if (!within_distance_of_segment(v, a, b, o.distance)) continue;
+            if (!within(touching[i], touched[k], touched[(k + 1) % m], distance, o.distance)) continue;
+            const Vec2 a = rounded(touched[k]), b = rounded(touched[(k + 1) % m]);
             // Vertex on vertex: an obstacle vertex at a body vertex is left to that body
             // vertex, whose contact takes the supporting obstacle edge's normal.
             if (!body_is_touching && ((v - a).norm() <= o.distance || (v - b).norm() <= o.distance)) continue;
             const Vec2 out_n = outward(a, b);
             // The neighbours of v must stay outside the touched edge's line.
-            const Vec2& prev = touching[(i + n - 1) % n];
-            const Vec2& next = touching[(i + 1) % n];
+            const Vec2 prev = rounded(touching[(i + n - 1) % n]);
+            const Vec2 next = rounded(touching[(i + 1) % n]);
             if ((prev - a).dot(out_n) < -o.distance || (next - a).dot(out_n) < -o.distance) continue;
             // Into the moving body: the obstacle's outward normal, or the body edge's inward one.
             const Vec2 normal = body_is_touching ? out_n : Vec2(-out_n);
@@ -110,36 +121,27 @@ Contact contact_as_typed(const Contact& found, const Rational2& v, const Rationa
     return Contact::make(v, Rational2{quotient(n[0], size), quotient(n[1], size)}, mu, std::nullopt, found.name);
 }
 
-std::optional<std::vector<Polygon>> scaled_polygons(const std::vector<std::vector<Rational2>>& exact, double& d) {
-    // Nothing to do when every coordinate is a double; nothing possible when a numerator is
-    // beyond doubles (a decimal of 17 digits: a cleared value is its numerator times a whole
-    // number). Both settled before any copy or product is made.
-    bool doubles = true;
-    for (const auto& p : exact) {
-        for (const Rational2& v : p) {
-            for (const Rational& x : v) {
-                if (!x.num().fits_double()) return std::nullopt;
-                doubles = doubles && x.is_double();
-            }
-        }
-    }
+std::optional<ScaledPolygons> scaled_polygons(const std::vector<std::vector<Rational2>>& exact) {
+    const bool doubles = std::all_of(exact.begin(), exact.end(), [](const std::vector<Rational2>& p) {
+        return std::all_of(p.begin(), p.end(), [](const Rational2& v) { return is_double(v); });
+    });
     if (doubles) return std::nullopt;
     std::vector<Rational> all;
     for (const auto& p : exact) {
         for (const Rational2& v : p) all.insert(all.end(), v.begin(), v.end());
     }
-    Dyadic common;
-    const std::vector<Dyadic> cleared = clear_denominators(all, &common);
-    if (!common.fits_double()) return std::nullopt;
-    for (const Dyadic& x : cleared) {
-        if (!x.fits_double()) return std::nullopt;
-    }
-    d = common.to_double();
-    std::vector<Polygon> out;
+    ScaledPolygons out;
+    const std::vector<Dyadic> cleared = clear_denominators(all, &out.scale);
+    const bool fit = out.scale.fits_double() && std::all_of(cleared.begin(), cleared.end(), [](const Dyadic& x) { return x.fits_double(); });
     std::size_t at = 0;
     for (const auto& p : exact) {
-        Polygon& q = out.emplace_back();
-        for (std::size_t i = 0; i < p.size(); ++i, at += 2) q.emplace_back(cleared[at].to_double(), cleared[at + 1].to_double());
+        if (fit) {
+            Polygon& q = out.doubles.emplace_back();
+            for (std::size_t i = 0; i < p.size(); ++i, at += 2) q.emplace_back(cleared[at].to_double(), cleared[at + 1].to_double());
+        } else {
+            ExactPolygon& q = out.exact.emplace_back();
+            for (std::size_t i = 0; i < p.size(); ++i, at += 2) q.push_back({cleared[at], cleared[at + 1]});
+        }
     }
     return out;
 }
@@ -163,19 +165,31 @@ std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygo
     return detail::find_contacts_of_simple(body, obstacles, options, origins);
 }
 
-std::vector<Contact> detail::find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
-                                                     const ContactFinding& options, std::vector<ContactOrigin>* origins) {
+namespace {
+
+std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector<ContactOrigin>& found_origins,
+                            const ContactFinding& options, std::vector<ContactOrigin>* origins);
+
+template <class P, class Distance>
+std::vector<Contact> contacts_of(std::span<const P> body, const std::vector<std::vector<P>>& obstacles, const ContactFinding& options,
+                                 const Distance& distance, std::vector<ContactOrigin>* origins) {
     check_distance(options);
-    const Polygon b = counter_clockwise(body);
+    const std::vector<P> b = counter_clockwise(body);
     const bool body_reversed = !is_counter_clockwise(body);
     std::vector<Contact> found;
     std::vector<ContactOrigin> found_origins;
     for (std::size_t k = 0; k < obstacles.size(); ++k) {
-        const Polygon o = counter_clockwise(obstacles[k]);
-        const bool reversed = !is_counter_clockwise(obstacles[k]);
-        vertex_on_edge(b, o, true, body_reversed, reversed, k, options, found, found_origins);
-        vertex_on_edge(o, b, false, reversed, body_reversed, k, options, found, found_origins);
+        const std::span<const P> given(obstacles[k]);
+        const std::vector<P> o = counter_clockwise(given);
+        const bool reversed = !is_counter_clockwise(given);
+        vertex_on_edge(b, o, true, body_reversed, reversed, k, options, distance, found, found_origins);
+        vertex_on_edge(o, b, false, reversed, body_reversed, k, options, distance, found, found_origins);
     }
+    return merged(found, found_origins, options, origins);
+}
+
+std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector<ContactOrigin>& found_origins,
+                            const ContactFinding& options, std::vector<ContactOrigin>* origins) {
     // One contact for points and normals both within the distance (the first kept), as the plain
     // comparison of every pair would merge them: the kept ones hashed by cells of side 2 d, so a
     // contact is compared only with those in the 3 x 3 cells around it (points within d are in
@@ -228,6 +242,19 @@ std::vector<Contact> detail::find_contacts_of_simple(const Polygon& body, const 
         if (origins != nullptr) origins->push_back(found_origins[f]);
     }
     return out;
+}
+
+}  // namespace
+
+std::vector<Contact> detail::find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
+                                                     const ContactFinding& options, std::vector<ContactOrigin>* origins) {
+    return contacts_of(std::span<const Vec2>(body), obstacles, options, options.distance, origins);
+}
+
+std::vector<Contact> detail::find_contacts_of_simple(const ExactPolygon& body, const std::vector<ExactPolygon>& obstacles,
+                                                     const ContactFinding& options, const Dyadic& distance,
+                                                     std::vector<ContactOrigin>* origins) {
+    return contacts_of(std::span<const ExactPoint>(body), obstacles, options, distance, origins);
 }
 
 }  // namespace momentlab

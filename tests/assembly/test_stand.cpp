@@ -320,6 +320,33 @@ TEST(StandInput, BadAssembliesNameTheField) {
     EXPECT_TRUE(r.equilibrium.can_stand);
 }
 
+// Two blocks on a floor, written with decimals of 20 digits (their scaled integers pass 2^53:
+// decided on the exact points): the upper block's bottom at y1 = 2.12345678901234567890, the
+// lower's top there too, touching along the edge (two contacts, normal exactly (0, 1)) with a
+// contact distance of 0; 1e-20 higher they do not touch, 1e-20 lower they overlap, refused
+// naming the body.
+TEST(StandInput, BodiesOfLongDecimalsTouchAndOverlapAsTyped) {
+    const auto text = [](const std::string& upper_bottom) {
+        return R"({"bodies": [{"mass": 1, "com": [0, 1], "polygon": [[-1, 0], [1, 0], [1, 2.12345678901234567890], [-1, 2.12345678901234567890]]},
+                              {"mass": 1, "com": [0, 3], "polygon": [[-1, )" + upper_bottom + R"(], [1, )" + upper_bottom +
+               R"(], [1, 4], [-1, 4]]}], "obstacles": [{"polygon": [[-5, -1], [5, -1], [5, 0], [-5, 0]]}], "contact_distance": 0})";
+    };
+    const Assembly a = read_assembly_text(text("2.12345678901234567890"));
+    std::size_t between = 0;
+    for (const AssemblyContact& c : a.contacts) {
+        if (c.a != 2 || c.b != 1) continue;
+        ++between;
+        const ContactValues* v = c.contact.exact_values();
+        ASSERT_NE(v, nullptr);
+        EXPECT_EQ(v->normal[0], Rational());
+        EXPECT_EQ(v->normal[1], *Rational::parse("1"));
+        EXPECT_EQ(v->point[1], *Rational::parse("2.12345678901234567890"));
+    }
+    EXPECT_EQ(between, 2U);
+    EXPECT_EQ(read_assembly_text(text("2.12345678901234567891")).contacts.size(), 2U);  // 1e-20 apart: the floor's only
+    expect_error(text("2.12345678901234567889"), "$.bodies[1].polygon");
+}
+
 TEST(StandInput, OneBodySceneIsAnAssemblyOfOne) {
     const Assembly a = read_assembly_text(read_json_file(std::string(MOMENTLAB_EXAMPLES) + "/figure-3-block-along-wall.json"));
     ASSERT_EQ(a.bodies.size(), 1U);

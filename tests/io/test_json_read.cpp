@@ -7,6 +7,7 @@
 // to a document, and exact_decimal against Python's fractions.Fraction.
 #include <gtest/gtest.h>
 
+#include <gmpxx.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -271,6 +272,96 @@ TEST(JsonRead, NumbersKeepTheirTextAsTyped) {
     std::vector<std::string> built_texts;
     built.root().for_each_element([&](std::size_t, const Value& v) { built_texts.emplace_back(v.number().text); });
     EXPECT_EQ(built_texts, (std::vector<std::string>{"1", "", "-7"}));
+}
+
+// The plain reader's spelling (whether a text is exactly its double, found while reading it)
+// and its double, against GMP: the text as an exact fraction (mpq_class of the decimal) against
+// the double's exact value, and the double against glibc's correctly rounded strtod. Texts sit
+// on the reader's bounds: digits below and above 2^53 (the Clinger fast path's bound), odd
+// factors at 2^53 - 1 and 2^53 + 1, exponents +-22, +-27 and +-28, 19 and 20 digits, exact
+// doubles written with their exact digits (and trailing zeros) beside ones a digit away.
+mpq_class exact_of_text(std::string t) {
+    bool negative = !t.empty() && t[0] == '-';
+    if (negative) t.erase(0, 1);
+    std::int64_t e = 0;
+    if (const auto at = t.find_first_of("eE"); at != std::string::npos) {
+        e = std::stoll(t.substr(at + 1));
+        t.erase(at);
+    }
+    if (const auto at = t.find('.'); at != std::string::npos) {
+        e -= static_cast<std::int64_t>(t.size() - at - 1);
+        t.erase(at, 1);
+    }
+    mpz_class digits(t, 10), ten = 1;
+    mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(e >= 0 ? e : -e));
+    mpq_class q = e >= 0 ? mpq_class(digits * ten) : mpq_class(digits, ten);
+    q.canonicalize();
+    return negative ? mpq_class(-q) : q;
+}
+
+TEST(JsonRead, PlainReaderKnowsWhichTextsAreExactlyDoubles) {
+    std::mt19937_64 rng(20261129);
+    std::vector<std::string> texts = {"0", "-0", "0.0", "-0.000", "9007199254740992", "9007199254740993",
+                                      "9007199254740991", "18014398509481983", "0.5", "-0.25", "0.1", "2.943",
+                                      "1e22", "1e23", "1e-22", "5e-22", "2384185791015625e-27", "2384185791015625e-28",
+                                      "7450580596923828125e-27", "9999999999999999999", "12345678901234567890",
+                                      "0.30000000000000004", "0.98004150390625", "1.0000000000000000000"};
+    const auto with_digits = [](const mpq_class& q, int fraction_digits, bool trailing) {
+        // q (a dyadic) written with exactly `fraction_digits` digits after the point.
+        mpz_class ten = 1;
+        mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(fraction_digits));
+        const mpz_class scaled = q.get_num() * ten / q.get_den();  // truncated: exact when enough digits
+        std::string s = mpz_class(abs(scaled)).get_str();
+        if (static_cast<int>(s.size()) <= fraction_digits) s.insert(0, static_cast<std::size_t>(fraction_digits + 1) - s.size(), '0');
+        if (fraction_digits > 0) s.insert(s.size() - static_cast<std::size_t>(fraction_digits), ".");
+        if (trailing) s += "00";
+        return (sgn(scaled) < 0 ? "-" : "") + s;
+    };
+    for (int k = 0; k < testing::sized(20000); ++k) {
+        // A double m 2^-j with m of 1..54 bits, written with its exact digits, one digit fewer
+        // (rounded down: not exact), and in exponent form.
+        const int bits = 1 + static_cast<int>(rng() % 54), j = static_cast<int>(rng() % 30) - 4;
+        const std::uint64_t m = (rng() >> (64 - bits)) | (std::uint64_t{1} << (bits - 1));
+        mpq_class q(mpz_class(std::to_string(m)), 1);
+        if (j > 0) q /= mpq_class(mpz_class(1) << j);
+        if (j < 0) q *= mpq_class(mpz_class(1) << -j);
+        q.canonicalize();
+        if (rng() % 2) q = -q;
+        const int exact_digits = j > 0 ? j : 0;
+        texts.push_back(with_digits(q, exact_digits, rng() % 4 == 0));
+        if (exact_digits > 0) texts.push_back(with_digits(q, exact_digits - 1, false));
+        const std::string plain = with_digits(q, exact_digits, false);
+        std::string digits = plain;
+        digits.erase(std::remove(digits.begin(), digits.end(), '.'), digits.end());
+        const std::size_t sign = digits[0] == '-' ? 1 : 0;  // (JSON: no leading zeros)
+        while (digits.size() > sign + 1 && digits[sign] == '0') digits.erase(sign, 1);
+        texts.push_back(digits + "e-" + std::to_string(exact_digits));
+        texts.push_back(digits + "1e" + std::to_string(static_cast<int>(rng() % 60) - 30));
+    }
+    int exact = 0, decided = 0;
+    for (const std::string& t : texts) {
+        const std::string text = "[" + t + "]";  // (the document reads its numbers' texts there)
+        const std::optional<Document> doc = json_read::read_plain(text, json_read::kEverything);
+        ASSERT_TRUE(doc) << t;
+        std::optional<Value> element;
+        doc->root().for_each_element([&](std::size_t, const Value& e) { element = e; });
+        const Value v = *element;
+        const json_read::JsonNumber n = v.number();
+        ASSERT_EQ(n.value, std::strtod(t.c_str(), nullptr)) << t;
+        const bool is_exact = exact_of_text(t) == mpq_class(n.value);
+        if (n.spelling != json_read::JsonNumber::Spelling::Unknown) {
+            ++decided;
+            ASSERT_EQ(n.spelling == json_read::JsonNumber::Spelling::Exact, is_exact) << t;
+        }
+        ASSERT_EQ(v.spells_doubles(), n.spelling == json_read::JsonNumber::Spelling::Exact) << t;
+        ASSERT_EQ(json_read::exact_number(v) == Rational(n.value), is_exact) << t;
+        exact += is_exact ? 1 : 0;
+    }
+    // Both kinds, and the reader decides the texts of at most 19 digits and exponents within
+    // +-27 (it leaves the rest to Rational::spells): most of these.
+    EXPECT_GT(exact, static_cast<int>(texts.size()) / 3);
+    EXPECT_LT(exact, static_cast<int>(texts.size()) * 3 / 4);
+    EXPECT_GT(decided, static_cast<int>(texts.size()) / 2);
 }
 
 TEST(JsonRead, EveryExampleIsPlain) {

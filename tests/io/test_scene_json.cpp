@@ -8,6 +8,7 @@
 #include <string>
 
 #include "momentlab/io/input_error.hpp"
+#include "momentlab/core/rational.hpp"
 #include "momentlab/io/scene_json.hpp"
 #include "momentlab/mechanics/modes.hpp"
 
@@ -61,12 +62,13 @@ TEST(SceneJson, WritesTheInertiaWhenGivenOne) {
 // Contacts found from polygons at the edge of the contact distance (docs/reliability.md): a
 // block's corner raised exactly the distance above the floor touches it, one unit in the last
 // place higher does not; a corner below the floor by any amount, even 2^-60, is an overlap,
-// refused with both polygons' paths.
+// refused with both polygons' paths. (Each corner written with all its digits: the text is read
+// as the decimal it spells, and the distance is the double 1e-9.)
 TEST(SceneJson, ContactsFromPolygonsAtTheToleranceEdge) {
     const auto scene = [](double corner_y, const std::string& distance) {
-        char text[400];
+        char text[1200];
         std::snprintf(text, sizeof text,
-                      R"({"body": {"mass": 1, "com": [0.5, 0.5], "inertia": 0.1, "polygon": [[0, 0], [1, %.17g], [1, 1], [0, 1]]},
+                      R"({"body": {"mass": 1, "com": [0.5, 0.5], "inertia": 0.1, "polygon": [[0, 0], [1, %.800g], [1, 1], [0, 1]]},
                           "obstacles": [{"polygon": [[-1, -1], [2, -1], [2, 0], [-1, 0]]}]%s})",
                       corner_y, distance.c_str());
         return read_scene_text(text);
@@ -84,6 +86,64 @@ TEST(SceneJson, ContactsFromPolygonsAtTheToleranceEdge) {
             EXPECT_NE(std::string(e.what()).find("$.obstacles[0].polygon: overlaps the body polygon ($.body.polygon)"), std::string::npos)
                 << e.what();
         }
+    }
+}
+
+// The same decided on decimals of 20 digits, which scaled to integers pass 2^53 (the polygons'
+// exact points, not their doubles): the floor's top at y0 = 0.12345678901234567890, a block
+// with contact_distance 0.25. Expected values come from the decimals as written: the corner
+// exactly 0.25 above y0 touches, 1e-20 higher does not; 1e-20 below the floor is an overlap;
+// on a floor of slope 1/10 written with 20 digits the normal is exactly (-1/10, 1) and the point
+// the vertex as typed.
+TEST(SceneJson, ContactsFromPolygonsOfLongDecimalsAreDecidedExactly) {
+    const auto scene = [](const std::string& corner_y, const std::string& floor_right_y = "0.12345678901234567890") {
+        const std::string text =
+            R"({"body": {"mass": 1, "com": [0.5, 0.9], "inertia": 0.1, "polygon": [[0, 0.12345678901234567890], [1, )" + corner_y +
+            R"(], [1, 2], [0, 2]]}, "obstacles": [{"polygon": [[-1, -1], [2, -1], [2, )" + floor_right_y +
+            R"(], [-1, 0.12345678901234567890]]}], "contact_distance": 0.25})";
+        return read_scene_text(text);
+    };
+    EXPECT_EQ(scene("0.37345678901234567890").contacts.size(), 2u);  // y0 + 0.25: on the edge
+    EXPECT_EQ(scene("0.37345678901234567891").contacts.size(), 1u);  // 1e-20 beyond
+    EXPECT_EQ(scene("0.12345678901234567891").contacts.size(), 2u);
+    for (const std::string below : {"0.12345678901234567889", "0.1234567890123456788999"}) {
+        try {
+            (void)scene(below);
+            ADD_FAILURE() << "a corner 1e-20 into the floor was accepted: " << below;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("$.obstacles[0].polygon: overlaps the body polygon ($.body.polygon)"), std::string::npos)
+                << e.what();
+        }
+    }
+    // A floor of slope 1/10 (from (-1, y0 - 0.1) to (2, y0 + 0.2)), the block's bottom corners on it.
+    const Scene slanted = read_scene_text(
+        R"({"body": {"mass": 1, "com": [0.5, 0.9], "inertia": 0.1,
+                     "polygon": [[0, 0.12345678901234567890], [1, 0.22345678901234567890], [1, 2], [0, 2]]},
+            "obstacles": [{"polygon": [[-1, 0.02345678901234567890], [2, 0.32345678901234567890], [2, -1], [-1, -1]]}]})");
+    ASSERT_EQ(slanted.contacts.size(), 2u);
+    for (const Contact& c : slanted.contacts) {
+        const ContactValues* v = c.exact_values();
+        ASSERT_NE(v, nullptr);
+        EXPECT_EQ(v->normal[0], *Rational::parse("-0.1"));
+        EXPECT_EQ(v->normal[1], *Rational::parse("1"));
+        const bool left = v->point[0] == Rational();
+        EXPECT_EQ(v->point[1], *Rational::parse(left ? "0.12345678901234567890" : "0.22345678901234567890"));
+    }
+}
+
+// A polygon simple in doubles but not in the decimals typed: its vertex (1, y) with y =
+// 0.10000000000000000001 lies exactly on its edge from (0, 0) to (3, 3y) (the doubles put it
+// 9e-18 above that edge's double line). Refused when contacts are found from the polygons.
+TEST(SceneJson, PolygonsOfLongDecimalsAreSimpleAsTyped) {
+    const std::string text = R"({"body": {"mass": 1, "com": [1.5, 1.5], "inertia": 0.1,
+        "polygon": [[0, 0], [3, 0.30000000000000000003], [3, 2], [2, 2], [1, 0.10000000000000000001], [0, 2]]},
+        "obstacles": [{"polygon": [[-1, -1], [4, -1], [4, 0], [-1, 0]]}]})";
+    try {
+        (void)read_scene_text(text);
+        ADD_FAILURE() << "a polygon whose vertex lies on its own edge was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("$.body.polygon: edges"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("cross or touch"), std::string::npos) << e.what();
     }
 }
 

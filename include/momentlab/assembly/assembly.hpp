@@ -76,6 +76,15 @@ struct Assembly {
                                                                   const std::vector<Polygon>& obstacles,
                                                                   const ContactFinding& options = {},
                                                                   std::vector<ContactOrigin>* origins = nullptr);
+namespace detail {
+/// find_assembly_contacts on exact outlines (the bodies' n, then the obstacles': ScaledPolygons::
+/// exact) within the exact `distance` (options.distance its double), every outline simple and no
+/// two overlapping (check_assembly).
+[[nodiscard]] std::vector<AssemblyContact> find_assembly_contacts_of_simple(const std::vector<ExactPolygon>& outlines,
+                                                                            std::size_t n, const ContactFinding& options,
+                                                                            const Dyadic& distance,
+                                                                            std::vector<ContactOrigin>* origins);
+}  // namespace detail
 
 /// Checks an assembly: at least one body; each body's mass finite and > 0, its centre of mass
 /// finite, its inertia or radius of gyration (at most one of them) finite and > 0, its polygon

@@ -78,6 +78,9 @@ public:
     friend int compare(const Dyadic& a, const Dyadic& b);
     friend bool operator==(const Dyadic& a, const Dyadic& b) { return compare(a, b) == 0; }
     friend bool operator<(const Dyadic& a, const Dyadic& b) { return compare(a, b) < 0; }
+    friend bool operator<=(const Dyadic& a, const Dyadic& b) { return compare(a, b) <= 0; }
+    friend bool operator>(const Dyadic& a, const Dyadic& b) { return compare(a, b) > 0; }
+    friend bool operator>=(const Dyadic& a, const Dyadic& b) { return compare(a, b) >= 0; }
 
     /// This number times 2^k (exact).
     [[nodiscard]] Dyadic scaled(std::int64_t k) const;

@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "momentlab/geometry/polygon.hpp"
 #include "momentlab/mechanics/scene.hpp"
 
 namespace momentlab {
@@ -43,13 +44,21 @@ struct ContactFinding {
                                                  std::vector<ContactOrigin>* origins = nullptr);
 
 /// Polygons given exactly (decimal vertices as typed: 0.1 is 1/10) times the least common
-/// denominator D of their coordinates, when some coordinate is not a double and every product
-/// is one: overlap and contact are unchanged by the scaling and the products are exact, so
-/// find_contacts and polygons_overlap on them decide for the decimals. `scale` receives D.
-/// nullopt when every coordinate is a double (nothing to do) or some product is not one (a
-/// decimal of 17 digits): then the polygons' doubles decide.
-[[nodiscard]] std::optional<std::vector<Polygon>> scaled_polygons(const std::vector<std::vector<Rational2>>& exact,
-                                                                  double& scale);
+/// denominator D of their coordinates (the distance times D with them): overlap and contact are
+/// unchanged by the scaling, so find_contacts and polygons_overlap on them decide for the
+/// decimals. The products as doubles when every one is a double (`doubles`), else as exact
+/// points (`exact`: decimals of more than about 16 digits); `exact` is empty exactly when
+/// `doubles` is used.
+struct ScaledPolygons {
+    std::vector<Polygon> doubles;
+    std::vector<ExactPolygon> exact;
+    Dyadic scale;  ///< D
+    /// A distance of the given polygons on the scaled ones: d D, exactly, and its double.
+    [[nodiscard]] Dyadic distance(double d) const { return Dyadic(d) * scale; }
+    [[nodiscard]] double rounded_distance(double d) const { return distance(d).to_double(); }
+};
+/// nullopt when every coordinate is a double (nothing to scale).
+[[nodiscard]] std::optional<ScaledPolygons> scaled_polygons(const std::vector<std::vector<Rational2>>& exact);
 
 /// A contact find_contacts found, with the numbers as typed: the point the touching vertex
 /// `vertex`, the normal the perpendicular of the touched edge from `from` to `to` (exact: a
@@ -66,6 +75,12 @@ namespace detail {
 /// it, and sweeps it only once. `origins` as find_contacts.
 [[nodiscard]] std::vector<Contact> find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
                                                            const ContactFinding& options,
+                                                           std::vector<ContactOrigin>* origins = nullptr);
+/// The same on exact polygons (ScaledPolygons::exact), within the exact `distance`
+/// (options.distance its double, for the grids); the contacts' points and normals are doubles
+/// near the exact ones (contact_as_typed gives those).
+[[nodiscard]] std::vector<Contact> find_contacts_of_simple(const ExactPolygon& body, const std::vector<ExactPolygon>& obstacles,
+                                                           const ContactFinding& options, const Dyadic& distance,
                                                            std::vector<ContactOrigin>* origins = nullptr);
 }  // namespace detail
 
