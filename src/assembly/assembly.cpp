@@ -8,6 +8,8 @@
 #include "momentlab/mechanics/find_contacts.hpp"
 #include "momentlab/io/input_error.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace momentlab {
 namespace {
 
@@ -166,7 +168,11 @@ namespace {
 
 // Refuses the first pair of overlapping outlines (the bodies' n, then the obstacles').
 template <class P>
-void overlaps(const std::vector<std::vector<P>>& outlines, std::size_t n, double margin) {
+void overlaps(const std::vector<std::vector<P>>& outlines, std::size_t n, double margin, double scale) {
+    // A point of the overlap, in the coordinates given (the outlines may be scaled by `scale`).
+    const auto at_point = [scale](const Vec2& x) {
+        return ", for instance at (" + nlohmann::json(x.x() / scale).dump() + ", " + nlohmann::json(x.y() / scale).dump() + ")";
+    };
     std::vector<AxisBox> boxes(outlines.size());
     for (std::size_t k = 0; k < outlines.size(); ++k) {
         if (!outlines[k].empty()) boxes[k] = box_of(outlines[k], margin);
@@ -175,15 +181,19 @@ void overlaps(const std::vector<std::vector<P>>& outlines, std::size_t n, double
         const std::vector<P>& pa = outlines[a];
         if (pa.empty()) continue;
         for (std::size_t k = 0; n + k < outlines.size(); ++k) {
-            if (boxes_meet(boxes[a], boxes[n + k]) && polygons_overlap(pa, outlines[n + k])) {
-                throw InputError(at("$.bodies", a) + ".polygon", "overlaps obstacle " + std::to_string(k) +
+            if (!boxes_meet(boxes[a], boxes[n + k])) continue;
+            if (const std::optional<Vec2> x = polygons_overlap(pa, outlines[n + k])) {
+                throw InputError(at("$.bodies", a) + ".polygon", "overlaps obstacle " + std::to_string(k) + " ($.obstacles[" +
+                                                                     std::to_string(k) + "].polygon)" + at_point(*x) +
                                                                      " (bodies may touch the obstacles, not overlap them)");
             }
         }
         for (std::size_t b = 0; b < a; ++b) {
             const std::vector<P>& pb = outlines[b];
-            if (!pb.empty() && boxes_meet(boxes[a], boxes[b]) && polygons_overlap(pa, pb)) {
-                throw InputError(at("$.bodies", a) + ".polygon", "overlaps the polygon of body " + std::to_string(b + 1) +
+            if (pb.empty() || !boxes_meet(boxes[a], boxes[b])) continue;
+            if (const std::optional<Vec2> x = polygons_overlap(pa, pb)) {
+                throw InputError(at("$.bodies", a) + ".polygon", "overlaps the polygon of body " + std::to_string(b + 1) + " (" +
+                                                                     at("$.bodies", b) + ".polygon)" + at_point(*x) +
                                                                      " (bodies may touch, not overlap)");
             }
         }
@@ -252,9 +262,10 @@ void check_assembly(const Assembly& assembly) {
             const std::string problem = polygon_problem(scaled->exact[k]);
             if (!problem.empty()) throw InputError(k < n ? at("$.bodies", k) + ".polygon" : at("$.obstacles", k - n) + ".polygon", problem);
         }
-        overlaps(scaled->exact, n, box_margin(scaled->rounded_distance(distance)));
+        overlaps(scaled->exact, n, box_margin(scaled->rounded_distance(distance)), scaled->scale.to_double());
     } else {
-        overlaps(outlines, n, box_margin(distance * (scaled ? scaled->scale.to_double() : 1.0)));
+        const double scale = scaled ? scaled->scale.to_double() : 1.0;
+        overlaps(outlines, n, box_margin(scaled ? scaled->rounded_distance(distance) : distance), scale);
     }
 }
 

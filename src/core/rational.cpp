@@ -104,6 +104,13 @@ Dyadic of_word(std::uint64_t odd) { return Dyadic::from_limbs(Sign::Positive, st
 
 }  // namespace
 
+Rational Rational::quotient(Dyadic num, Dyadic den) {
+    if (den.is_zero()) throw std::invalid_argument("Rational::quotient: division by zero");
+    if (den.sign() == Sign::Negative) num = -num, den = -den;
+    const std::int64_t twos = den.binary_exponent();  // den = an odd integer times 2^twos
+    return Rational(num.scaled(-twos), den.scaled(-twos));
+}
+
 Rational::Rational(Dyadic num, const Dyadic& den) {
     if (den.sign() != Sign::Positive || den.binary_exponent() < 0) {
         throw std::invalid_argument("Rational: the denominator must be a positive integer");
@@ -273,7 +280,9 @@ std::optional<Rational> Rational::parse(std::string_view text) {
         if (at == text.size()) return std::nullopt;
         std::int64_t e = 0;
         for (; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at) {
-            if (e <= kMaxDecimalExponent) e = e * 10 + (text[at] - '0');  // (beyond: held there; 0e99999999 is 0)
+            // (held past 10^15, beyond any text's count of digits: the sum below keeps its sign
+            // and passes the bound; 0e99999999 is 0)
+            if (e < 1000000000000000) e = e * 10 + (text[at] - '0');
         }
         exponent += minus ? -e : e;
     }

@@ -157,7 +157,9 @@ private:
             if (q != end_ && (*q == '+' || *q == '-')) ++q;
             const char* const exponent = q;
             std::int64_t x = 0;
-            for (; q != end_ && digit(*q); ++q) x = x < 100000 ? x * 10 + (*q - '0') : x;
+            // (held once past 10^15: beyond any fraction's length, so e keeps its sign and stays
+            // far outside the fast path's bounds)
+            for (; q != end_ && digit(*q); ++q) x = x < 1000000000000000 ? x * 10 + (*q - '0') : x;
             if (q == exponent) return false;
             e += minus ? -x : x;
         }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <optional>
 #include <unordered_map>
@@ -57,6 +58,18 @@ std::size_t given_edge(std::size_t i, std::size_t n, bool reversed) { return rev
 // Vertices of `touching` lying on edges of `touched` (both counter-clockwise; `*_reversed` says
 // whether they were given clockwise); `body_is_touching` gives the normal's sense. Each contact's
 // origin goes to `origins`, against obstacle `obstacle`.
+// Whether x lies beyond the line of the counter-clockwise edge ab, on its inner side, by more
+// than `distance`: (b - a) x (x - a) > distance |b - a|, exactly.
+template <class P, class Distance>
+bool inside_line_beyond(const P& x, const P& a, const P& b, const Distance& distance) {
+    using D = Dyadic;
+    const D dx = D(b.x()) - D(a.x()), dy = D(b.y()) - D(a.y());
+    const D cross = dx * (D(x.y()) - D(a.y())) - dy * (D(x.x()) - D(a.x()));
+    if (cross.sign() != Sign::Positive) return false;
+    const D d(distance);
+    return compare(cross * cross, d * d * (dx * dx + dy * dy)) > 0;
+}
+
 template <class P, class Distance>
 void vertex_on_edge(const std::vector<P>& touching, const std::vector<P>& touched, bool body_is_touching, bool touching_reversed,
                     bool touched_reversed, std::size_t obstacle, const ContactFinding& o, const Distance& distance,
@@ -64,21 +77,24 @@ void vertex_on_edge(const std::vector<P>& touching, const std::vector<P>& touche
     const std::size_t n = touching.size(), m = touched.size();
     const EdgeGrid grid = grid_of(std::span<const P>(touched), o.distance);
     for (std::size_t i = 0; i < n; ++i) {
-        const Vec2 v = rounded(touching[i]);
-        for (std::size_t k : grid.near(v)) {
-            if (!within(touching[i], touched[k], touched[(k + 1) % m], distance, o.distance)) continue;
-            const Vec2 a = rounded(touched[k]), b = rounded(touched[(k + 1) % m]);
+        const P& v = touching[i];
+        for (std::size_t k : grid.near(rounded(v))) {
+            const P& a = touched[k];
+            const P& b = touched[(k + 1) % m];
+            if (!within(v, a, b, distance, o.distance)) continue;
             // Vertex on vertex: an obstacle vertex at a body vertex is left to that body
             // vertex, whose contact takes the supporting obstacle edge's normal.
-            if (!body_is_touching && ((v - a).norm() <= o.distance || (v - b).norm() <= o.distance)) continue;
-            const Vec2 out_n = outward(a, b);
-            // The neighbours of v must stay outside the touched edge's line.
-            const Vec2 prev = rounded(touching[(i + n - 1) % n]);
-            const Vec2 next = rounded(touching[(i + 1) % n]);
-            if ((prev - a).dot(out_n) < -o.distance || (next - a).dot(out_n) < -o.distance) continue;
-            // Into the moving body: the obstacle's outward normal, or the body edge's inward one.
+            if (!body_is_touching && (within(v, a, a, distance, o.distance) || within(v, b, b, distance, o.distance))) continue;
+            // The neighbours of v must stay outside the touched edge's line (within the distance).
+            if (inside_line_beyond(touching[(i + n - 1) % n], a, b, distance) ||
+                inside_line_beyond(touching[(i + 1) % n], a, b, distance)) {
+                continue;
+            }
+            // Into the moving body: the obstacle's outward normal, or the body edge's inward one
+            // (in doubles: contact_as_typed makes it exact for decimals).
+            const Vec2 out_n = outward(rounded(a), rounded(b));
             const Vec2 normal = body_is_touching ? out_n : Vec2(-out_n);
-            out.push_back(Contact::make(v, normal, o.mu, o.mu_kinetic));
+            out.push_back(Contact::make(rounded(v), normal, o.mu, o.mu_kinetic));
             origins.push_back({body_is_touching, obstacle, given_vertex(i, n, touching_reversed), given_edge(k, m, touched_reversed)});
         }
     }
@@ -98,13 +114,6 @@ void check_distance(const ContactFinding& options) {
     if (!(options.distance >= 0.0)) throw std::invalid_argument("find_contacts: distance must be >= 0");
 }
 
-// x / m for m > 0, exactly: with x = xn / xd and m = mn / md, mn = M 2^e (M an odd integer),
-// x / m = (xn md 2^-e) / (xd M).
-Rational quotient(const Rational& x, const Rational& m) {
-    const std::int64_t e = m.num().binary_exponent();
-    return Rational((x.num() * m.den()).scaled(-e), x.den() * m.num().scaled(-e));
-}
-
 }  // namespace
 
 Contact contact_as_typed(const Contact& found, const Rational2& v, const Rational2& a, const Rational2& b, const Rational& mu,
@@ -118,7 +127,8 @@ Contact contact_as_typed(const Contact& found, const Rational2& v, const Rationa
     if (along.sign() == Sign::Negative) n = {-n[0], -n[1]};
     const Rational largest = compare(n[0] * n[0], n[1] * n[1]) >= 0 ? n[0] : n[1];
     const Rational size = largest.sign() == Sign::Negative ? -largest : largest;
-    return Contact::make(v, Rational2{quotient(n[0], size), quotient(n[1], size)}, mu, std::nullopt, found.name);
+    return Contact::make(v, Rational2{Rational::quotient(n[0].num() * size.den(), n[0].den() * size.num()),
+                                              Rational::quotient(n[1].num() * size.den(), n[1].den() * size.num())}, mu, std::nullopt, found.name);
 }
 
 std::optional<ScaledPolygons> scaled_polygons(const std::vector<std::vector<Rational2>>& exact) {
@@ -131,8 +141,20 @@ std::optional<ScaledPolygons> scaled_polygons(const std::vector<std::vector<Rati
         for (const Rational2& v : p) all.insert(all.end(), v.begin(), v.end());
     }
     ScaledPolygons out;
-    const std::vector<Dyadic> cleared = clear_denominators(all, &out.scale);
+    std::vector<Dyadic> cleared = clear_denominators(all, &out.scale);
     const bool fit = out.scale.fits_double() && std::all_of(cleared.begin(), cleared.end(), [](const Dyadic& x) { return x.fits_double(); });
+    // Exact points: brought near 1 by a power of two (exact), so that their doubles, which the
+    // grids and filters read, are finite however many digits the decimals have.
+    if (!fit) {
+        std::int64_t largest = std::numeric_limits<std::int64_t>::min();
+        for (const Dyadic& x : cleared) {
+            if (!x.is_zero()) largest = std::max(largest, x.exponent());
+        }
+        if (largest != std::numeric_limits<std::int64_t>::min()) {
+            for (Dyadic& x : cleared) x = x.scaled(-largest);
+            out.scale = out.scale.scaled(-largest);
+        }
+    }
     std::size_t at = 0;
     for (const auto& p : exact) {
         if (fit) {

@@ -198,17 +198,6 @@ struct Extents {
     std::optional<DirectionRange> directions;
 };
 
-// num / den as a Rational (den != 0): the signs and powers of two moved so that the denominator
-// is a positive integer.
-Rational ratio(Dyadic num, Dyadic den) {
-    if (den.sign() == Sign::Negative) num = -num, den = -den;
-    if (den.binary_exponent() < 0) {
-        const std::int64_t k = -den.binary_exponent();
-        num = num.scaled(k), den = den.scaled(k);
-    }
-    return {std::move(num), den};
-}
-
 // Where the line of action of the exact wrench w = (F, tau) crosses the edge from a to b: the
 // parameter s = (tau - a x F) / ((b - a) x F), exactly (the edge's ends as typed); none for a
 // force along the edge (not a push across it).
@@ -220,7 +209,7 @@ std::optional<Rational> touch_parameter(const Ends& ends, const ExactVector& w) 
     // s = q (p tau - A x F) / (p (D x F))
     const Dyadic across = d[0] * x[1] - d[1] * x[0];
     if (across.is_zero()) return std::nullopt;
-    return ratio(q * (p * x[2] - (a[0] * x[1] - a[1] * x[0])), p * across);
+    return Rational::quotient(q * (p * x[2] - (a[0] * x[1] - a[1] * x[0])), p * across);
 }
 
 Extents extents(const PushFeature& f, const Ends& ends, const std::vector<const Cone*>& cones) {

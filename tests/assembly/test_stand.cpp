@@ -347,6 +347,19 @@ TEST(StandInput, BodiesOfLongDecimalsTouchAndOverlapAsTyped) {
     expect_error(text("2.12345678901234567889"), "$.bodies[1].polygon");
 }
 
+// Review-31: a block resting exactly on a ramp of slope 1/3 (its corner written with 36 digits,
+// contact distance 0) touches it at both corners and stands with mu = 1/2 > 1/3, its centre of
+// mass above the support (it was once found touching at no corner and "falls").
+TEST(StandInput, BlockExactlyOnARampOfLongDecimalsStands) {
+    const Assembly a = read_assembly_text(
+        R"({"bodies": [{"mass": 1, "com": [1.5, 1.2], "inertia": 1, "polygon": [[0.9, 0.3],
+              [2.100000000000000000000000000000000003, 0.700000000000000000000000000000000001],
+              [2.100000000000000000000000000000000003, 2], [0.9, 2]]}],
+            "obstacles": [{"polygon": [[-3, -1], [3, 1], [3, -3], [-3, -3]]}], "mu": 0.5, "contact_distance": 0})");
+    EXPECT_EQ(a.contacts.size(), 2U);
+    EXPECT_TRUE(stand(a).equilibrium.can_stand);
+}
+
 TEST(StandInput, OneBodySceneIsAnAssemblyOfOne) {
     const Assembly a = read_assembly_text(read_json_file(std::string(MOMENTLAB_EXAMPLES) + "/figure-3-block-along-wall.json"));
     ASSERT_EQ(a.bodies.size(), 1U);

@@ -364,6 +364,23 @@ TEST(JsonRead, PlainReaderKnowsWhichTextsAreExactlyDoubles) {
     EXPECT_GT(decided, static_cast<int>(texts.size()) / 2);
 }
 
+// An exponent longer than any held count: 0.000...01e1000000 (99,999 zeros) is 10^900000, not
+// 1 (review-31: the plain reader once held the exponent at 10^5, below the fraction's length).
+TEST(JsonRead, LongExponentsAreNotHeldBelowTheFraction) {
+    const std::string text = "[0." + std::string(99999, '0') + "1e1000000]";
+    EXPECT_FALSE(json_read::read_plain(text, json_read::kEverything).has_value());  // not a finite double
+    EXPECT_THROW((void)json_read::read(text, json_read::kEverything), InputError);
+    const std::string fits = "[0." + std::string(99999, '0') + "3e99999]";  // 0.3
+    const std::optional<Document> doc = json_read::read_plain(fits, json_read::kEverything);
+    ASSERT_TRUE(doc.has_value());
+    doc->root().for_each_element([&](std::size_t, const Value& v) {
+        EXPECT_EQ(v.number().value, 0.3);
+        EXPECT_EQ(json_read::exact_number(v), *Rational::parse("0.3"));
+    });
+    // Rational::parse alike: 999,998 zeros against an exponent of 9,999,999 is 10^9000001, refused.
+    EXPECT_FALSE(Rational::parse("0." + std::string(999998, '0') + "1e9999999").has_value());
+}
+
 TEST(JsonRead, EveryExampleIsPlain) {
     int files = 0;
     for (const auto& entry : std::filesystem::recursive_directory_iterator(MOMENTLAB_EXAMPLES)) {

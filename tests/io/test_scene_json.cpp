@@ -147,5 +147,40 @@ TEST(SceneJson, PolygonsOfLongDecimalsAreSimpleAsTyped) {
     }
 }
 
+// Review-31's cases, the expectations from the decimals as written: a block resting exactly on a
+// ramp of slope 1/3 whose corner has 36 digits, with a contact distance of 0 (both corners touch,
+// normals exactly (-1/3, 1)); an obstacle's apex 1e-20 beside the block's corner on its bottom
+// edge, distance 0 (one contact there, normal (0, 1)); a floor at 0.111...1 of 300 and 415
+// digits (two contacts, exactly there: the exact points' doubles stay finite).
+TEST(SceneJson, ExactTouchesOfLongDecimalsAreFound) {
+    const Scene ramp = read_scene_text(
+        R"({"body": {"mass": 1, "com": [1, 1], "inertia": 0.1, "polygon": [[0.9, 0.3],
+              [2.100000000000000000000000000000000003, 0.700000000000000000000000000000000001],
+              [2.100000000000000000000000000000000003, 2], [0.9, 2]]},
+            "obstacles": [{"polygon": [[-3, -1], [3, 1], [3, -3], [-3, -3]]}], "contact_distance": 0})");
+    ASSERT_EQ(ramp.contacts.size(), 2u);
+    for (const Contact& c : ramp.contacts) {
+        const ContactValues* v = c.exact_values();
+        ASSERT_NE(v, nullptr);
+        EXPECT_EQ(v->normal[0], *Rational::parse("-1") * Rational::quotient(Dyadic(1.0), Dyadic(3.0)));
+        EXPECT_EQ(v->normal[1], Rational(1.0));
+    }
+    const Scene apex = read_scene_text(
+        R"({"body": {"mass": 1, "com": [1.5, 0.5], "inertia": 0.1, "polygon": [[1, 0], [2, 0], [2, 1], [1, 1]]},
+            "obstacles": [{"polygon": [[1.00000000000000000001, 0], [0, -1], [3, -1]]}], "contact_distance": 0})");
+    ASSERT_EQ(apex.contacts.size(), 1u);
+    ASSERT_NE(apex.contacts[0].exact_values(), nullptr);
+    EXPECT_EQ(apex.contacts[0].exact_values()->point[0], *Rational::parse("1.00000000000000000001"));
+    EXPECT_EQ(apex.contacts[0].exact_values()->normal[1], Rational(1.0));
+    for (const std::size_t digits : {300u, 415u}) {
+        const std::string y = "0." + std::string(digits, '1'), top = "1." + std::string(digits, '1');
+        const Scene floor = read_scene_text(R"({"body": {"mass": 1, "com": [0.5, 1], "inertia": 0.1, "polygon": [[0, )" + y +
+                                            "], [1, " + y + "], [1, " + top + "], [0, " + top +
+                                            R"(]]}, "obstacles": [{"polygon": [[-1, -1], [2, -1], [2, )" + y + "], [-1, " + y + "]]}]}");
+        ASSERT_EQ(floor.contacts.size(), 2u) << digits;
+        for (const Contact& c : floor.contacts) EXPECT_EQ(c.exact_values()->point[1], *Rational::parse(y)) << digits;
+    }
+}
+
 }  // namespace
 }  // namespace momentlab

@@ -1,5 +1,6 @@
 // Contacts found from polygons, checked against the contacts written by hand.
 #include <gtest/gtest.h>
+#include <gmpxx.h>
 
 #include <algorithm>
 #include <cmath>
@@ -136,9 +137,22 @@ TEST(FindContacts, SceneWithoutContactsFindsThem) {
 }
 
 // find_contacts indexes the touched polygon's edges in a grid; against the plain double loop over
-// every vertex and edge (the rules of find_contacts.hpp written out here) on random outlines
+// every vertex and edge (the rules of find_contacts.hpp written out here, each distance test in
+// exact rationals: rounded, a neighbour exactly on the edge's line was once taken as inside) on random outlines
 // that touch often: star-shaped polygons on a coarse grid, the obstacle a copy moved so that
 // vertices land on edges, both orientations, distances 0 and 1e-9.
+// |v - a| <= d, and x beyond the line of the counter-clockwise edge ab on its inner side by more
+// than d ((b - a) x (x - a) > d |b - a|), in exact rationals.
+bool near_exactly(const Vec2& v, const Vec2& a, double d) {
+    const mpq_class dx = mpq_class(v.x()) - a.x(), dy = mpq_class(v.y()) - a.y(), dd = d;
+    return dx * dx + dy * dy <= dd * dd;
+}
+bool inside_beyond(const Vec2& x, const Vec2& a, const Vec2& b, double d) {
+    const mpq_class ex = mpq_class(b.x()) - a.x(), ey = mpq_class(b.y()) - a.y();
+    const mpq_class cross = ex * (mpq_class(x.y()) - a.y()) - ey * (mpq_class(x.x()) - a.x()), dd = d;
+    return sgn(cross) > 0 && cross * cross > dd * dd * (ex * ex + ey * ey);
+}
+
 std::vector<Contact> brute_force(const Polygon& body_in, const std::vector<Polygon>& obstacles, double distance) {
     const auto ccw = [](Polygon p) {
         if (!is_counter_clockwise(p)) std::reverse(p.begin(), p.end());
@@ -157,9 +171,9 @@ std::vector<Contact> brute_force(const Polygon& body_in, const std::vector<Polyg
                 for (std::size_t k = 0; k < m; ++k) {
                     const Vec2 &v = touching[i], &a = touched[k], &b = touched[(k + 1) % m];
                     if (!within_distance_of_segment(v, a, b, distance)) continue;
-                    if (pass == 1 && ((v - a).norm() <= distance || (v - b).norm() <= distance)) continue;
+                    if (pass == 1 && (near_exactly(v, a, distance) || near_exactly(v, b, distance))) continue;
                     const Vec2 out_n = outward(a, b);
-                    if ((touching[(i + n - 1) % n] - a).dot(out_n) < -distance || (touching[(i + 1) % n] - a).dot(out_n) < -distance) {
+                    if (inside_beyond(touching[(i + n - 1) % n], a, b, distance) || inside_beyond(touching[(i + 1) % n], a, b, distance)) {
                         continue;
                     }
                     found.push_back(Contact::make(v, pass == 0 ? out_n : Vec2(-out_n), 0.0, 0.0));

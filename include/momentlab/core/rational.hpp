@@ -30,6 +30,8 @@ public:
     explicit Rational(double x) : num_(x), den_(1.0) {}
     /// num / den for a positive integer den (std::invalid_argument otherwise).
     Rational(Dyadic num, const Dyadic& den);
+    /// num / den for any den != 0 (either sign, an integer or not; std::invalid_argument for 0).
+    static Rational quotient(Dyadic num, Dyadic den);
     /// The exact value of decimal text in JSON's number grammar, a leading '+', ".5" and "5."
     /// also allowed ("0.1" is 1/10, "-2.943e1" is -2943/100); nullopt for other text and for a
     /// non-zero number whose decimal exponent passes +-100000 (0 or infinite as a double).
@@ -40,8 +42,8 @@ public:
     static bool is_decimal(std::string_view text);
     /// True when decimal text (as parse reads it) is exactly the finite double `value`, told
     /// without big numbers for up to 38 significant digits ("0.5", "1e3", the exact expansion
-    /// "0.299999999813735485076904296875" of a dyadic double), with Dyadic numbers for longer
-    /// texts (up to a double's longest exact expansion); false when it is not. A reader of
+    /// "0.299999999813735485076904296875" of a dyadic double), against the double's own exact
+    /// digits for longer texts (up to its longest exact expansion); false when it is not. A reader of
     /// doubles skips parse where this holds.
     static bool spells(std::string_view text, double value);
 
