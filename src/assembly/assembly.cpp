@@ -48,32 +48,33 @@ AxisBox box_of(const ExactPolygon& p, double margin) {
     return box_of(r, margin + 1e-9 * largest);
 }
 
-// The contacts of a polygon with others: checked (find_contacts) for doubles; for exact points,
-// checked by the reader (check_assembly).
+// The contacts of a polygon with others: checked (find_contacts) for the doubles given; on
+// scaled polygons (doubles or exact points), checked by the reader (check_assembly).
 std::vector<Contact> contacts_between(const Polygon& a, const std::vector<Polygon>& others, const ContactFinding& options,
-                                      double, std::vector<ContactOrigin>* where) {
+                                      const ScaledPolygons* scaled, std::vector<ContactOrigin>* where) {
+    if (scaled) return detail::find_contacts_of_simple(a, others, options, *scaled, where);
     return find_contacts(a, others, options, where);
 }
 std::vector<Contact> contacts_between(const ExactPolygon& a, const std::vector<ExactPolygon>& others,
-                                      const ContactFinding& options, const Dyadic& distance, std::vector<ContactOrigin>* where) {
-    return detail::find_contacts_of_simple(a, others, options, distance, where);
+                                      const ContactFinding& options, const ScaledPolygons* scaled, std::vector<ContactOrigin>* where) {
+    return detail::find_contacts_of_simple(a, others, options, *scaled, where);
 }
 
 // find_assembly_contacts on the outlines (the bodies' n, then the obstacles'; doubles, or exact
 // points with an exact distance): every polygon found simple and no two overlapping by the caller.
-template <class P, class Distance>
+template <class P>
 std::vector<AssemblyContact> assembly_contacts(const std::vector<std::vector<P>>& outlines, std::size_t n,
-                                               const ContactFinding& options, const Distance& distance,
+                                               const ContactFinding& options, const ScaledPolygons* scaled,
                                                std::vector<ContactOrigin>* origins) {
     std::vector<AssemblyContact> found;
-    const double margin = box_margin(options.distance);
+    const double margin = box_margin(scaled ? scaled->rounded_distance(options.distance) : options.distance);
     std::vector<AxisBox> boxes;
     for (const auto& p : outlines) boxes.push_back(p.empty() ? AxisBox{} : box_of(p, margin));
     std::vector<ContactOrigin> where;
     // The contacts of body a with `others` (the obstacles at `index`, or body b alone).
     const auto add = [&](std::size_t a, std::size_t b, const std::vector<std::vector<P>>& others, const std::vector<std::size_t>& index) {
         where.clear();
-        for (Contact& c : contacts_between(outlines[a], others, options, distance, &where)) {
+        for (Contact& c : contacts_between(outlines[a], others, options, scaled, &where)) {
             found.push_back({a + 1, b, std::move(c)});
         }
         if (!origins) return;
@@ -155,13 +156,14 @@ std::vector<AssemblyContact> find_assembly_contacts(const std::vector<AssemblyBo
     std::vector<Polygon> outlines;
     for (const AssemblyBody& b : bodies) outlines.push_back(b.polygon);
     outlines.insert(outlines.end(), obstacles.begin(), obstacles.end());
-    return assembly_contacts(outlines, bodies.size(), options, options.distance, origins);
+    return assembly_contacts(outlines, bodies.size(), options, nullptr, origins);
 }
 
-std::vector<AssemblyContact> detail::find_assembly_contacts_of_simple(const std::vector<ExactPolygon>& outlines, std::size_t n,
-                                                                      const ContactFinding& options, const Dyadic& distance,
+std::vector<AssemblyContact> detail::find_assembly_contacts_of_simple(const ScaledPolygons& scaled, std::size_t n,
+                                                                      const ContactFinding& options,
                                                                       std::vector<ContactOrigin>* origins) {
-    return assembly_contacts(outlines, n, options, distance, origins);
+    return scaled.exact.empty() ? assembly_contacts(scaled.doubles, n, options, &scaled, origins)
+                                : assembly_contacts(scaled.exact, n, options, &scaled, origins);
 }
 
 namespace {

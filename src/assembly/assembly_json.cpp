@@ -117,19 +117,10 @@ std::vector<AssemblyContact> found_contacts(const Assembly& a, ContactFinding fi
     if (a.exact_polygons) scaled = scaled_polygons(*a.exact_polygons);
     std::vector<ContactOrigin> origins;
     std::vector<AssemblyContact> found;
-    if (scaled && !scaled->exact.empty()) {  // decimals beyond the doubles when scaled: exact points
-        ContactFinding rounded = finding;
-        rounded.distance = scaled->rounded_distance(finding.distance);
-        found = detail::find_assembly_contacts_of_simple(scaled->exact, n, rounded, scaled->distance(finding.distance), &origins);
+    if (scaled) {  // decimals: on the polygons scaled to integers (exact doubles, or exact points)
+        found = detail::find_assembly_contacts_of_simple(*scaled, n, finding, &origins);
     } else {
-        std::vector<AssemblyBody> bodies = a.bodies;
-        std::vector<Polygon> obstacles = a.obstacles;
-        if (scaled) {
-            for (std::size_t k = 0; k < n; ++k) bodies[k].polygon = scaled->doubles[k];
-            obstacles.assign(scaled->doubles.begin() + static_cast<std::ptrdiff_t>(n), scaled->doubles.end());
-            finding.distance = scaled->rounded_distance(finding.distance);
-        }
-        found = find_assembly_contacts(bodies, obstacles, finding, &origins);
+        found = find_assembly_contacts(a.bodies, a.obstacles, finding, &origins);
     }
     // The polygons as typed (bodies' then obstacles'; their doubles when every vertex is one).
     std::vector<std::vector<Rational2>> doubles;

@@ -93,6 +93,18 @@ std::size_t exact_digits(double x, char* out, std::int64_t& exponent) {
     return length;
 }
 
+// k when the odd positive integer d is 5^k (log2 5^k = 2.3219... k: d's bit length tells k to
+// within one), else none.
+std::optional<std::int64_t> five_power(const Dyadic& d) {
+    if (d.is_one()) return 0;
+    if (d.sign() != Sign::Positive || d.binary_exponent() != 0) return std::nullopt;
+    const double estimate = static_cast<double>(d.exponent()) / std::log2(5.0);
+    for (std::int64_t k = std::max<std::int64_t>(1, static_cast<std::int64_t>(estimate)); k <= static_cast<std::int64_t>(estimate) + 1; ++k) {
+        if (power(Dyadic::from_integer(5), k) == d) return k;
+    }
+    return std::nullopt;
+}
+
 // The odd integer x as a 64-bit word, when it is one.
 std::optional<std::uint64_t> word(const Dyadic& x) {
     const auto limbs = x.limbs();
@@ -388,6 +400,33 @@ std::vector<Dyadic> clear_denominators(std::span<const Rational> x, Dyadic* comm
     if (words) {
         for (const Rational& r : x) out.push_back(r.num() * of_word(lcm / *word(r.den())));
         if (common) *common = of_word(lcm);
+        return out;
+    }
+    // Decimals' denominators are powers of 5 (the odd part of 10^k): their least common multiple
+    // is the largest, 5^K, and x = n / 5^k clears to n 5^(K - k).
+    std::vector<std::int64_t> fives;
+    fives.reserve(x.size());
+    const Dyadic* last = nullptr;  // (runs of one denominator told once)
+    for (const Rational& r : x) {
+        if (last != nullptr && *last == r.den()) {
+            fives.push_back(fives.back());
+            continue;
+        }
+        const std::optional<std::int64_t> k = five_power(r.den());
+        if (!k) break;
+        fives.push_back(*k);
+        last = &r.den();
+    }
+    if (fives.size() == x.size()) {
+        const std::int64_t most = fives.empty() ? 0 : *std::max_element(fives.begin(), fives.end());
+        std::vector<std::optional<Dyadic>> powers(static_cast<std::size_t>(most) + 1);
+        const auto power_of_five = [&](std::int64_t k) -> const Dyadic& {
+            std::optional<Dyadic>& p = powers[static_cast<std::size_t>(k)];
+            if (!p) p = power(Dyadic::from_integer(5), k);
+            return *p;
+        };
+        for (std::size_t i = 0; i < x.size(); ++i) out.push_back(x[i].num() * power_of_five(most - fives[i]));
+        if (common) *common = power_of_five(most);
         return out;
     }
     // Else the product of the distinct denominators.

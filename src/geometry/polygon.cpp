@@ -291,6 +291,9 @@ bool in_closed_polygon(std::span<const ExactPoint> polygon, const ExactPoint& p)
 bool within_distance_of_segment(const Vec2& p, const Vec2& a, const Vec2& b, double distance) {
     return within_distance(p, a, b, distance, distance);
 }
+bool within_distance_of_segment(const Vec2& p, const Vec2& a, const Vec2& b, const Dyadic& distance, double rounded_distance) {
+    return within_distance(p, a, b, distance, rounded_distance);
+}
 bool within_distance_of_segment(const ExactPoint& p, const ExactPoint& a, const ExactPoint& b, const Dyadic& distance,
                                 double rounded_distance) {
     return within_distance(p, a, b, distance, rounded_distance);

@@ -261,16 +261,14 @@ Scene read_scene(const Value& doc, InputWarnings* w) {
             }
         }
         try {
-            // The outlines were found simple as they were read (polygon()).
-            ContactFinding found = options;
+            // The outlines were found simple as they were read (polygon()), and as typed above.
             if (exactly) {
-                found.distance = scaled->rounded_distance(options.distance);
                 const std::vector<ExactPolygon> exact_obstacles(scaled->exact.begin() + 1, scaled->exact.end());
-                scene.contacts = detail::find_contacts_of_simple(scaled->exact[0], exact_obstacles, found,
-                                                                 scaled->distance(options.distance), &scene.origins);
+                scene.contacts = detail::find_contacts_of_simple(scaled->exact[0], exact_obstacles, options, *scaled, &scene.origins);
+            } else if (scaled) {
+                scene.contacts = detail::find_contacts_of_simple(body, obstacles, options, *scaled, &scene.origins);
             } else {
-                if (scaled) found.distance = scaled->rounded_distance(options.distance);
-                scene.contacts = detail::find_contacts_of_simple(body, obstacles, found, &scene.origins);
+                scene.contacts = detail::find_contacts_of_simple(body, obstacles, options, &scene.origins);
             }
         } catch (const std::invalid_argument& e) {
             throw InputError("$", e.what());

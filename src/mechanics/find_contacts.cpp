@@ -32,6 +32,9 @@ std::vector<P> counter_clockwise(std::span<const P> p) {
 bool within(const Vec2& p, const Vec2& a, const Vec2& b, double distance, double) {
     return within_distance_of_segment(p, a, b, distance);
 }
+bool within(const Vec2& p, const Vec2& a, const Vec2& b, const Dyadic& distance, double rounded_distance) {
+    return within_distance_of_segment(p, a, b, distance, rounded_distance);
+}
 bool within(const ExactPoint& p, const ExactPoint& a, const ExactPoint& b, const Dyadic& distance, double rounded_distance) {
     return within_distance_of_segment(p, a, b, distance, rounded_distance);
 }
@@ -72,19 +75,21 @@ bool inside_line_beyond(const P& x, const P& a, const P& b, const Distance& dist
 
 template <class P, class Distance>
 void vertex_on_edge(const std::vector<P>& touching, const std::vector<P>& touched, bool body_is_touching, bool touching_reversed,
-                    bool touched_reversed, std::size_t obstacle, const ContactFinding& o, const Distance& distance,
-                    std::vector<Contact>& out, std::vector<ContactOrigin>& origins) {
+                    bool touched_reversed, std::size_t obstacle, const ContactFinding& o, double point_distance,
+                    const Distance& distance, std::vector<Contact>& out, std::vector<ContactOrigin>& origins) {
     const std::size_t n = touching.size(), m = touched.size();
-    const EdgeGrid grid = grid_of(std::span<const P>(touched), o.distance);
+    const EdgeGrid grid = grid_of(std::span<const P>(touched), point_distance);
     for (std::size_t i = 0; i < n; ++i) {
         const P& v = touching[i];
         for (std::size_t k : grid.near(rounded(v))) {
             const P& a = touched[k];
             const P& b = touched[(k + 1) % m];
-            if (!within(v, a, b, distance, o.distance)) continue;
+            if (!within(v, a, b, distance, point_distance)) continue;
             // Vertex on vertex: an obstacle vertex at a body vertex is left to that body
             // vertex, whose contact takes the supporting obstacle edge's normal.
-            if (!body_is_touching && (within(v, a, a, distance, o.distance) || within(v, b, b, distance, o.distance))) continue;
+            if (!body_is_touching && (within(v, a, a, distance, point_distance) || within(v, b, b, distance, point_distance))) {
+                continue;
+            }
             // The neighbours of v must stay outside the touched edge's line (within the distance).
             if (inside_line_beyond(touching[(i + n - 1) % n], a, b, distance) ||
                 inside_line_beyond(touching[(i + 1) % n], a, b, distance)) {
@@ -190,11 +195,14 @@ std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygo
 namespace {
 
 std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector<ContactOrigin>& found_origins,
-                            const ContactFinding& options, std::vector<ContactOrigin>* origins);
+                            const ContactFinding& options, double point_distance, std::vector<ContactOrigin>* origins);
 
+// The contacts of polygons whose coordinates may be the given ones scaled (scaled_polygons):
+// `point_distance` the distance between points there (the double of `distance`, exact), while
+// the unit normals compare with options.distance itself.
 template <class P, class Distance>
 std::vector<Contact> contacts_of(std::span<const P> body, const std::vector<std::vector<P>>& obstacles, const ContactFinding& options,
-                                 const Distance& distance, std::vector<ContactOrigin>* origins) {
+                                 double point_distance, const Distance& distance, std::vector<ContactOrigin>* origins) {
     check_distance(options);
     const std::vector<P> b = counter_clockwise(body);
     const bool body_reversed = !is_counter_clockwise(body);
@@ -204,14 +212,14 @@ std::vector<Contact> contacts_of(std::span<const P> body, const std::vector<std:
         const std::span<const P> given(obstacles[k]);
         const std::vector<P> o = counter_clockwise(given);
         const bool reversed = !is_counter_clockwise(given);
-        vertex_on_edge(b, o, true, body_reversed, reversed, k, options, distance, found, found_origins);
-        vertex_on_edge(o, b, false, reversed, body_reversed, k, options, distance, found, found_origins);
+        vertex_on_edge(b, o, true, body_reversed, reversed, k, options, point_distance, distance, found, found_origins);
+        vertex_on_edge(o, b, false, reversed, body_reversed, k, options, point_distance, distance, found, found_origins);
     }
-    return merged(found, found_origins, options, origins);
+    return merged(found, found_origins, options, point_distance, origins);
 }
 
 std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector<ContactOrigin>& found_origins,
-                            const ContactFinding& options, std::vector<ContactOrigin>* origins) {
+                            const ContactFinding& options, double point_distance, std::vector<ContactOrigin>* origins) {
     // One contact for points and normals both within the distance (the first kept), as the plain
     // comparison of every pair would merge them: the kept ones hashed by cells of side 2 d, so a
     // contact is compared only with those in the 3 x 3 cells around it (points within d are in
@@ -220,7 +228,7 @@ std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector
     std::vector<Contact> out;
     std::unordered_map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>, CellHash> cells;
     std::map<std::pair<double, double>, std::vector<std::size_t>> exact_points;
-    const double side = 2.0 * options.distance;
+    const double side = 2.0 * point_distance;
     const auto cell_of = [&](const Vec2& p) -> std::optional<std::pair<std::int64_t, std::int64_t>> {
         if (!(side > 0.0)) return std::nullopt;
         const double x = std::floor(p.x() / side), y = std::floor(p.y() / side);
@@ -229,7 +237,7 @@ std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector
     };
     const auto same = [&](const Contact& c, std::size_t k) {
         const Contact& d = out[k];
-        return (c.point - d.point).norm() <= options.distance && (c.normal - d.normal).norm() <= options.distance;
+        return (c.point - d.point).norm() <= point_distance && (c.normal - d.normal).norm() <= options.distance;
     };
     if (origins != nullptr) origins->clear();
     for (std::size_t f = 0; f < found.size(); ++f) {
@@ -270,13 +278,21 @@ std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector
 
 std::vector<Contact> detail::find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
                                                      const ContactFinding& options, std::vector<ContactOrigin>* origins) {
-    return contacts_of(std::span<const Vec2>(body), obstacles, options, options.distance, origins);
+    return contacts_of(std::span<const Vec2>(body), obstacles, options, options.distance, options.distance, origins);
+}
+
+std::vector<Contact> detail::find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
+                                                     const ContactFinding& options, const ScaledPolygons& scaled,
+                                                     std::vector<ContactOrigin>* origins) {
+    return contacts_of(std::span<const Vec2>(body), obstacles, options, scaled.rounded_distance(options.distance),
+                       scaled.distance(options.distance), origins);
 }
 
 std::vector<Contact> detail::find_contacts_of_simple(const ExactPolygon& body, const std::vector<ExactPolygon>& obstacles,
-                                                     const ContactFinding& options, const Dyadic& distance,
+                                                     const ContactFinding& options, const ScaledPolygons& scaled,
                                                      std::vector<ContactOrigin>* origins) {
-    return contacts_of(std::span<const ExactPoint>(body), obstacles, options, distance, origins);
+    return contacts_of(std::span<const ExactPoint>(body), obstacles, options, scaled.rounded_distance(options.distance),
+                       scaled.distance(options.distance), origins);
 }
 
 }  // namespace momentlab

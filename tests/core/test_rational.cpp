@@ -174,5 +174,29 @@ TEST(Rational, ClearsDenominatorsToTheSameDirection) {
     }
 }
 
+// Decimals of many lengths past 64-bit denominators (review-32: 500 vertices took minutes when
+// the distinct denominators 5^k were multiplied): the common denominator is the least, 5^K for
+// the longest decimal, and each value clears exactly (GMP).
+TEST(Rational, DecimalsOfManyLengthsClearToTheirLeastCommonDenominator) {
+    std::mt19937_64 gen(11);
+    std::vector<Rational> x;
+    int longest = 0;
+    for (int i = 0; i < 400; ++i) {
+        const int digits = 28 + static_cast<int>(gen() % 400);
+        longest = std::max(longest, digits);
+        std::string text = "0.";
+        for (int k = 0; k + 1 < digits; ++k) text += static_cast<char>('0' + gen() % 10);
+        text += static_cast<char>('1' + gen() % 9);  // (a last digit that is not 0: exactly `digits` places)
+        x.push_back(*Rational::parse(text));
+    }
+    x.push_back(Rational(0.5));  // a double among them
+    Dyadic d;
+    const std::vector<Dyadic> y = clear_denominators(x, &d);
+    Q five_to_longest = 1;
+    for (int k = 0; k < longest; ++k) five_to_longest *= 5;
+    EXPECT_EQ(to_q(d), five_to_longest);
+    for (std::size_t k = 0; k < x.size(); ++k) ASSERT_EQ(to_q(y[k]), to_q(x[k]) * to_q(d));
+}
+
 }  // namespace
 }  // namespace momentlab

@@ -182,5 +182,19 @@ TEST(SceneJson, ExactTouchesOfLongDecimalsAreFound) {
     }
 }
 
+// Review-32: a block's corner on an obstacle's corner gets a contact for each obstacle edge ending
+// there (docs/formats.md) when written with 14-digit decimals as with doubles: on the scaled
+// polygons the unit normals are compared with the distance as given, not scaled with the points.
+TEST(SceneJson, CornerContactsOfDecimalsAreKeptApart) {
+    const auto count = [](const std::string& x0, const std::string& x1, const std::string& x2) {
+        return read_scene_text(R"({"body": {"mass": 1, "com": [0.6, 0.7], "inertia": 0.1, "polygon": [[)" + x0 + ", 0.2], [" + x1 +
+                               ", 0.2], [" + x1 + ", 1.2], [" + x0 + R"(, 1.2]]}, "obstacles": [{"polygon": [[)" + x2 + ", -0.8], [" +
+                               x0 + ", -0.8], [" + x0 + ", 0.2], [" + x2 + ", 0.2]]}]}")
+            .contacts.size();
+    };
+    EXPECT_EQ(count("0.5", "1.5", "-0.5"), 2u);
+    EXPECT_EQ(count("0.12345678912341", "1.12345678912341", "-0.87654321087659"), 2u);
+}
+
 }  // namespace
 }  // namespace momentlab

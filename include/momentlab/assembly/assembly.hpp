@@ -77,12 +77,11 @@ struct Assembly {
                                                                   const ContactFinding& options = {},
                                                                   std::vector<ContactOrigin>* origins = nullptr);
 namespace detail {
-/// find_assembly_contacts on exact outlines (the bodies' n, then the obstacles': ScaledPolygons::
-/// exact) within the exact `distance` (options.distance its double), every outline simple and no
-/// two overlapping (check_assembly).
-[[nodiscard]] std::vector<AssemblyContact> find_assembly_contacts_of_simple(const std::vector<ExactPolygon>& outlines,
-                                                                            std::size_t n, const ContactFinding& options,
-                                                                            const Dyadic& distance,
+/// find_assembly_contacts on scaled outlines (scaled_polygons of the bodies' n, then the
+/// obstacles'), the options as given (distances scaled as find_contacts_of_simple does), every
+/// outline simple and no two overlapping (check_assembly).
+[[nodiscard]] std::vector<AssemblyContact> find_assembly_contacts_of_simple(const ScaledPolygons& scaled, std::size_t n,
+                                                                            const ContactFinding& options,
                                                                             std::vector<ContactOrigin>* origins);
 }  // namespace detail
 

@@ -57,7 +57,9 @@ using ExactPolygon = std::vector<ExactPoint>;
 /// True when the point p is within `distance` of the closed segment ab, exactly (squared
 /// distances compared in exact arithmetic, after a float filter with a wide margin).
 [[nodiscard]] bool within_distance_of_segment(const Vec2& p, const Vec2& a, const Vec2& b, double distance);
-/// The same for exact points, and an exact distance (its double `rounded_distance` for the filter).
+/// The same for an exact distance (its double `rounded_distance` for the filter), and for exact points.
+[[nodiscard]] bool within_distance_of_segment(const Vec2& p, const Vec2& a, const Vec2& b, const Dyadic& distance,
+                                              double rounded_distance);
 [[nodiscard]] bool within_distance_of_segment(const ExactPoint& p, const ExactPoint& a, const ExactPoint& b,
                                               const Dyadic& distance, double rounded_distance);
 

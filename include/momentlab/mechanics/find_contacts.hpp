@@ -76,11 +76,15 @@ namespace detail {
 [[nodiscard]] std::vector<Contact> find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
                                                            const ContactFinding& options,
                                                            std::vector<ContactOrigin>* origins = nullptr);
-/// The same on exact polygons (ScaledPolygons::exact), within the exact `distance`
-/// (options.distance its double, for the grids); the contacts' points and normals are doubles
-/// near the exact ones (contact_as_typed gives those).
+/// The same on scaled polygons (scaled_polygons: `doubles` or `exact`), the options as given:
+/// points compared within options.distance times the scale (exactly), unit normals within
+/// options.distance. The contacts' points are on the scaled polygons (their doubles) and their
+/// normals doubles near the exact ones: contact_as_typed gives the values as typed.
+[[nodiscard]] std::vector<Contact> find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
+                                                           const ContactFinding& options, const ScaledPolygons& scaled,
+                                                           std::vector<ContactOrigin>* origins = nullptr);
 [[nodiscard]] std::vector<Contact> find_contacts_of_simple(const ExactPolygon& body, const std::vector<ExactPolygon>& obstacles,
-                                                           const ContactFinding& options, const Dyadic& distance,
+                                                           const ContactFinding& options, const ScaledPolygons& scaled,
                                                            std::vector<ContactOrigin>* origins = nullptr);
 }  // namespace detail
 
