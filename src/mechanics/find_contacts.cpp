@@ -76,7 +76,8 @@ bool inside_line_beyond(const P& x, const P& a, const P& b, const Distance& dist
 template <class P, class Distance>
 void vertex_on_edge(const std::vector<P>& touching, const std::vector<P>& touched, bool body_is_touching, bool touching_reversed,
                     bool touched_reversed, std::size_t obstacle, const ContactFinding& o, double point_distance,
-                    const Distance& distance, std::vector<Contact>& out, std::vector<ContactOrigin>& origins) {
+                    const Distance& distance, std::vector<Contact>& out, std::vector<ContactOrigin>& origins,
+                    std::vector<P>& points) {
     const std::size_t n = touching.size(), m = touched.size();
     const EdgeGrid grid = grid_of(std::span<const P>(touched), point_distance);
     for (std::size_t i = 0; i < n; ++i) {
@@ -100,6 +101,7 @@ void vertex_on_edge(const std::vector<P>& touching, const std::vector<P>& touche
             const Vec2 out_n = outward(rounded(a), rounded(b));
             const Vec2 normal = body_is_touching ? out_n : Vec2(-out_n);
             out.push_back(Contact::make(rounded(v), normal, o.mu, o.mu_kinetic));
+            points.push_back(v);
             origins.push_back({body_is_touching, obstacle, given_vertex(i, n, touching_reversed), given_edge(k, m, touched_reversed)});
         }
     }
@@ -194,8 +196,10 @@ std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygo
 
 namespace {
 
+template <class P, class Distance>
 std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector<ContactOrigin>& found_origins,
-                            const ContactFinding& options, double point_distance, std::vector<ContactOrigin>* origins);
+                            const std::vector<P>& points, const ContactFinding& options, double point_distance,
+                            const Distance& distance, std::vector<ContactOrigin>* origins);
 
 // The contacts of polygons whose coordinates may be the given ones scaled (scaled_polygons):
 // `point_distance` the distance between points there (the double of `distance`, exact), while
@@ -208,24 +212,29 @@ std::vector<Contact> contacts_of(std::span<const P> body, const std::vector<std:
     const bool body_reversed = !is_counter_clockwise(body);
     std::vector<Contact> found;
     std::vector<ContactOrigin> found_origins;
+    std::vector<P> points;  // each contact's point, exactly
     for (std::size_t k = 0; k < obstacles.size(); ++k) {
         const std::span<const P> given(obstacles[k]);
         const std::vector<P> o = counter_clockwise(given);
         const bool reversed = !is_counter_clockwise(given);
-        vertex_on_edge(b, o, true, body_reversed, reversed, k, options, point_distance, distance, found, found_origins);
-        vertex_on_edge(o, b, false, reversed, body_reversed, k, options, point_distance, distance, found, found_origins);
+        vertex_on_edge(b, o, true, body_reversed, reversed, k, options, point_distance, distance, found, found_origins, points);
+        vertex_on_edge(o, b, false, reversed, body_reversed, k, options, point_distance, distance, found, found_origins, points);
     }
-    return merged(found, found_origins, options, point_distance, origins);
+    return merged(found, found_origins, points, options, point_distance, distance, origins);
 }
 
+template <class P, class Distance>
 std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector<ContactOrigin>& found_origins,
-                            const ContactFinding& options, double point_distance, std::vector<ContactOrigin>* origins) {
+                            const std::vector<P>& points, const ContactFinding& options, double point_distance,
+                            const Distance& distance, std::vector<ContactOrigin>* origins) {
     // One contact for points and normals both within the distance (the first kept), as the plain
     // comparison of every pair would merge them: the kept ones hashed by cells of side 2 d, so a
     // contact is compared only with those in the 3 x 3 cells around it (points within d are in
-    // neighbouring cells even after rounding). Exact coordinates key the cells when d is 0 or
-    // below the coordinates' resolution. O(k) expected for k contacts found.
+    // neighbouring cells even after rounding). The points' doubles key the cells when d is 0 or
+    // below the coordinates' resolution; the points themselves are compared exactly. O(k)
+    // expected for k contacts found.
     std::vector<Contact> out;
+    std::vector<std::size_t> kept;  // the contact found that each one kept is
     std::unordered_map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>, CellHash> cells;
     std::map<std::pair<double, double>, std::vector<std::size_t>> exact_points;
     const double side = 2.0 * point_distance;
@@ -235,9 +244,9 @@ std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector
         if (!(std::abs(x) < 0x1p62) || !(std::abs(y) < 0x1p62)) return std::nullopt;
         return std::pair(static_cast<std::int64_t>(x), static_cast<std::int64_t>(y));
     };
-    const auto same = [&](const Contact& c, std::size_t k) {
-        const Contact& d = out[k];
-        return (c.point - d.point).norm() <= point_distance && (c.normal - d.normal).norm() <= options.distance;
+    const auto same = [&](std::size_t f, std::size_t k) {
+        const P& q = points[kept[k]];
+        return (found[f].normal - out[k].normal).norm() <= options.distance && within(points[f], q, q, distance, point_distance);
     };
     if (origins != nullptr) origins->clear();
     for (std::size_t f = 0; f < found.size(); ++f) {
@@ -249,7 +258,7 @@ std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector
                 for (std::int64_t dy = -1; dy <= 1 && !repeated; ++dy) {
                     const auto it = cells.find({cell->first + dx, cell->second + dy});
                     if (it == cells.end()) continue;
-                    repeated = std::any_of(it->second.begin(), it->second.end(), [&](std::size_t k) { return same(c, k); });
+                    repeated = std::any_of(it->second.begin(), it->second.end(), [&](std::size_t k) { return same(f, k); });
                 }
             }
         }
@@ -259,7 +268,7 @@ std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector
         if (!repeated && !cell) {
             const auto it = exact_points.find(key);
             if (it != exact_points.end()) {
-                repeated = std::any_of(it->second.begin(), it->second.end(), [&](std::size_t k) { return same(c, k); });
+                repeated = std::any_of(it->second.begin(), it->second.end(), [&](std::size_t k) { return same(f, k); });
             }
         }
         if (repeated) continue;
@@ -269,6 +278,7 @@ std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector
             exact_points[key].push_back(out.size());
         }
         out.push_back(c);
+        kept.push_back(f);
         if (origins != nullptr) origins->push_back(found_origins[f]);
     }
     return out;

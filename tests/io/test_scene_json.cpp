@@ -196,5 +196,20 @@ TEST(SceneJson, CornerContactsOfDecimalsAreKeptApart) {
     EXPECT_EQ(count("0.12345678912341", "1.12345678912341", "-0.87654321087659"), 2u);
 }
 
+// Review-32: at contact distance 0, the body's corner on the floor and the floor's corner 1e-30
+// beyond it on the body's bottom edge are two contacts (their points differ), although their
+// doubles are equal: the merge compares the points themselves.
+TEST(SceneJson, ContactsOfDistinctExactPointsAreNotMerged) {
+    const Scene s = read_scene_text(R"({"body": {"mass": 1, "com": [1.2777777777777777777777777, 0.8333333333333333333333333],
+        "inertia": 0.1, "polygon": [[0.7777777777777777777777777, 0.3333333333333333333333333],
+        [1.7777777777777777777777777, 0.3333333333333333333333333], [1.7777777777777777777777777, 1.3333333333333333333333333],
+        [0.7777777777777777777777777, 1.3333333333333333333333333]]}, "obstacles": [{"polygon": [
+        [-0.2222222222222222222222223, -0.6666666666666666666666667], [0.777777777777777777777777700001, -0.6666666666666666666666667],
+        [0.777777777777777777777777700001, 0.3333333333333333333333333], [-0.2222222222222222222222223, 0.3333333333333333333333333]]}],
+        "contact_distance": 0})");
+    ASSERT_EQ(s.contacts.size(), 2u);
+    EXPECT_NE(s.contacts[0].exact_values()->point[0], s.contacts[1].exact_values()->point[0]);
+}
+
 }  // namespace
 }  // namespace momentlab

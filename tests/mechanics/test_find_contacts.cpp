@@ -184,7 +184,7 @@ std::vector<Contact> brute_force(const Polygon& body_in, const std::vector<Polyg
     std::vector<Contact> out;
     for (const Contact& c : found) {
         if (std::none_of(out.begin(), out.end(), [&](const Contact& d) {
-                return (c.point - d.point).norm() <= distance && (c.normal - d.normal).norm() <= distance;
+                return near_exactly(c.point, d.point, distance) && (c.normal - d.normal).norm() <= distance;
             })) {
             out.push_back(c);
         }
