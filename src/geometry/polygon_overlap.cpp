@@ -49,10 +49,7 @@ bool on_boundary(std::span<const ExactPoint> polygon, const ExactPoint& x) {
 // A double point as a point of the polygons' kind.
 void as_point(const Vec2& x, Vec2& out) { out = x; }
 void as_point(const Vec2& x, ExactPoint& out) { out = {Dyadic(x.x()), Dyadic(x.y())}; }
-// The edge grid of a polygon (of exact points: of their doubles; the grid's margin covers the
-// rounding).
-EdgeGrid grid_of(std::span<const Vec2> p) { return EdgeGrid(p, 0.0); }
-EdgeGrid grid_of(std::span<const ExactPoint> p) { return EdgeGrid(rounded(p), 0.0); }
+
 
 // Where the other polygon's boundary meets an edge pq: at p + (num / den)(q - p), den > 0,
 // through the other's vertex `index` or through the inside of its edge `index` (from that
@@ -172,7 +169,7 @@ double parameter(const Meeting& m) {
 // whether b's boundary meets a's at all.
 template <class P>
 std::optional<Vec2> overlap_along(const std::vector<P>& a, const std::vector<P>& b, bool& met) {
-    const EdgeGrid grid = grid_of(b);
+    const EdgeGrid grid(std::span<const P>(b), 0.0);
     std::vector<std::size_t> candidates;
     const std::size_t n = a.size();
     for (std::size_t i = 0; i < n; ++i) {

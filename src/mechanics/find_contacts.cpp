@@ -28,18 +28,6 @@ std::vector<P> counter_clockwise(std::span<const P> p) {
     return q;
 }
 
-// The polygons' points: doubles, or exact (ExactPoint, with the distance exact too).
-bool within(const Vec2& p, const Vec2& a, const Vec2& b, double distance, double) {
-    return within_distance_of_segment(p, a, b, distance);
-}
-bool within(const Vec2& p, const Vec2& a, const Vec2& b, const Dyadic& distance, double rounded_distance) {
-    return within_distance_of_segment(p, a, b, distance, rounded_distance);
-}
-bool within(const ExactPoint& p, const ExactPoint& a, const ExactPoint& b, const Dyadic& distance, double rounded_distance) {
-    return within_distance_of_segment(p, a, b, distance, rounded_distance);
-}
-EdgeGrid grid_of(std::span<const Vec2> p, double distance) { return EdgeGrid(p, distance); }
-EdgeGrid grid_of(std::span<const ExactPoint> p, double distance) { return EdgeGrid(rounded(p), distance); }
 
 // Outward unit normal of the counter-clockwise edge a -> b.
 Vec2 outward(const Vec2& a, const Vec2& b) {
@@ -63,32 +51,32 @@ std::size_t given_edge(std::size_t i, std::size_t n, bool reversed) { return rev
 // origin goes to `origins`, against obstacle `obstacle`.
 // Whether x lies beyond the line of the counter-clockwise edge ab, on its inner side, by more
 // than `distance`: (b - a) x (x - a) > distance |b - a|, exactly.
-template <class P, class Distance>
-bool inside_line_beyond(const P& x, const P& a, const P& b, const Distance& distance) {
+template <class P>
+bool inside_line_beyond(const P& x, const P& a, const P& b, const Dyadic& distance) {
     using D = Dyadic;
     const D dx = D(b.x()) - D(a.x()), dy = D(b.y()) - D(a.y());
     const D cross = dx * (D(x.y()) - D(a.y())) - dy * (D(x.x()) - D(a.x()));
     if (cross.sign() != Sign::Positive) return false;
-    const D d(distance);
-    return compare(cross * cross, d * d * (dx * dx + dy * dy)) > 0;
+    return compare(cross * cross, distance * distance * (dx * dx + dy * dy)) > 0;
 }
 
-template <class P, class Distance>
+template <class P>
 void vertex_on_edge(const std::vector<P>& touching, const std::vector<P>& touched, bool body_is_touching, bool touching_reversed,
                     bool touched_reversed, std::size_t obstacle, const ContactFinding& o, double point_distance,
-                    const Distance& distance, std::vector<Contact>& out, std::vector<ContactOrigin>& origins,
+                    const Dyadic& distance, std::vector<Contact>& out, std::vector<ContactOrigin>& origins,
                     std::vector<P>& points) {
     const std::size_t n = touching.size(), m = touched.size();
-    const EdgeGrid grid = grid_of(std::span<const P>(touched), point_distance);
+    const EdgeGrid grid(std::span<const P>(touched), point_distance);
     for (std::size_t i = 0; i < n; ++i) {
         const P& v = touching[i];
         for (std::size_t k : grid.near(rounded(v))) {
             const P& a = touched[k];
             const P& b = touched[(k + 1) % m];
-            if (!within(v, a, b, distance, point_distance)) continue;
+            if (!within_distance_of_segment(v, a, b, distance, point_distance)) continue;
             // Vertex on vertex: an obstacle vertex at a body vertex is left to that body
             // vertex, whose contact takes the supporting obstacle edge's normal.
-            if (!body_is_touching && (within(v, a, a, distance, point_distance) || within(v, b, b, distance, point_distance))) {
+            if (!body_is_touching && (within_distance_of_segment(v, a, a, distance, point_distance) ||
+                                      within_distance_of_segment(v, b, b, distance, point_distance))) {
                 continue;
             }
             // The neighbours of v must stay outside the touched edge's line (within the distance).
@@ -134,8 +122,7 @@ Contact contact_as_typed(const Contact& found, const Rational2& v, const Rationa
     if (along.sign() == Sign::Negative) n = {-n[0], -n[1]};
     const Rational largest = compare(n[0] * n[0], n[1] * n[1]) >= 0 ? n[0] : n[1];
     const Rational size = largest.sign() == Sign::Negative ? -largest : largest;
-    return Contact::make(v, Rational2{Rational::quotient(n[0].num() * size.den(), n[0].den() * size.num()),
-                                              Rational::quotient(n[1].num() * size.den(), n[1].den() * size.num())}, mu, std::nullopt, found.name);
+    return Contact::make(v, Rational2{n[0] / size, n[1] / size}, mu, std::nullopt, found.name);
 }
 
 std::optional<ScaledPolygons> scaled_polygons(const std::vector<std::vector<Rational2>>& exact) {
@@ -196,17 +183,17 @@ std::vector<Contact> find_contacts(const Polygon& body, const std::vector<Polygo
 
 namespace {
 
-template <class P, class Distance>
+template <class P>
 std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector<ContactOrigin>& found_origins,
                             const std::vector<P>& points, const ContactFinding& options, double point_distance,
-                            const Distance& distance, std::vector<ContactOrigin>* origins);
+                            const Dyadic& distance, std::vector<ContactOrigin>* origins);
 
 // The contacts of polygons whose coordinates may be the given ones scaled (scaled_polygons):
 // `point_distance` the distance between points there (the double of `distance`, exact), while
 // the unit normals compare with options.distance itself.
-template <class P, class Distance>
+template <class P>
 std::vector<Contact> contacts_of(std::span<const P> body, const std::vector<std::vector<P>>& obstacles, const ContactFinding& options,
-                                 double point_distance, const Distance& distance, std::vector<ContactOrigin>* origins) {
+                                 double point_distance, const Dyadic& distance, std::vector<ContactOrigin>* origins) {
     check_distance(options);
     const std::vector<P> b = counter_clockwise(body);
     const bool body_reversed = !is_counter_clockwise(body);
@@ -223,10 +210,10 @@ std::vector<Contact> contacts_of(std::span<const P> body, const std::vector<std:
     return merged(found, found_origins, points, options, point_distance, distance, origins);
 }
 
-template <class P, class Distance>
+template <class P>
 std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector<ContactOrigin>& found_origins,
                             const std::vector<P>& points, const ContactFinding& options, double point_distance,
-                            const Distance& distance, std::vector<ContactOrigin>* origins) {
+                            const Dyadic& distance, std::vector<ContactOrigin>* origins) {
     // One contact for points and normals both within the distance (the first kept), as the plain
     // comparison of every pair would merge them: the kept ones hashed by cells of side 2 d, so a
     // contact is compared only with those in the 3 x 3 cells around it (points within d are in
@@ -246,7 +233,8 @@ std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector
     };
     const auto same = [&](std::size_t f, std::size_t k) {
         const P& q = points[kept[k]];
-        return (found[f].normal - out[k].normal).norm() <= options.distance && within(points[f], q, q, distance, point_distance);
+        return (found[f].normal - out[k].normal).norm() <= options.distance &&
+               within_distance_of_segment(points[f], q, q, distance, point_distance);
     };
     if (origins != nullptr) origins->clear();
     for (std::size_t f = 0; f < found.size(); ++f) {
@@ -288,7 +276,7 @@ std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector
 
 std::vector<Contact> detail::find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
                                                      const ContactFinding& options, std::vector<ContactOrigin>* origins) {
-    return contacts_of(std::span<const Vec2>(body), obstacles, options, options.distance, options.distance, origins);
+    return contacts_of(std::span<const Vec2>(body), obstacles, options, options.distance, Dyadic(options.distance), origins);
 }
 
 std::vector<Contact> detail::find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,

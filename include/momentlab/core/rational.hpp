@@ -60,6 +60,8 @@ public:
     friend Rational operator+(const Rational& a, const Rational& b);
     friend Rational operator-(const Rational& a, const Rational& b);
     friend Rational operator*(const Rational& a, const Rational& b);
+    /// a / b for b != 0 (std::invalid_argument for 0).
+    friend Rational operator/(const Rational& a, const Rational& b) { return quotient(a.num_ * b.den_, a.den_ * b.num_); }
     /// -1, 0 or +1 as a < b, a == b, a > b (exact).
     friend int compare(const Rational& a, const Rational& b);
     friend bool operator==(const Rational& a, const Rational& b) { return compare(a, b) == 0; }

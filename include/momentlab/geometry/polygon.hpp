@@ -95,6 +95,8 @@ public:
     /// Throws std::invalid_argument for no vertices, a non-finite vertex or a distance that is
     /// negative or not finite.
     EdgeGrid(std::span<const Vec2> polygon, double distance);
+    /// The grid of exact points' doubles (its margin covers their rounding).
+    EdgeGrid(std::span<const ExactPoint> polygon, double distance) : EdgeGrid(rounded(polygon), distance) {}
     /// The edges (edge k runs from vertex k to k + 1) entered in the cell of q, increasing; none
     /// when q lies beyond the polygon's box grown by the distance.
     [[nodiscard]] std::span<const std::size_t> near(const Vec2& q) const;
