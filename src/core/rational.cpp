@@ -1,5 +1,6 @@
 #include "momentlab/core/rational.hpp"
 #include "momentlab/core/rounding.hpp"
+#include "powers_of_five.hpp"
 
 #include <algorithm>
 #include <array>
@@ -44,54 +45,70 @@ Dyadic power(Dyadic base, std::int64_t k) {
     return out;
 }
 
-// The exact decimal digits of the finite double |x| != 0, without trailing zeros, into `out`
-// (room for 800), and the power of ten of the last: |x| = digits 10^exponent. With x = M 2^k (M
-// odd), that is the integer M 2^k for k >= 0 and M 5^-k 10^k for k < 0 (at most 767 digits),
-// built in base-10^9 limbs multiplied by 2^30 or 5^13 at a time (a limb times either, plus a
-// carry, stays below 2^64). Returns the number of digits.
-std::size_t exact_digits(double x, char* out, std::int64_t& exponent) {
-    constexpr std::uint64_t kBase = 1000000000;
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &x, sizeof bits);
-    const auto biased = static_cast<int>((bits >> 52) & 0x7ff);
-    std::uint64_t m = bits & ((std::uint64_t{1} << 52) - 1);
-    if (biased != 0) m |= std::uint64_t{1} << 52;
-    std::int64_t k = (biased != 0 ? biased : 1) - 1075;
-    const int twos = std::countr_zero(m);
-    m >>= twos;
-    k += twos;
-    std::array<std::uint32_t, 90> limbs{};  // least significant first
-    std::size_t n = 0;
-    for (; m != 0; m /= kBase) limbs[n++] = static_cast<std::uint32_t>(m % kBase);
-    const auto times = [&](std::uint64_t factor) {
+// The finite double |x| != 0 as N 10^exponent with N an integer not divisible by 10, N in
+// base-10^9 limbs, least significant first. With x = M 2^k (M odd), N is M 5^-k and the
+// exponent k for k < 0 (M 5^-k is odd and not a multiple of 5 times 2: no trailing zero), and
+// M 2^k without its trailing zeros for k >= 0; at most 767 digits, built by multiplying by
+// 5^13 or 2^30 at a time (a limb times either, plus a carry, stays below 2^64).
+struct DecimalLimbs {
+    static constexpr std::uint64_t kBase = 1000000000;
+    std::array<std::uint32_t, 90> limbs;
+    std::size_t size = 0;
+    std::int64_t exponent = 0;
+
+    explicit DecimalLimbs(double x) {
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &x, sizeof bits);
+        const auto biased = static_cast<int>((bits >> 52) & 0x7ff);
+        std::uint64_t m = bits & ((std::uint64_t{1} << 52) - 1);
+        if (biased != 0) m |= std::uint64_t{1} << 52;
+        std::int64_t k = (biased != 0 ? biased : 1) - 1075;
+        const int twos = std::countr_zero(m);
+        m >>= twos;
+        k += twos;
+        for (; m != 0; m /= kBase) limbs[size++] = static_cast<std::uint32_t>(m % kBase);
+        for (std::int64_t left = k >= 0 ? k : -k; left > 0;) {
+            const std::int64_t step = std::min<std::int64_t>(left, k >= 0 ? 30 : 13);
+            times(k >= 0 ? std::uint64_t{1} << step : detail::kPowersOfFive[static_cast<std::size_t>(step)]);
+            left -= step;
+        }
+        exponent = k >= 0 ? 0 : k;
+        if (k > 0) {  // an integer: its trailing zeros go to the exponent
+            std::size_t zero_limbs = 0;
+            while (limbs[zero_limbs] == 0) ++zero_limbs;
+            std::copy(limbs.begin() + static_cast<std::ptrdiff_t>(zero_limbs), limbs.begin() + static_cast<std::ptrdiff_t>(size), limbs.begin());
+            size -= zero_limbs;
+            exponent += 9 * static_cast<std::int64_t>(zero_limbs);
+            while (limbs[0] % 10 == 0) {
+                std::uint64_t remainder = 0;
+                for (std::size_t i = size; i-- > 0;) {
+                    const std::uint64_t v = remainder * kBase + limbs[i];
+                    limbs[i] = static_cast<std::uint32_t>(v / 10);
+                    remainder = v % 10;
+                }
+                if (limbs[size - 1] == 0) --size;
+                ++exponent;
+            }
+        }
+    }
+    // The number of decimal digits of N.
+    [[nodiscard]] std::size_t digits() const {
+        std::size_t n = 9 * (size - 1);
+        for (std::uint32_t top = limbs[size - 1]; top != 0; top /= 10) ++n;
+        return n;
+    }
+
+private:
+    void times(std::uint64_t factor) {
         std::uint64_t carry = 0;
-        for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t i = 0; i < size; ++i) {
             const std::uint64_t product = limbs[i] * factor + carry;
             limbs[i] = static_cast<std::uint32_t>(product % kBase);
             carry = product / kBase;
         }
-        for (; carry != 0; carry /= kBase) limbs[n++] = static_cast<std::uint32_t>(carry % kBase);
-    };
-    for (std::int64_t left = k >= 0 ? k : -k; left > 0;) {
-        const std::int64_t step = std::min<std::int64_t>(left, k >= 0 ? 30 : 13);
-        std::uint64_t factor = 1;
-        for (std::int64_t i = 0; i < step; ++i) factor *= k >= 0 ? 2 : 5;
-        times(factor);
-        left -= step;
+        for (; carry != 0; carry /= kBase) limbs[size++] = static_cast<std::uint32_t>(carry % kBase);
     }
-    std::size_t length = 0;
-    for (std::size_t i = n; i-- > 0;) {
-        char limb[9];
-        std::uint32_t v = limbs[i];
-        for (int d = 8; d >= 0; --d, v /= 10) limb[d] = static_cast<char>('0' + v % 10);
-        int from = 0;
-        if (i + 1 == n) while (from < 8 && limb[from] == '0') ++from;  // the leading limb unpadded
-        for (int d = from; d < 9; ++d) out[length++] = limb[d];
-    }
-    exponent = k >= 0 ? 0 : k;
-    while (out[length - 1] == '0') --length, ++exponent;
-    return length;
-}
+};
 
 // k when the odd positive integer d is 5^k (log2 5^k = 2.3219... k: d's bit length tells k to
 // within one), else none.
@@ -188,13 +205,22 @@ bool Rational::spells(std::string_view text, double value) {
     if ((b - a) + (f - c) > 38) {
         // Longer: against the double's own exact digits. A double's exact text has at most 767
         // significant digits; beyond, the text is not one.
+        // Compared nine digits at a time from the last, without writing the double's digits.
         if ((b - a) + (f - c) > 800 || value == 0.0 || (value < 0.0) != negative) return false;
-        char exact[800];
-        std::int64_t exponent = 0;
-        const std::size_t length = exact_digits(value, exact, exponent);
+        const DecimalLimbs exact(value);
         const auto whole = static_cast<std::size_t>(b - a);
-        return exponent == e && length == whole + static_cast<std::size_t>(f - c) && std::equal(a, b, exact) &&
-               std::equal(c, f, exact + whole);
+        const std::size_t length = whole + static_cast<std::size_t>(f - c);
+        if (exact.exponent != e || exact.digits() != length) return false;
+        char text_digits[800];
+        std::memcpy(text_digits, a, whole);
+        std::memcpy(text_digits + whole, c, length - whole);
+        for (std::size_t j = 0; j < exact.size; ++j) {
+            const std::size_t last = length - 9 * j, first = last >= 9 ? last - 9 : 0;
+            std::uint32_t limb = 0;
+            for (std::size_t i = first; i < last; ++i) limb = limb * 10 + static_cast<std::uint32_t>(text_digits[i] - '0');
+            if (limb != exact.limbs[j]) return false;
+        }
+        return true;
     }
     U digits = 0;
     std::uint64_t chunk = 0;  // fewer than 19 digits, folded into D when full
@@ -228,18 +254,12 @@ bool Rational::spells(std::string_view text, double value) {
     if (static_cast<std::int64_t>(t) + e != k) return false;
     // D_odd 5^e = M: for e >= 0, D_odd 5^e reaches M; for e < 0, M 5^-e reaches D_odd (in steps
     // of at most 5^27 < 2^63, each checked against its target first: nothing overflows).
-    static constexpr auto kFives = [] {
-        std::array<std::uint64_t, 28> fives{};
-        fives[0] = 1;
-        for (std::size_t i = 1; i < fives.size(); ++i) fives[i] = fives[i - 1] * 5;
-        return fives;
-    }();
     const std::int64_t fives = e >= 0 ? e : -e;
     if ((digits >> 64) == 0) {  // (most texts: 64-bit products, checked for overflow)
         std::uint64_t small = e >= 0 ? static_cast<std::uint64_t>(digits) : big_m;
         const std::uint64_t target = e >= 0 ? big_m : static_cast<std::uint64_t>(digits);
         for (std::int64_t left = fives; left > 0; left -= 27) {
-            const std::uint64_t five = kFives[static_cast<std::size_t>(std::min<std::int64_t>(left, 27))];
+            const std::uint64_t five = detail::kPowersOfFive[static_cast<std::size_t>(std::min<std::int64_t>(left, 27))];
             if (__builtin_mul_overflow(small, five, &small) || small > target) return false;
         }
         return small == target;
@@ -247,7 +267,7 @@ bool Rational::spells(std::string_view text, double value) {
     U small = e >= 0 ? digits : U(big_m);
     const U target = e >= 0 ? U(big_m) : digits;
     for (std::int64_t left = fives; left > 0; left -= 27) {
-        const U five = kFives[static_cast<std::size_t>(std::min<std::int64_t>(left, 27))];
+        const U five = detail::kPowersOfFive[static_cast<std::size_t>(std::min<std::int64_t>(left, 27))];
         if (small > target / five) return false;  // (then small 5^j > target)
         small *= five;
     }
@@ -314,8 +334,7 @@ std::optional<Rational> Rational::parse(std::string_view text) {
         std::int64_t d = 0;
         for (const char c : digits) d = d * 10 + (c - '0');
         while (fives > 0 && d % 5 == 0) d /= 5, --fives;
-        std::int64_t five_power = 1;
-        for (std::int64_t k = 0; k < (exponent > 0 ? exponent : fives); ++k) five_power *= 5;
+        const auto five_power = static_cast<std::int64_t>(detail::kPowersOfFive[static_cast<std::size_t>(exponent > 0 ? exponent : fives)]);
         Dyadic num = Dyadic::from_integer(negative ? -d : d).scaled(exponent);
         if (exponent > 0) num = num * Dyadic::from_integer(five_power);
         Rational out;

@@ -60,7 +60,8 @@ struct JsonNumber {
     double value = 0.0;
     std::string_view text;
     /// Whether the text spells `value` exactly, when the reader found out while reading it (the
-    /// plain reader does for texts of at most 19 digits); Unknown otherwise.
+    /// plain reader does for texts of at most 19 digits and for texts of any length whose
+    /// exponent, as digits 10^e, is negative); Unknown otherwise.
     enum class Spelling : std::uint8_t { Unknown, Exact, Inexact } spelling = Spelling::Unknown;
 };
 

@@ -1,6 +1,8 @@
 // The plain reader: the JSON that programs write, read in one pass (docs/architecture.md,
 // "The JSON reader"); anything else goes to the JSON library (json_read.cpp).
 #include "json_read.hpp"
+#include "../core/power_of_two.hpp"
+#include "../core/powers_of_five.hpp"
 
 #include <array>
 #include <bit>
@@ -135,15 +137,17 @@ private:
             if (digits < 19) w = w * 10 + static_cast<std::uint64_t>(c - '0');
             ++digits;
         };
+        const char* const integer_begin = q;
         if (*q == '0') {
             ++q;
         } else {
             for (; q != end_ && digit(*q); ++q) take(*q);
         }
         const char* const integer_end = q;
+        const char* fraction = q;
         std::int64_t e = 0;
         if (q != end_ && *q == '.') {
-            const char* const fraction = ++q;
+            fraction = ++q;
             for (; q != end_ && digit(*q); ++q) {
                 if (digits == 0 && *q == '0') continue;  // (leading zeros of 0.00x)
                 take(*q);
@@ -151,6 +155,7 @@ private:
             if (q == fraction) return false;
             e = -(q - fraction);
         }
+        const char* const fraction_end = q;
         if (q != end_ && (*q == 'e' || *q == 'E')) {
             ++q;
             const bool minus = q != end_ && *q == '-';
@@ -167,7 +172,8 @@ private:
         const std::string_view text(start, static_cast<std::size_t>(q - start));
         double x = 0.0;
         using S = JsonNumber::Spelling;
-        const S spelling = digits <= 19 ? spelled(w, e, x) : S::Unknown;
+        S spelling = digits <= 19 ? spelled(w, e, x) : S::Unknown;
+        if (spelling == S::Unknown && e < 0) spelling = spelled_long({integer_begin, integer_end}, {fraction, fraction_end}, e, x);
         if (spelling == S::Exact) {
             if (negative && !(x == 0.0 && q == integer_end)) x = -x;  // ("-0" is the integer 0)
         } else if (digits <= 19 && w <= (std::uint64_t{1} << 53) && e >= -22 && e <= 22) {
@@ -191,23 +197,17 @@ private:
     static constexpr std::array<double, 23> kTens = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
                                                       1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-    static constexpr std::array<std::uint64_t, 28> kFives = [] {  // 5^27 < 2^63
-        std::array<std::uint64_t, 28> f{};
-        f[0] = 1;
-        for (std::size_t k = 1; k < f.size(); ++k) f[k] = f[k - 1] * 5;
-        return f;
-    }();
 
     // Whether w 10^e (w < 10^19) is a double, and then that double in x: w 10^e is
     // odd(w) 5^e 2^(e + twos(w)) for e >= 0, and for e < 0, when 5^-e divides w,
     // odd(w / 5^-e) 2^(e + twos(w / 5^-e)) (else it is no dyadic number); a double when the odd
     // factor is below 2^53 (the exponents here are far inside the doubles' range). Unknown for
-    // |e| > 27 (the text's spelling then decided where it is needed: Rational::spells).
+    // |e| > 27 (then spelled_long, or for e > 27 Rational::spells where it is needed).
     static JsonNumber::Spelling spelled(std::uint64_t w, std::int64_t e, double& x) {
         using S = JsonNumber::Spelling;
         if (w == 0) return x = 0.0, S::Exact;
         if (e < -27 || e > 27) return S::Unknown;
-        const std::uint64_t five = kFives[static_cast<std::size_t>(e >= 0 ? e : -e)];
+        const std::uint64_t five = detail::kPowersOfFive[static_cast<std::size_t>(e >= 0 ? e : -e)];
         std::uint64_t odd = 0;
         int twos = 0;
         if (e >= 0) {
@@ -227,6 +227,92 @@ private:
         double power = 0.0;
         std::memcpy(&power, &power_bits, sizeof power);
         x = static_cast<double>(odd) * power;
+        return S::Exact;
+    }
+
+    // The value of eight decimal digits, in three multiplications: the bytes less '0' read as
+    // one little-endian word, then neighbouring digits, pairs and quadruples combined (each
+    // step multiplies a lane by its weight and adds the next lane in the same product; Lemire,
+    // "Quickly parsing eight digits", 2018).
+    static std::uint32_t eight_digits(const char* p) {
+        std::uint64_t v = 0;
+        std::memcpy(&v, p, 8);
+        if constexpr (std::endian::native == std::endian::big) v = __builtin_bswap64(v);
+        v -= 0x3030303030303030;
+        v = (v * 10 + (v >> 8)) & 0x00ff00ff00ff00ff;          // 2-digit lanes
+        v = (v * 100 + (v >> 16)) & 0x0000ffff0000ffff;        // 4-digit lanes
+        return static_cast<std::uint32_t>((v * 10000 + (v >> 32)) & 0xffffffff);
+    }
+
+    // spelled() for a text of any length whose digits are those of `integer` then `fraction`
+    // and whose value is digits 10^e, e < 0: a double when 5^-e divides the digits D and
+    // D / 5^-e = odd 2^twos with odd < 2^53 and odd 2^(twos + e) in the doubles' range (then that
+    // double in x). D is taken in base-10^9 limbs and divided by 5^13 at a time, each remainder
+    // 0 or the text no dyadic number; a double's exact text has at most 767 significant digits.
+    // Unknown for a quotient of 128 bits or more (Rational::spells decides those).
+    static JsonNumber::Spelling spelled_long(std::string_view integer, std::string_view fraction, std::int64_t e, double& x) {
+        using S = JsonNumber::Spelling;
+        constexpr std::uint64_t kBase = 1000000000;
+        // The significant digits: without leading zeros, and trailing zeros moved to e.
+        std::string_view first = integer, second = fraction;
+        while (!first.empty() && first.front() == '0') first.remove_prefix(1);
+        if (first.empty()) {
+            while (!second.empty() && second.front() == '0') second.remove_prefix(1);
+        }
+        while (!second.empty() && second.back() == '0') second.remove_suffix(1), ++e;
+        if (second.empty()) {
+            while (!first.empty() && first.back() == '0') first.remove_suffix(1), ++e;
+        }
+        const std::size_t length = first.size() + second.size();
+        if (length == 0) return x = 0.0, S::Exact;
+        if (length > 767) return S::Inexact;
+        if (e >= 0) return S::Unknown;
+        char text[767];
+        std::memcpy(text, first.data(), first.size());
+        std::memcpy(text + first.size(), second.data(), second.size());
+        std::array<std::uint32_t, 86> limbs;  // D, least significant first
+        std::size_t size = 0;
+        std::size_t last = length;
+        for (; last >= 9; last -= 9) {
+            limbs[size++] = static_cast<std::uint32_t>(text[last - 9] - '0') * 100000000 + eight_digits(text + last - 8);
+        }
+        if (last > 0) {
+            std::uint32_t limb = 0;
+            for (std::size_t i = 0; i < last; ++i) limb = limb * 10 + static_cast<std::uint32_t>(text[i] - '0');
+            limbs[size++] = limb;
+        }
+        for (std::int64_t fives = -e; fives > 0;) {
+            const std::int64_t step = fives < 13 ? fives : 13;
+            const std::uint64_t divisor = detail::kPowersOfFive[static_cast<std::size_t>(step)];
+            std::uint64_t remainder = 0;
+            for (std::size_t i = size; i-- > 0;) {
+                const std::uint64_t current = remainder * kBase + limbs[i];  // < 5^13 10^9 < 2^61
+                limbs[i] = static_cast<std::uint32_t>(current / divisor);
+                remainder = current % divisor;
+            }
+            if (remainder != 0) return S::Inexact;
+            while (size > 0 && limbs[size - 1] == 0) --size;
+            fives -= step;
+        }
+        __extension__ typedef unsigned __int128 U;
+        U quotient = 0;
+        constexpr U kRoom = ~U{0} / kBase - 1;  // quotient * 10^9 + a limb stays below 2^128
+        for (std::size_t i = size; i-- > 0;) {
+            if (quotient > kRoom) return S::Unknown;
+            quotient = quotient * kBase + limbs[i];
+        }
+        const int twos = quotient == 0 ? 0 : (static_cast<std::uint64_t>(quotient) != 0 ? std::countr_zero(static_cast<std::uint64_t>(quotient))
+                                                                                       : 64 + std::countr_zero(static_cast<std::uint64_t>(quotient >> 64)));
+        const U odd = quotient >> twos;
+        if (odd >= (U{1} << 53)) return S::Inexact;
+        // odd 2^(twos + e) when it is a double: one exact product when it is a normal double;
+        // else ldexp, exact then, and only then giving back odd.
+        const std::int64_t power = twos + e;
+        if (power < -1200 || power > 1100) return S::Inexact;
+        const std::int64_t top = power + std::bit_width(static_cast<std::uint64_t>(odd)) - 1;
+        if (top >= -1022 && top <= 1023) return x = detail::times_power_of_two(static_cast<double>(odd), power), S::Exact;
+        x = std::ldexp(static_cast<double>(odd), static_cast<int>(power));
+        if (!std::isfinite(x) || std::ldexp(x, static_cast<int>(-power)) != static_cast<double>(odd)) return S::Inexact;
         return S::Exact;
     }
 

@@ -1,6 +1,9 @@
 #include "momentlab/mechanics/find_contacts.hpp"
 
+#include "momentlab/core/approx.hpp"
+#include "momentlab/core/predicates.hpp"
 #include "momentlab/geometry/polygon.hpp"
+#include "../core/error_free.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -60,11 +63,81 @@ bool inside_line_beyond(const P& x, const P& a, const P& b, const Dyadic& distan
     return compare(cross * cross, distance * distance * (dx * dx + dy * dy)) > 0;
 }
 
+// The edge a -> b (counter-clockwise) whose perpendicular is a contact's normal: outward when
+// `outward`, else inward.
+template <class P>
+struct TouchedEdge {
+    P a, b;
+    bool outward;
+};
+
+// A coordinate as the filter reads it (core/approx.hpp): a double itself, an exact number its
+// rounding to nearest (relative error at most 2^-53, or 2^-1075 below the normal range: within 2^-1074).
+Approx approx_of(double x) { return Approx::exact(x); }
+Approx approx_of(const Dyadic& x) {
+    const double v = x.to_double();
+    return x.fits_double() ? Approx::exact(v) : Approx::within(v, std::fabs(v) * 0x1p-53 + 0x1p-1074);
+}
+
+// The sign of f on the perpendiculars' coordinates: on their approximations where the bound
+// decides it, else in Dyadic arithmetic.
+template <class F, class P>
+Sign normals_sign(const F& f, const TouchedEdge<P>& e1, const TouchedEdge<P>& e2) {
+    const auto perpendicular = [](const TouchedEdge<P>& e, auto number) {  // (d.y, -d.x), d = b - a, outward
+        using T = decltype(number(e.a.x()));
+        const T dx = number(e.b.x()) - number(e.a.x()), dy = number(e.b.y()) - number(e.a.y());
+        return e.outward ? std::array<T, 2>{dy, T(-dx)} : std::array<T, 2>{T(-dy), dx};
+    };
+    Sign s = Sign::Zero;
+    const auto approx = [](const auto& x) { return approx_of(x); };
+    if (certified_sign(f(perpendicular(e1, approx), perpendicular(e2, approx), approx), s)) return s;
+    const auto exact = [](const auto& x) { return Dyadic(x); };
+    return f(perpendicular(e1, exact), perpendicular(e2, exact), exact).sign();
+}
+
+// Whether the unit normals n_i = e_i / |e_i| of two touched edges' perpendiculars e_i lie within
+// d of each other, exactly: |n_1 - n_2|^2 = 2 - 2 n_1 . n_2 <= d^2, that is
+// s = e_1 . e_2 >= c |e_1| |e_2| with c = 1 - d^2 / 2: for c <= 0, s >= 0 or s^2 <= c^2 m, and
+// for c > 0, s > 0 and s^2 >= c^2 m, with m = |e_1|^2 |e_2|^2.
+// The sign of c = 1 - d^2 / 2 in normals_within.
+Sign normals_threshold(double d) { return (Dyadic(1.0) - Dyadic(d) * Dyadic(d) * Dyadic(0.5)).sign(); }
+
+// The perpendicular of a touched edge in doubles, when its coordinates' differences are exact
+// (Knuth's two-sum leaves no error): then parallel normals are told by the exact predicates on
+// doubles (the edges of a floor drawn with many collinear vertices, whose contacts at shared
+// vertices have equal normals; the filter below cannot certify a zero).
+std::optional<Vec2> exact_perpendicular(const TouchedEdge<Vec2>& e) {
+    double dx = 0, dy = 0, ex = 0, ey = 0;
+    detail::two_sum(e.b.x(), -e.a.x(), dx, ex);
+    detail::two_sum(e.b.y(), -e.a.y(), dy, ey);
+    if (ex != 0.0 || ey != 0.0 || !std::isfinite(dx) || !std::isfinite(dy)) return std::nullopt;
+    return e.outward ? Vec2(dy, -dx) : Vec2(-dy, dx);
+}
+std::optional<Vec2> exact_perpendicular(const TouchedEdge<ExactPoint>&) { return std::nullopt; }
+
+// `c` is the sign of c (normals_threshold).
+template <class P>
+bool normals_within(const TouchedEdge<P>& e1, const TouchedEdge<P>& e2, double d, Sign c) {
+    if (const std::optional<Vec2> u = exact_perpendicular(e1), v = exact_perpendicular(e2); u && v && cross2_sign(*u, *v) == Sign::Zero) {
+        return dot_sign(Vec3(u->x(), u->y(), 0.0), Vec3(v->x(), v->y(), 0.0)) == Sign::Positive || d >= 2.0;  // (|n_1 - n_2| 0 or 2)
+    }
+    const auto dot = [](const auto& u, const auto& v, const auto&) { return u[0] * v[0] + u[1] * v[1]; };
+    const Sign s = normals_sign(dot, e1, e2);
+    if (c != Sign::Positive && s != Sign::Negative) return true;
+    if (c == Sign::Positive && s != Sign::Positive) return false;
+    const auto gap = [&](const auto& u, const auto& v, const auto& number) {  // s^2 - c^2 m
+        const auto cc = number(1.0) - number(d) * number(d) * number(0.5);
+        return dot(u, v, number) * dot(u, v, number) - cc * cc * (dot(u, u, number) * dot(v, v, number));
+    };
+    const Sign g = normals_sign(gap, e1, e2);
+    return c == Sign::Positive ? g != Sign::Negative : g != Sign::Positive;
+}
+
 template <class P>
 void vertex_on_edge(const std::vector<P>& touching, const std::vector<P>& touched, bool body_is_touching, bool touching_reversed,
                     bool touched_reversed, std::size_t obstacle, const ContactFinding& o, double point_distance,
                     const Dyadic& distance, std::vector<Contact>& out, std::vector<ContactOrigin>& origins,
-                    std::vector<P>& points) {
+                    std::vector<P>& points, std::vector<TouchedEdge<P>>& edges) {
     const std::size_t n = touching.size(), m = touched.size();
     const EdgeGrid grid(std::span<const P>(touched), point_distance);
     for (std::size_t i = 0; i < n; ++i) {
@@ -90,6 +163,7 @@ void vertex_on_edge(const std::vector<P>& touching, const std::vector<P>& touche
             const Vec2 normal = body_is_touching ? out_n : Vec2(-out_n);
             out.push_back(Contact::make(rounded(v), normal, o.mu, o.mu_kinetic));
             points.push_back(v);
+            edges.push_back({a, b, body_is_touching});
             origins.push_back({body_is_touching, obstacle, given_vertex(i, n, touching_reversed), given_edge(k, m, touched_reversed)});
         }
     }
@@ -185,7 +259,8 @@ namespace {
 
 template <class P>
 std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector<ContactOrigin>& found_origins,
-                            const std::vector<P>& points, const ContactFinding& options, double point_distance,
+                            const std::vector<P>& points, const std::vector<TouchedEdge<P>>& edges,
+                            const ContactFinding& options, double point_distance,
                             const Dyadic& distance, std::vector<ContactOrigin>* origins);
 
 // The contacts of polygons whose coordinates may be the given ones scaled (scaled_polygons):
@@ -200,19 +275,21 @@ std::vector<Contact> contacts_of(std::span<const P> body, const std::vector<std:
     std::vector<Contact> found;
     std::vector<ContactOrigin> found_origins;
     std::vector<P> points;  // each contact's point, exactly
+    std::vector<TouchedEdge<P>> edges;  // and the edge that gives its normal
     for (std::size_t k = 0; k < obstacles.size(); ++k) {
         const std::span<const P> given(obstacles[k]);
         const std::vector<P> o = counter_clockwise(given);
         const bool reversed = !is_counter_clockwise(given);
-        vertex_on_edge(b, o, true, body_reversed, reversed, k, options, point_distance, distance, found, found_origins, points);
-        vertex_on_edge(o, b, false, reversed, body_reversed, k, options, point_distance, distance, found, found_origins, points);
+        vertex_on_edge(b, o, true, body_reversed, reversed, k, options, point_distance, distance, found, found_origins, points, edges);
+        vertex_on_edge(o, b, false, reversed, body_reversed, k, options, point_distance, distance, found, found_origins, points, edges);
     }
-    return merged(found, found_origins, points, options, point_distance, distance, origins);
+    return merged(found, found_origins, points, edges, options, point_distance, distance, origins);
 }
 
 template <class P>
 std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector<ContactOrigin>& found_origins,
-                            const std::vector<P>& points, const ContactFinding& options, double point_distance,
+                            const std::vector<P>& points, const std::vector<TouchedEdge<P>>& edges,
+                            const ContactFinding& options, double point_distance,
                             const Dyadic& distance, std::vector<ContactOrigin>* origins) {
     // One contact for points and normals both within the distance (the first kept), as the plain
     // comparison of every pair would merge them: the kept ones hashed by cells of side 2 d, so a
@@ -231,10 +308,11 @@ std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector
         if (!(std::abs(x) < 0x1p62) || !(std::abs(y) < 0x1p62)) return std::nullopt;
         return std::pair(static_cast<std::int64_t>(x), static_cast<std::int64_t>(y));
     };
+    const Sign threshold = normals_threshold(options.distance);
     const auto same = [&](std::size_t f, std::size_t k) {
         const P& q = points[kept[k]];
-        return (found[f].normal - out[k].normal).norm() <= options.distance &&
-               within_distance_of_segment(points[f], q, q, distance, point_distance);
+        return within_distance_of_segment(points[f], q, q, distance, point_distance) &&
+               normals_within(edges[f], edges[kept[k]], options.distance, threshold);
     };
     if (origins != nullptr) origins->clear();
     for (std::size_t f = 0; f < found.size(); ++f) {

@@ -364,6 +364,67 @@ TEST(JsonRead, PlainReaderKnowsWhichTextsAreExactlyDoubles) {
     EXPECT_GT(decided, static_cast<int>(texts.size()) / 2);
 }
 
+// Texts of more than 19 digits, or exponents past -27, are decided while they are read too:
+// every double m 2^-j (m of 1..60 bits, j up to the subnormals) written with its exact digits
+// (up to 767 significant), in exponent form, with zeros after it, with its last digit changed
+// and with a digit more; GMP tells which are exactly their double. Fails when the odd part's
+// bound (2^53), the remainder test of the division by 5^-e or the 767 digits are changed.
+TEST(JsonRead, PlainReaderDecidesLongTexts) {
+    std::mt19937_64 rng(20261130);
+    std::vector<std::string> texts;
+    const auto exact_text = [](const mpz_class& m, int j) {  // m 2^-j, j >= 0, in j fraction digits
+        mpz_class five;
+        mpz_ui_pow_ui(five.get_mpz_t(), 5, static_cast<unsigned long>(j));
+        std::string s = mpz_class(m * five).get_str();
+        if (static_cast<int>(s.size()) <= j) s.insert(0, static_cast<std::size_t>(j + 1) - s.size(), '0');
+        if (j > 0) s.insert(s.size() - static_cast<std::size_t>(j), ".");
+        return s;
+    };
+    const auto add = [&](const mpz_class& m, int j) {
+        const std::string t = exact_text(m, j);
+        texts.push_back(t);
+        texts.push_back(t + "000");
+        std::string changed = t;
+        changed.back() = changed.back() == '9' ? '8' : static_cast<char>(changed.back() + 1);
+        texts.push_back(changed);
+        texts.push_back(t + "1");
+        std::string digits = t;
+        digits.erase(std::remove(digits.begin(), digits.end(), '.'), digits.end());
+        while (digits.size() > 1 && digits[0] == '0') digits.erase(0, 1);
+        texts.push_back("-" + digits + "e-" + std::to_string(j));
+    };
+    add((mpz_class(1) << 53) - 1, 1074);  // the longest: 767 significant digits
+    add(mpz_class(1), 1074);              // the least subnormal
+    add((mpz_class(1) << 53) + 1, 1074);  // 54 bits: no double
+    for (int k = 0; k < testing::sized(3000); ++k) {
+        const int bits = 1 + static_cast<int>(rng() % 60);
+        mpz_class m = mpz_class(static_cast<unsigned long>(rng() >> (64 - bits))) | (mpz_class(1) << (bits - 1));
+        if (m % 2 == 0) m += 1;
+        const int j = 20 + static_cast<int>(rng() % static_cast<std::uint64_t>(1074 - 20 + bits - 1));
+        add(m, j);
+    }
+    std::size_t exact = 0, decided = 0;
+    for (const std::string& t : texts) {
+        const std::string text = "[" + t + "]";
+        const std::optional<Document> doc = json_read::read_plain(text, json_read::kEverything);
+        ASSERT_TRUE(doc) << t;
+        std::optional<Value> element;
+        doc->root().for_each_element([&](std::size_t, const Value& e) { element = e; });
+        const json_read::JsonNumber n = element->number();
+        ASSERT_EQ(n.value, std::strtod(t.c_str(), nullptr)) << t;
+        const bool is_exact = exact_of_text(t) == mpq_class(n.value);
+        if (n.spelling != json_read::JsonNumber::Spelling::Unknown) {
+            ++decided;
+            ASSERT_EQ(n.spelling == json_read::JsonNumber::Spelling::Exact, is_exact) << t;
+        }
+        ASSERT_EQ(json_read::exact_number(*element) == Rational(n.value), is_exact) << t;
+        exact += is_exact ? 1 : 0;
+    }
+    EXPECT_GT(exact, texts.size() / 4);
+    EXPECT_LT(exact, texts.size() * 3 / 4);
+    EXPECT_EQ(decided, texts.size());  // (every one has a negative exponent and a quotient below 2^128)
+}
+
 // An exponent longer than any held count: 0.000...01e1000000 (99,999 zeros) is 10^900000, not
 // 1 (review-31: the plain reader once held the exponent at 10^5, below the fraction's length).
 TEST(JsonRead, LongExponentsAreNotHeldBelowTheFraction) {

@@ -211,5 +211,28 @@ TEST(SceneJson, ContactsOfDistinctExactPointsAreNotMerged) {
     EXPECT_NE(s.contacts[0].exact_values()->point[0], s.contacts[1].exact_values()->point[0]);
 }
 
+// A corner exactly on an obstacle's corner whose two edges differ in slope by 1e-20 (-1 and
+// -(1 + 1e-20)): at contact distance 0 two contacts, as their normals differ (the edges are not
+// parallel: the cross product of their directions (1, -1) and (1, -1 - 1e-20) is -1e-20 != 0),
+// although their doubles are equal; within 1e-10 one. The merge compares the exact unit normals.
+TEST(SceneJson, ContactsOfDistinctExactNormalsAreNotMerged) {
+    const auto contacts = [](const std::string& distance) {
+        return read_scene_text(R"({"body": {"mass": 1, "com": [0.3, 0.3], "inertia": 0.1, "polygon": [[0, 0], [1, 0], [0, 1]]},
+            "obstacles": [{"polygon": [[-1, 1], [0, 0], [1, -1.00000000000000000001], [-2, -2]]}], "contact_distance": )" +
+                               distance + "}")
+            .contacts;
+    };
+    const std::vector<Contact> apart = contacts("0");
+    ASSERT_EQ(apart.size(), 2u);
+    EXPECT_EQ(apart[0].normal, apart[1].normal);  // (as doubles)
+    const auto exact_normal = [](const Contact& c) {  // (no exact values: the doubles are exact)
+        return c.exact_values() != nullptr ? c.exact_values()->normal : Rational2{Rational(c.normal.x()), Rational(c.normal.y())};
+    };
+    for (const Contact& c : apart) EXPECT_EQ(c.point, Vec2(0, 0));
+    const Rational2 n0 = exact_normal(apart[0]), n1 = exact_normal(apart[1]);
+    EXPECT_NE(n0[0] * n1[1] - n0[1] * n1[0], Rational(0.0));
+    EXPECT_EQ(contacts("1e-10").size(), 1u);
+}
+
 }  // namespace
 }  // namespace momentlab

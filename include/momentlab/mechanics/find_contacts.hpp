@@ -15,8 +15,9 @@ namespace momentlab {
 struct ContactFinding {
     /// How close (scene length units) a vertex must be to an edge to touch it. This is the
     /// one tolerance of momentlab, and a modelling choice: real parts do not touch exactly,
-    /// and scene files round coordinates. Two contacts whose points and unit normals both
-    /// differ by less than it are one.
+    /// and scene files round coordinates. Two contacts whose points and unit normals are both
+    /// within it of each other (exactly: the normals as the touched edges' exact directions)
+    /// are one.
     double distance = 1e-9;
     /// Friction coefficients given to every contact found.
     double mu = 0.0;
@@ -77,8 +78,8 @@ namespace detail {
                                                            const ContactFinding& options,
                                                            std::vector<ContactOrigin>* origins = nullptr);
 /// The same on scaled polygons (scaled_polygons: `doubles` or `exact`), the options as given:
-/// points compared within options.distance times the scale (exactly), unit normals within
-/// options.distance. The contacts' points are on the scaled polygons (their doubles) and their
+/// points compared within options.distance times the scale, unit normals within
+/// options.distance (both exactly). The contacts' points are on the scaled polygons (their doubles) and their
 /// normals doubles near the exact ones: contact_as_typed gives the values as typed.
 [[nodiscard]] std::vector<Contact> find_contacts_of_simple(const Polygon& body, const std::vector<Polygon>& obstacles,
                                                            const ContactFinding& options, const ScaledPolygons& scaled,
