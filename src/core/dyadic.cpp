@@ -4,6 +4,7 @@
 // (unsigned __int128: GCC, Clang, and Clang for WebAssembly).
 #include "momentlab/core/dyadic.hpp"
 
+#include "momentlab/core/approx.hpp"
 #include "momentlab/core/rounding.hpp"
 #include "power_of_two.hpp"
 
@@ -357,6 +358,11 @@ double Dyadic::to_double_scaled(std::int64_t k) const {
     if (scale + 63 < -1022 && scale + 64 >= -1080) return nearest_double(scaled(-k), Dyadic(1.0));
     const double v = detail::times_power_of_two(static_cast<double>(t), scale);
     return sign_ < 0 ? -v : v;
+}
+
+Approx approximate(const Dyadic& x) {
+    const double v = x.to_double();
+    return x.fits_double() ? Approx::exact(v) : Approx::within(v, std::fabs(v) * 0x1p-53 + 0x1p-1074);
 }
 
 bool Dyadic::fits_double() const {

@@ -72,13 +72,13 @@ struct ClearedContact {
 /// The inertia matrix of a body's exact values times a positive number (its denominators cleared).
 [[nodiscard]] std::array<Exact3, 3> cleared_inertia(const BodyValues& values);
 
-/// The body's inertia matrix at the world origin (inertia_matrix) from its doubles, in the number
-/// type N (constructible as N{double}): I_c the inertia about the centre of mass, or m rho^2 for
-/// a radius of gyration rho (exactly).
-template <class N>
-[[nodiscard]] std::array<std::array<N, 3>, 3> body_inertia(const Body& body) {
-    const N m{body.mass}, cx{body.com.x()}, cy{body.com.y()};
-    const N ic = body.radius_of_gyration ? m * N{*body.radius_of_gyration} * N{*body.radius_of_gyration} : N{body.inertia};
+/// The body's inertia matrix at the world origin (inertia_matrix) from its doubles, each made an N
+/// by `number`: I_c the inertia about the centre of mass, or m rho^2 for a radius of gyration
+/// rho (exactly).
+template <class N, class Number>
+[[nodiscard]] std::array<std::array<N, 3>, 3> body_inertia(const Body& body, const Number& number) {
+    const N m = number(body.mass), cx = number(body.com.x()), cy = number(body.com.y());
+    const N ic = body.radius_of_gyration ? m * number(*body.radius_of_gyration) * number(*body.radius_of_gyration) : number(body.inertia);
     return inertia_matrix(m, cx, cy, ic);
 }
 

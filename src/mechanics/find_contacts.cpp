@@ -72,12 +72,9 @@ struct TouchedEdge {
 };
 
 // A coordinate as the filter reads it (core/approx.hpp): a double itself, an exact number its
-// rounding to nearest (relative error at most 2^-53, or 2^-1075 below the normal range: within 2^-1074).
+// rounding.
 Approx approx_of(double x) { return Approx::exact(x); }
-Approx approx_of(const Dyadic& x) {
-    const double v = x.to_double();
-    return x.fits_double() ? Approx::exact(v) : Approx::within(v, std::fabs(v) * 0x1p-53 + 0x1p-1074);
-}
+Approx approx_of(const Dyadic& x) { return approximate(x); }
 
 // The sign of f on the perpendiculars' coordinates: on their approximations where the bound
 // decides it, else in Dyadic arithmetic.

@@ -3,12 +3,9 @@
 // (query_scene) takes over wherever a sign is not certified (docs/robustness.md, "One question
 // about a new scene").
 //
-// Every number is a pair (v, e): a double v and a bound e on |x - v| for the exact value x it
-// stands for (a polynomial in the input doubles). An operation adds the rounding of its own
-// result (at most 2^-53 |v|, plus 2^-1000 for underflow) to the propagated bounds and inflates
-// the sum by 1 + 2^-48 for the rounding of the bound's own arithmetic (a handful of
-// operations on non-negative numbers, each off by at most a factor 1 + 2^-53). A sign is
-// certified when |v| > e and both are finite; then it is the exact sign of x.
+// Every number is a certified approximation (core/approx.hpp, the filters' one number type): a
+// double standing for the exact value x (a polynomial in the input numbers) with a bound on
+// |x - value| that its operations compute; a sign is used only where that bound certifies it.
 //
 // The modes are those of enumerate_modes, for a generic scene: the face lattice of
 // A = {xi : N_j . xi >= 0} cut by the lines T_j . xi = 0. With two contacts A is a wedge times
@@ -30,6 +27,7 @@
 #include <vector>
 
 #include "contact_model.hpp"
+#include "momentlab/core/approx.hpp"
 #include "query.hpp"
 
 namespace momentlab {
@@ -37,34 +35,15 @@ namespace {
 
 struct Uncertain {};  // a sign the bounds do not decide: the exact path answers
 
-constexpr double kUnit = 0x1p-53, kInflate = 1.0 + 0x1p-48, kUnderflow = 0x1p-1000;
-
-// A double and a bound on its distance to the exact value it stands for.
-struct Approx {
-    double v = 0.0, e = 0.0;
-};
-
-Approx operator+(Approx a, Approx b) {
-    const double v = a.v + b.v;
-    return {v, (a.e + b.e + kUnit * std::fabs(v)) * kInflate + kUnderflow};
-}
-Approx operator-(Approx a, Approx b) {
-    const double v = a.v - b.v;
-    return {v, (a.e + b.e + kUnit * std::fabs(v)) * kInflate + kUnderflow};
-}
-Approx operator-(Approx a) { return {-a.v, a.e}; }
-Approx operator*(Approx a, Approx b) {
-    const double v = a.v * b.v;
-    return {v, (std::fabs(a.v) * b.e + std::fabs(b.v) * a.e + a.e * b.e + kUnit * std::fabs(v)) * kInflate + kUnderflow};
-}
-
-// The certified sign of x (+1, -1), or 0 when its bound does not decide it.
-int sign_or_zero(Approx x) {
-    if (!std::isfinite(x.v) || !std::isfinite(x.e)) return 0;
-    return x.v > x.e ? 1 : (-x.v > x.e ? -1 : 0);
+// The certified sign of x (+1, -1) by its own bound (core/approx.hpp), or 0 when the bound does
+// not decide it.
+int sign_or_zero(const Approx& x) {
+    Sign s = Sign::Zero;
+    if (!certified_sign(x, s)) return 0;
+    return s == Sign::Positive ? 1 : -1;
 }
 // The certified sign of x; throws Uncertain when its bound does not decide it.
-int sign_of(Approx x) {
+int sign_of(const Approx& x) {
     const int s = sign_or_zero(x);
     if (s == 0) throw Uncertain{};
     return s;
@@ -72,7 +51,7 @@ int sign_of(Approx x) {
 
 using A3 = std::array<Approx, 3>;
 
-A3 input(double x, double y, double z) { return {Approx{x, 0.0}, Approx{y, 0.0}, Approx{z, 0.0}}; }
+A3 input(double x, double y, double z) { return {Approx::exact(x), Approx::exact(y), Approx::exact(z)}; }
 Approx dot(const A3& a, const A3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 A3 cross(const A3& a, const A3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
 A3 negated(const A3& a) { return {-a[0], -a[1], -a[2]}; }
@@ -81,7 +60,7 @@ A3 signed_by(const A3& a, int s) { return s > 0 ? a : negated(a); }
 struct Plain {
     double x, y, z;
 };
-Plain plain(const A3& a) { return {a[0].v, a[1].v, a[2].v}; }
+Plain plain(const A3& a) { return {a[0].value, a[1].value, a[2].value}; }
 double dot(const Plain& a, const Plain& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 Plain cross(const Plain& a, const Plain& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 
@@ -172,12 +151,6 @@ struct ContactData {
     std::array<A3, 4> edges;
 };
 
-// An exact number as an Approx: its rounding (relative error below 2^-52) and a bound.
-Approx approx_of(const Dyadic& x) {
-    const double v = x.to_double();
-    return {v, x.fits_double() ? 0.0 : std::fabs(v) * 0x1p-51 + kUnderflow};
-}
-
 constexpr std::array kEdges{detail::FrictionEdge::StaticPlus, detail::FrictionEdge::StaticMinus, detail::FrictionEdge::KineticPlus,
                             detail::FrictionEdge::KineticMinus};
 
@@ -187,24 +160,25 @@ ContactData contact_data(const Contact& c) {
         // Exact values: every vector times a positive number, its denominators cleared (the
         // point P / s, the normal's and mu's own), so the same signs.
         const detail::ClearedContact k = detail::cleared(*values);
-        const Approx px = approx_of(k.point[0]), py = approx_of(k.point[1]), s = approx_of(k.scale);
-        const Approx nx = approx_of(k.normal[0]), ny = approx_of(k.normal[1]);
+        const Approx px = approximate(k.point[0]), py = approximate(k.point[1]), s = approximate(k.scale);
+        const Approx nx = approximate(k.normal[0]), ny = approximate(k.normal[1]);
         d.normal = {s * nx, s * ny, px * ny - py * nx};
         d.tangent = {s * ny, -(s * nx), -(px * nx + py * ny)};
         d.about = {py, -px, s};
         for (const auto e : kEdges) {
             const Exact2 dir = detail::edge_direction(k, e);
-            const Approx dx = approx_of(dir[0]), dy = approx_of(dir[1]);
+            const Approx dx = approximate(dir[0]), dy = approximate(dir[1]);
             d.edges[static_cast<std::size_t>(e)] = negated(A3{s * dx, s * dy, px * dy - py * dx});
         }
         return d;
     }
-    const Approx px{c.point.x(), 0.0}, py{c.point.y(), 0.0}, nx{c.normal.x(), 0.0}, ny{c.normal.y(), 0.0};
+    const Approx px = Approx::exact(c.point.x()), py = Approx::exact(c.point.y()), nx = Approx::exact(c.normal.x()),
+                 ny = Approx::exact(c.normal.y());
     d.normal = {nx, ny, px * ny - py * nx};
     d.tangent = {ny, -nx, -(px * nx + py * ny)};
     d.about = input(c.point.y(), -c.point.x(), 1.0);
     for (const auto e : kEdges) {
-        const auto [dx, dy] = friction_direction(nx, ny, Approx{detail::tangent_coefficient(c, e), 0.0});
+        const auto [dx, dy] = friction_direction(nx, ny, Approx::exact(detail::tangent_coefficient(c, e)));
         d.edges[static_cast<std::size_t>(e)] = negated(A3{dx, dy, px * dy - py * dx});
     }
     return d;
@@ -231,9 +205,9 @@ public:
         if (!quasi_static) {
             if (const BodyValues* values = scene.body->exact_values()) {
                 const ExactMatrix m = detail::cleared_inertia(*values);
-                for (std::size_t i = 0; i < 3; ++i) inertia_[i] = {approx_of(m[i][0]), approx_of(m[i][1]), approx_of(m[i][2])};
+                for (std::size_t i = 0; i < 3; ++i) inertia_[i] = {approximate(m[i][0]), approximate(m[i][1]), approximate(m[i][2])};
             } else {
-                inertia_ = detail::body_inertia<Approx>(*scene.body);
+                inertia_ = detail::body_inertia<Approx>(*scene.body, Approx::exact);
             }
             dynamic_ = true;
         }
@@ -276,10 +250,10 @@ public:
                 }
             }
             for (std::size_t j = 0; j < n_; ++j) {
-                for (const detail::FrictionEdge e : detail::contact_generators(d.letters[j])) {
+                for (const detail::FrictionEdge edge : detail::contact_generators(d.letters[j])) {
                     // (the static cone is one edge when mu = 0: both are n)
-                    if (e == detail::FrictionEdge::StaticMinus && mu_zero_[j]) continue;
-                    g[k++] = Generator{contacts_[j].edges[static_cast<std::size_t>(e)], -1};
+                    if (edge == detail::FrictionEdge::StaticMinus && mu_zero_[j]) continue;
+                    g[k++] = Generator{contacts_[j].edges[static_cast<std::size_t>(edge)], -1};
                 }
             }
             if (contains(g.data(), k, w)) out.push_back(d.letters);

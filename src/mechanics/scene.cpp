@@ -118,7 +118,7 @@ std::vector<Rational2> Body::exact_polygon() const {
 
 ExactMatrix inertia_at_origin(const Body& body) {
     if (const BodyValues* v = body.exact_values()) return detail::cleared_inertia(*v);
-    return detail::body_inertia<Dyadic>(body);
+    return detail::body_inertia<Dyadic>(body, [](double x) { return Dyadic(x); });
 }
 
 namespace detail {

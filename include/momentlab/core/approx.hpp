@@ -82,4 +82,10 @@ struct Approx {
     return true;
 }
 
+class Dyadic;
+
+/// An exact number as the filters read it: its double, rounded to nearest (relative error at
+/// most 2^-53, or 2^-1075 below the normal range), exact when it is one.
+[[nodiscard]] Approx approximate(const Dyadic& x);
+
 }  // namespace momentlab
