@@ -1,6 +1,7 @@
 #include "momentlab/geometry/polygon.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -316,6 +317,7 @@ double distance_to_boundary(std::span<const Vec2> polygon, const Vec2& p) {
 
 EdgeGrid::EdgeGrid(std::span<const Vec2> p, double distance) {
     const std::size_t m = p.size();
+    edge_count_ = m;
     if (m == 0 || !(distance >= 0.0) || !std::isfinite(distance) ||
         std::any_of(p.begin(), p.end(), [](const Vec2& v) { return !v.allFinite(); })) {
         throw std::invalid_argument("EdgeGrid: expected finite vertices and a finite distance >= 0");
@@ -388,13 +390,22 @@ void EdgeGrid::near_segment(const Vec2& a, const Vec2& b, std::vector<std::size_
     }
     if (!(t0 <= t1)) return;
     const Vec2 from = a + t0 * d, to = a + t1 * d;
-    const std::size_t pieces = static_cast<std::size_t>((to - from).norm() / cell_) + 1;
+    // Pieces about a cell long, but no more than a line crosses cells (nx + ny): where the slack
+    // dwarfs the cells (a polygon of edges 1e-16 touched by one of length 1) longer pieces whose
+    // boxes cover more cells, not 10^16 of them.
+    const double cells_along = (to - from).norm() / cell_;
+    const std::size_t pieces = std::min(nx_ + ny_ + 1, cells_along < 1e18 ? static_cast<std::size_t>(cells_along) + 1 : nx_ + ny_ + 1);
     for (std::size_t i = 0; i < pieces; ++i) {
         const double parts = static_cast<double>(pieces);
         const Vec2 u = from + (to - from) * (static_cast<double>(i) / parts);
         const Vec2 v = i + 1 == pieces ? to : Vec2(from + (to - from) * (static_cast<double>(i + 1) / parts));
         const auto [x0, y0] = index(u.cwiseMin(v).array() - slack);
         const auto [x1, y1] = index(u.cwiseMax(v).array() + slack);
+        if (x0 == 0 && y0 == 0 && x1 + 1 == nx_ && y1 + 1 == ny_) {  // every cell: every edge, once
+            out.resize(edge_count_);
+            std::iota(out.begin(), out.end(), std::size_t{0});
+            return;
+        }
         for (std::size_t x = x0; x <= x1; ++x) {
             for (std::size_t y = y0; y <= y1; ++y) {
                 const std::size_t c = x * ny_ + y;

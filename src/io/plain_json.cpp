@@ -173,7 +173,10 @@ private:
         double x = 0.0;
         using S = JsonNumber::Spelling;
         S spelling = digits <= 19 ? spelled(w, e, x) : S::Unknown;
-        if (spelling == S::Unknown && e < 0) spelling = spelled_long({integer_begin, integer_end}, {fraction, fraction_end}, e, x);
+        if (spelling == S::Unknown && e < 0) {
+            const std::string_view integer(integer_begin, static_cast<std::size_t>(integer_end - integer_begin));
+            spelling = spelled_long(integer, std::string_view(fraction, static_cast<std::size_t>(fraction_end - fraction)), e, x);
+        }
         if (spelling == S::Exact) {
             if (negative && !(x == 0.0 && q == integer_end)) x = -x;  // ("-0" is the integer 0)
         } else if (digits <= 19 && w <= (std::uint64_t{1} << 53) && e >= -22 && e <= 22) {
@@ -309,7 +312,7 @@ private:
         // else ldexp, exact then, and only then giving back odd.
         const std::int64_t power = twos + e;
         if (power < -1200 || power > 1100) return S::Inexact;
-        const std::int64_t top = power + std::bit_width(static_cast<std::uint64_t>(odd)) - 1;
+        const std::int64_t top = power + static_cast<std::int64_t>(std::bit_width(static_cast<std::uint64_t>(odd))) - 1;
         if (top >= -1022 && top <= 1023) return x = detail::times_power_of_two(static_cast<double>(odd), power), S::Exact;
         x = std::ldexp(static_cast<double>(odd), static_cast<int>(power));
         if (!std::isfinite(x) || std::ldexp(x, static_cast<int>(-power)) != static_cast<double>(odd)) return S::Inexact;

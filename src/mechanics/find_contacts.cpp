@@ -32,9 +32,12 @@ std::vector<P> counter_clockwise(std::span<const P> p) {
 }
 
 
-// Outward unit normal of the counter-clockwise edge a -> b.
+// Outward unit normal of the counter-clockwise edge a -> b (an edge whose squared length would
+// underflow or overflow first brought near 1 by a power of two, exactly: an edge 2^-1000 long).
 Vec2 outward(const Vec2& a, const Vec2& b) {
-    const Vec2 d = b - a;
+    Vec2 d = b - a;
+    const double m = d.cwiseAbs().maxCoeff();
+    if (m < 0x1p-500 || m > 0x1p500) d = Vec2(std::ldexp(d.x(), -std::ilogb(m)), std::ldexp(d.y(), -std::ilogb(m)));
     return Vec2(d.y(), -d.x()) / d.norm();
 }
 
@@ -289,20 +292,23 @@ std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector
                             const ContactFinding& options, double point_distance,
                             const Dyadic& distance, std::vector<ContactOrigin>* origins) {
     // One contact for points and normals both within the distance (the first kept), as the plain
-    // comparison of every pair would merge them: the kept ones hashed by cells of side 2 d, so a
-    // contact is compared only with those in the 3 x 3 cells around it (points within d are in
-    // neighbouring cells even after rounding). The points' doubles key the cells when d is 0 or
-    // below the coordinates' resolution; the points themselves are compared exactly. O(k)
-    // expected for k contacts found.
+    // comparison of every pair would merge them: the kept ones hashed by cells of side 2 d (or
+    // of the coordinates' resolution where that is larger), so a contact is compared only with
+    // those in the 3 x 3 cells around it (points within d are in neighbouring cells even after
+    // rounding); the points themselves are compared exactly. O(k) expected for k contacts found.
     std::vector<Contact> out;
     std::vector<std::size_t> kept;  // the contact found that each one kept is
     std::unordered_map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>, CellHash> cells;
     std::map<std::pair<double, double>, std::vector<std::size_t>> exact_points;
-    const double side = 2.0 * point_distance;
+    // Cells of side at least 2^-52 of the largest coordinate too, so that every point's cell is an
+    // integer below 2^53 (far from the origin, points within d of each other were once compared
+    // only when their doubles were equal: review-33).
+    double largest = 0.0;
+    for (const Contact& c : found) largest = std::max({largest, std::fabs(c.point.x()), std::fabs(c.point.y())});
+    const double side = std::max(2.0 * point_distance, largest * 0x1p-52);
     const auto cell_of = [&](const Vec2& p) -> std::optional<std::pair<std::int64_t, std::int64_t>> {
-        if (!(side > 0.0)) return std::nullopt;
+        if (!(side > 0.0)) return std::nullopt;  // (every point at the origin)
         const double x = std::floor(p.x() / side), y = std::floor(p.y() / side);
-        if (!(std::abs(x) < 0x1p62) || !(std::abs(y) < 0x1p62)) return std::nullopt;
         return std::pair(static_cast<std::int64_t>(x), static_cast<std::int64_t>(y));
     };
     const Sign threshold = normals_threshold(options.distance);

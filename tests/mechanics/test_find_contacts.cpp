@@ -253,6 +253,34 @@ TEST(FindContacts, ContactsAlongAWallAreMergedOnlyWithTheirNeighbours) {
     EXPECT_EQ(find_contacts(body, {floor}, ContactFinding{0.5, 0.0, 0.0}).size(), 2u);
 }
 
+// Review-33: far from the origin (x = 1e10, where x / 2d passes 2^62) two contacts 2^-31 apart
+// along a wall, with one normal, are one at the distance 1e-9, and two at 2^-29 (1.9e-9) apart:
+// the merge's grid once gave up there and compared only points whose doubles were equal.
+TEST(FindContacts, ContactsFarFromTheOriginAreMergedWithinTheDistance) {
+    const double x = 1e10;
+    const Polygon wall = {{x - 1, -10}, {x, -10}, {x, 10}, {x - 1, 10}};
+    for (const auto& [gap, expected] : {std::pair(0x1p-31, 1u), std::pair(0x1p-29, 2u)}) {
+        const Polygon body = {{x, 0.5}, {x + 1, 0}, {x + 1, 1}, {x, 0.5 + gap}};
+        EXPECT_EQ(find_contacts(body, {wall}).size(), expected) << gap;
+    }
+}
+
+// Review-33: an obstacle whose edges are 2^-1000 long at a corner of a body whose edges are about
+// 1: the corner on the tip gets one contact per tip edge (docs/formats.md), normals along
+// (-1, 1) and (1, 1). The overlap check's walk along the body's edges through the tip's grid once
+// cut them into pieces of the grid's cells, 2^1000 of them (a 2^-53 tip took 5 s and 336 MB), and
+// the normal of an edge whose squared length underflows was refused as not finite.
+TEST(FindContacts, TinyObstacleAtALargeCorner) {
+    const double e = 0x1p-1000;
+    const Polygon body = {{0, 0}, {1, 1}, {-1, 1}};
+    const Polygon tip = {{0, 0}, {-e, -e}, {e, -e}};
+    const std::vector<Contact> found = find_contacts(body, {tip});
+    ASSERT_EQ(found.size(), 2u);
+    EXPECT_EQ(std::abs(found[0].normal.x()), found[0].normal.y());
+    EXPECT_EQ(std::abs(found[1].normal.x()), found[1].normal.y());
+    EXPECT_EQ(found[0].normal.x(), -found[1].normal.x());
+}
+
 TEST(SceneJson, WrittenScenesReadBackUnchanged) {
     std::ifstream in(std::string(MOMENTLAB_EXAMPLES) + "/figure-4-peg-in-hole.json");
     std::ostringstream text;

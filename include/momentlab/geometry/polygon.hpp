@@ -108,7 +108,7 @@ private:
     [[nodiscard]] std::pair<std::size_t, std::size_t> index(const Vec2& q) const;
     Vec2 lo_ = Vec2::Zero(), hi_ = Vec2::Zero();
     double margin_ = 0.0, cell_ = 1.0;
-    std::size_t nx_ = 1, ny_ = 1;
+    std::size_t nx_ = 1, ny_ = 1, edge_count_ = 0;
     std::vector<std::size_t> start_;
     std::vector<std::size_t> edges_;
 };
