@@ -419,8 +419,8 @@ void EdgeGrid::near_segment(const Vec2& a, const Vec2& b, std::vector<std::size_
 }
 
 std::pair<std::size_t, std::size_t> EdgeGrid::index(const Vec2& q) const {
-    const auto clamp = [](double t, std::size_t n) {
-        return t <= 0.0 ? std::size_t{0} : std::min(static_cast<std::size_t>(t), n - 1);
+    const auto clamp = [](double t, std::size_t n) {  // (in doubles first: t may be far beyond the cells)
+        return !(t > 0.0) ? std::size_t{0} : (t >= static_cast<double>(n - 1) ? n - 1 : static_cast<std::size_t>(t));
     };
     return {clamp((q.x() - lo_.x()) / cell_, nx_), clamp((q.y() - lo_.y()) / cell_, ny_)};
 }
