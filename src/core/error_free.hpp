@@ -11,6 +11,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 
 #include "momentlab/core/sign.hpp"
 
@@ -22,6 +23,14 @@ inline void two_sum(double a, double b, double& x, double& y) {
     const double b_virtual = x - a;
     const double a_virtual = x - b_virtual;
     y = (a - a_virtual) + (b - b_virtual);
+}
+
+// x - y in doubles when the difference is exact (two-sum leaves no error), else nullopt.
+inline std::optional<double> exact_difference(double x, double y) {
+    double s = 0, error = 0;
+    two_sum(x, -y, s, error);
+    if (!std::isfinite(s) || error != 0.0) return std::nullopt;
+    return s;
 }
 
 // a = hi + lo, each with at most 26 significant bits (Dekker's split).

@@ -78,14 +78,6 @@ static bool same_construction(const A& a, const B& b) {
 
 namespace {
 
-// x - y in doubles when the difference is exact (Knuth's two-sum has no error term), else nullopt.
-std::optional<double> exact_difference(double x, double y) {
-    double s = 0, error = 0;
-    detail::two_sum(x, -y, s, error);
-    if (!std::isfinite(s) || error != 0.0) return std::nullopt;
-    return s;
-}
-
 // det(w_1, w_2, w_3) / (s_1 s_2 s_3) for the wrenches w_i = s_i (d_i, p_i x d_i) of three forces,
 // taken about the first force's point, over any number type: subtracting q x d_i from every
 // torque (adding multiples of the first two rows) leaves the determinant as it is, and for
@@ -107,8 +99,8 @@ std::array<Approx, 2> approximate(const Vec2& v) { return approximate(v.x(), v.y
 // ForcesAboutTheFirstPoint's filter, when the differences p_i - p_1 are doubles.
 bool forces_filter(const Vec2& p1, const Vec2& p2, const Vec2& p3, const Vec2& d1, const Vec2& d2, const Vec2& d3,
                    Sign& out) {
-    const std::optional<double> x2 = exact_difference(p2.x(), p1.x()), y2 = exact_difference(p2.y(), p1.y());
-    const std::optional<double> x3 = exact_difference(p3.x(), p1.x()), y3 = exact_difference(p3.y(), p1.y());
+    const std::optional<double> x2 = detail::exact_difference(p2.x(), p1.x()), y2 = detail::exact_difference(p2.y(), p1.y());
+    const std::optional<double> x3 = detail::exact_difference(p3.x(), p1.x()), y3 = detail::exact_difference(p3.y(), p1.y());
     if (!x2 || !y2 || !x3 || !y3) return false;
     return filter_sign(ForcesAboutTheFirstPoint{}, out, approximate(*x2, *y2), approximate(*x3, *y3), approximate(d1),
                        approximate(d2), approximate(d3));

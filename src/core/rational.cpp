@@ -1,5 +1,6 @@
 #include "momentlab/core/rational.hpp"
 #include "momentlab/core/rounding.hpp"
+#include "decimal_limbs.hpp"
 #include "powers_of_five.hpp"
 
 #include <algorithm>
@@ -205,7 +206,7 @@ bool Rational::spells(std::string_view text, double value) {
     if ((b - a) + (f - c) > 38) {
         // Longer: against the double's own exact digits. A double's exact text has at most 767
         // significant digits; beyond, the text is not one.
-        // Compared nine digits at a time from the last, without writing the double's digits.
+        // Compared limb by limb, without writing the double's digits.
         if ((b - a) + (f - c) > 800 || value == 0.0 || (value < 0.0) != negative) return false;
         const DecimalLimbs exact(value);
         const auto whole = static_cast<std::size_t>(b - a);
@@ -214,13 +215,9 @@ bool Rational::spells(std::string_view text, double value) {
         char text_digits[800];
         std::memcpy(text_digits, a, whole);
         std::memcpy(text_digits + whole, c, length - whole);
-        for (std::size_t j = 0; j < exact.size; ++j) {
-            const std::size_t last = length - 9 * j, first = last >= 9 ? last - 9 : 0;
-            std::uint32_t limb = 0;
-            for (std::size_t i = first; i < last; ++i) limb = limb * 10 + static_cast<std::uint32_t>(text_digits[i] - '0');
-            if (limb != exact.limbs[j]) return false;
-        }
-        return true;
+        std::array<std::uint32_t, 90> limbs;
+        const std::size_t size = detail::limbs_of_digits(text_digits, length, limbs.data());
+        return size == exact.size && std::equal(limbs.begin(), limbs.begin() + static_cast<std::ptrdiff_t>(size), exact.limbs.begin());
     }
     U digits = 0;
     std::uint64_t chunk = 0;  // fewer than 19 digits, folded into D when full

@@ -1,9 +1,10 @@
 #include "momentlab/geometry/polygon.hpp"
+#include "../core/error_free.hpp"
 
 #include <algorithm>
-#include <numeric>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -43,19 +44,6 @@ double distance_to_segment(const Vec2& a, const Vec2& b, const Vec2& p) {
 
 }  // namespace
 
-namespace {
-
-// d = x - y rounded; true when that is exact (the error term of Shewchuk's Two-Diff is zero;
-// false too when the difference overflows).
-bool exact_difference(double x, double y, double& d) {
-    d = x - y;
-    const double y_virtual = x - d;
-    const double x_virtual = d + y_virtual;
-    return (x - x_virtual) + (y_virtual - y) == 0.0;
-}
-
-}  // namespace
-
 Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
     // The sign of (b - a) x (c - a). First Shewchuk's filter ("Adaptive precision floating-point
     // arithmetic and fast robust geometric predicates", 1997: error below (3 + 16 eps) eps times
@@ -66,11 +54,10 @@ Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
     const double left = (b.x() - a.x()) * (c.y() - a.y()), right = (b.y() - a.y()) * (c.x() - a.x());
     const double sum = std::fabs(left) + std::fabs(right), det = left - right;
     if (sum > 0x1p-900 && sum < 0x1p900 && std::fabs(det) > 0x1p-50 * sum) return sign_of(det);
-    Vec3 u = Vec3::Zero(), v = Vec3::Zero();
-    if (exact_difference(b.x(), a.x(), u.x()) && exact_difference(b.y(), a.y(), u.y()) &&
-        exact_difference(c.x(), a.x(), v.x()) && exact_difference(c.y(), a.y(), v.y())) {
-        return minor_sign(u, v, 0, 1);
-    }
+    using detail::exact_difference;
+    const std::optional<double> ux = exact_difference(b.x(), a.x()), uy = exact_difference(b.y(), a.y());
+    const std::optional<double> vx = exact_difference(c.x(), a.x()), vy = exact_difference(c.y(), a.y());
+    if (ux && uy && vx && vy) return minor_sign(Vec3(*ux, *uy, 0.0), Vec3(*vx, *vy, 0.0), 0, 1);
     return det_sign(lift(a), lift(b), lift(c));
 }
 
@@ -394,7 +381,8 @@ void EdgeGrid::near_segment(const Vec2& a, const Vec2& b, std::vector<std::size_
     // dwarfs the cells (a polygon of edges 1e-16 touched by one of length 1) longer pieces whose
     // boxes cover more cells, not 10^16 of them.
     const double cells_along = (to - from).norm() / cell_;
-    const std::size_t pieces = std::min(nx_ + ny_ + 1, cells_along < 1e18 ? static_cast<std::size_t>(cells_along) + 1 : nx_ + ny_ + 1);
+    const std::size_t most = nx_ + ny_ + 1;
+    const std::size_t pieces = cells_along < static_cast<double>(most) ? static_cast<std::size_t>(cells_along) + 1 : most;
     for (std::size_t i = 0; i < pieces; ++i) {
         const double parts = static_cast<double>(pieces);
         const Vec2 u = from + (to - from) * (static_cast<double>(i) / parts);

@@ -50,7 +50,6 @@ bool on_boundary(std::span<const ExactPoint> polygon, const ExactPoint& x) {
 void as_point(const Vec2& x, Vec2& out) { out = x; }
 void as_point(const Vec2& x, ExactPoint& out) { out = {Dyadic(x.x()), Dyadic(x.y())}; }
 
-
 // Where the other polygon's boundary meets an edge pq: at p + (num / den)(q - p), den > 0,
 // through the other's vertex `index` or through the inside of its edge `index` (from that
 // vertex to the next).

@@ -1,6 +1,7 @@
 // The plain reader: the JSON that programs write, read in one pass (docs/architecture.md,
 // "The JSON reader"); anything else goes to the JSON library (json_read.cpp).
 #include "json_read.hpp"
+#include "../core/decimal_limbs.hpp"
 #include "../core/power_of_two.hpp"
 #include "../core/powers_of_five.hpp"
 
@@ -233,20 +234,6 @@ private:
         return S::Exact;
     }
 
-    // The value of eight decimal digits, in three multiplications: the bytes less '0' read as
-    // one little-endian word, then neighbouring digits, pairs and quadruples combined (each
-    // step multiplies a lane by its weight and adds the next lane in the same product; Lemire,
-    // "Quickly parsing eight digits", 2018).
-    static std::uint32_t eight_digits(const char* p) {
-        std::uint64_t v = 0;
-        std::memcpy(&v, p, 8);
-        if constexpr (std::endian::native == std::endian::big) v = __builtin_bswap64(v);
-        v -= 0x3030303030303030;
-        v = (v * 10 + (v >> 8)) & 0x00ff00ff00ff00ff;          // 2-digit lanes
-        v = (v * 100 + (v >> 16)) & 0x0000ffff0000ffff;        // 4-digit lanes
-        return static_cast<std::uint32_t>((v * 10000 + (v >> 32)) & 0xffffffff);
-    }
-
     // spelled() for a text of any length whose digits are those of `integer` then `fraction`
     // and whose value is digits 10^e, e < 0: a double when 5^-e divides the digits D and
     // D / 5^-e = odd 2^twos with odd < 2^53 and odd 2^(twos + e) in the doubles' range (then that
@@ -274,16 +261,7 @@ private:
         std::memcpy(text, first.data(), first.size());
         std::memcpy(text + first.size(), second.data(), second.size());
         std::array<std::uint32_t, 86> limbs;  // D, least significant first
-        std::size_t size = 0;
-        std::size_t last = length;
-        for (; last >= 9; last -= 9) {
-            limbs[size++] = static_cast<std::uint32_t>(text[last - 9] - '0') * 100000000 + eight_digits(text + last - 8);
-        }
-        if (last > 0) {
-            std::uint32_t limb = 0;
-            for (std::size_t i = 0; i < last; ++i) limb = limb * 10 + static_cast<std::uint32_t>(text[i] - '0');
-            limbs[size++] = limb;
-        }
+        std::size_t size = detail::limbs_of_digits(text, length, limbs.data());
         for (std::int64_t fives = -e; fives > 0;) {
             const std::int64_t step = fives < 13 ? fives : 13;
             const std::uint64_t divisor = detail::kPowersOfFive[static_cast<std::size_t>(step)];

@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
-#include <map>
 #include <optional>
 #include <unordered_map>
 #include <span>
@@ -30,7 +29,6 @@ std::vector<P> counter_clockwise(std::span<const P> p) {
     if (!is_counter_clockwise(p)) std::reverse(q.begin(), q.end());
     return q;
 }
-
 
 // Outward unit normal of the counter-clockwise edge a -> b (an edge whose squared length would
 // underflow or overflow first brought near 1 by a power of two, exactly: an edge 2^-1000 long).
@@ -95,10 +93,6 @@ Sign normals_sign(const F& f, const TouchedEdge<P>& e1, const TouchedEdge<P>& e2
     return f(perpendicular(e1, exact), perpendicular(e2, exact), exact).sign();
 }
 
-// Whether the unit normals n_i = e_i / |e_i| of two touched edges' perpendiculars e_i lie within
-// d of each other, exactly: |n_1 - n_2|^2 = 2 - 2 n_1 . n_2 <= d^2, that is
-// s = e_1 . e_2 >= c |e_1| |e_2| with c = 1 - d^2 / 2: for c <= 0, s >= 0 or s^2 <= c^2 m, and
-// for c > 0, s > 0 and s^2 >= c^2 m, with m = |e_1|^2 |e_2|^2.
 // The sign of c = 1 - d^2 / 2 in normals_within.
 Sign normals_threshold(double d) { return (Dyadic(1.0) - Dyadic(d) * Dyadic(d) * Dyadic(0.5)).sign(); }
 
@@ -107,15 +101,17 @@ Sign normals_threshold(double d) { return (Dyadic(1.0) - Dyadic(d) * Dyadic(d) *
 // doubles (the edges of a floor drawn with many collinear vertices, whose contacts at shared
 // vertices have equal normals; the filter below cannot certify a zero).
 std::optional<Vec2> exact_perpendicular(const TouchedEdge<Vec2>& e) {
-    double dx = 0, dy = 0, ex = 0, ey = 0;
-    detail::two_sum(e.b.x(), -e.a.x(), dx, ex);
-    detail::two_sum(e.b.y(), -e.a.y(), dy, ey);
-    if (ex != 0.0 || ey != 0.0 || !std::isfinite(dx) || !std::isfinite(dy)) return std::nullopt;
-    return e.outward ? Vec2(dy, -dx) : Vec2(-dy, dx);
+    const std::optional<double> dx = detail::exact_difference(e.b.x(), e.a.x()), dy = detail::exact_difference(e.b.y(), e.a.y());
+    if (!dx || !dy) return std::nullopt;
+    return e.outward ? Vec2(*dy, -*dx) : Vec2(-*dy, *dx);
 }
 std::optional<Vec2> exact_perpendicular(const TouchedEdge<ExactPoint>&) { return std::nullopt; }
 
-// `c` is the sign of c (normals_threshold).
+// Whether the unit normals n_i = e_i / |e_i| of two touched edges' perpendiculars e_i lie within
+// d of each other, exactly: |n_1 - n_2|^2 = 2 - 2 n_1 . n_2 <= d^2, that is
+// s = e_1 . e_2 >= c |e_1| |e_2| with c = 1 - d^2 / 2: for c <= 0, s >= 0 or s^2 <= c^2 m, and
+// for c > 0, s > 0 and s^2 >= c^2 m, with m = |e_1|^2 |e_2|^2. `c` is the sign of c
+// (normals_threshold).
 template <class P>
 bool normals_within(const TouchedEdge<P>& e1, const TouchedEdge<P>& e2, double d, Sign c) {
     if (const std::optional<Vec2> u = exact_perpendicular(e1), v = exact_perpendicular(e2); u && v && cross2_sign(*u, *v) == Sign::Zero) {
@@ -299,17 +295,15 @@ std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector
     std::vector<Contact> out;
     std::vector<std::size_t> kept;  // the contact found that each one kept is
     std::unordered_map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>, CellHash> cells;
-    std::map<std::pair<double, double>, std::vector<std::size_t>> exact_points;
     // Cells of side at least 2^-52 of the largest coordinate too, so that every point's cell is an
     // integer below 2^53 (far from the origin, points within d of each other were once compared
-    // only when their doubles were equal: review-33).
+    // only when their doubles were equal: review-33); any side when every point is at the origin.
     double largest = 0.0;
     for (const Contact& c : found) largest = std::max({largest, std::fabs(c.point.x()), std::fabs(c.point.y())});
-    const double side = std::max(2.0 * point_distance, largest * 0x1p-52);
-    const auto cell_of = [&](const Vec2& p) -> std::optional<std::pair<std::int64_t, std::int64_t>> {
-        if (!(side > 0.0)) return std::nullopt;  // (every point at the origin)
-        const double x = std::floor(p.x() / side), y = std::floor(p.y() / side);
-        return std::pair(static_cast<std::int64_t>(x), static_cast<std::int64_t>(y));
+    double side = std::max(2.0 * point_distance, largest * 0x1p-52);
+    if (side == 0.0) side = 1.0;
+    const auto cell_of = [&](const Vec2& p) {
+        return std::pair(static_cast<std::int64_t>(std::floor(p.x() / side)), static_cast<std::int64_t>(std::floor(p.y() / side)));
     };
     const Sign threshold = normals_threshold(options.distance);
     const auto same = [&](std::size_t f, std::size_t k) {
@@ -322,30 +316,15 @@ std::vector<Contact> merged(const std::vector<Contact>& found, const std::vector
         const Contact& c = found[f];
         const auto cell = cell_of(c.point);
         bool repeated = false;
-        if (cell) {
-            for (std::int64_t dx = -1; dx <= 1 && !repeated; ++dx) {
-                for (std::int64_t dy = -1; dy <= 1 && !repeated; ++dy) {
-                    const auto it = cells.find({cell->first + dx, cell->second + dy});
-                    if (it == cells.end()) continue;
-                    repeated = std::any_of(it->second.begin(), it->second.end(), [&](std::size_t k) { return same(f, k); });
-                }
-            }
-        }
-        // Points that equal ones kept (always merged when their normals are near) when the cells
-        // cannot tell them apart.
-        const auto key = std::pair(c.point.x(), c.point.y());
-        if (!repeated && !cell) {
-            const auto it = exact_points.find(key);
-            if (it != exact_points.end()) {
+        for (std::int64_t dx = -1; dx <= 1 && !repeated; ++dx) {
+            for (std::int64_t dy = -1; dy <= 1 && !repeated; ++dy) {
+                const auto it = cells.find({cell.first + dx, cell.second + dy});
+                if (it == cells.end()) continue;
                 repeated = std::any_of(it->second.begin(), it->second.end(), [&](std::size_t k) { return same(f, k); });
             }
         }
         if (repeated) continue;
-        if (cell) {
-            cells[*cell].push_back(out.size());
-        } else {
-            exact_points[key].push_back(out.size());
-        }
+        cells[cell].push_back(out.size());
         out.push_back(c);
         kept.push_back(f);
         if (origins != nullptr) origins->push_back(found_origins[f]);
