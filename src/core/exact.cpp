@@ -103,6 +103,9 @@ Vec3 rounding_error(const Vec3& a, double floor) {
 
 ExactVector::Approximation input_approximation(const Vec3& v) {
     const double m = v.cwiseAbs().maxCoeff();
+    // Doubles are their own approximation; they are scaled by a power of two only where their
+    // products could leave the normal range (a sign is the same at every positive scale).
+    if (m >= 0x1p-64 && m <= 0x1p64) return {v, Vec3::Zero(), v.cwiseAbs()};
     if (m == 0.0) return {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
     const int e = binary_exponent(m);
     Vec3 a, err = Vec3::Zero();

@@ -14,6 +14,7 @@
 #include <cassert>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <span>
 #include <ostream>
 #include <stdexcept>
@@ -36,13 +37,15 @@ char letter_of(Sign v) {
                                       : (v == Sign::Negative ? ContactMode::SlidingLeft : ContactMode::Fixed));
 }
 
-// The walk over one face: its cells, their mode indices and their letters.
+// The walk over one face: its cells, their mode indices and their letters. Each cell's closure
+// is written into `closure` (the caller's buffer, reused from cell to cell and face to face:
+// the visit reads it, no cell allocates).
 class FaceWalk {
 public:
     FaceWalk(std::size_t face, std::span<const int> closed, const std::vector<ExactVector>& tangents, std::size_t contacts,
-             std::size_t& next, const Visit& visit)
+             std::size_t& next, const Visit& visit, std::vector<Q3>& closure)
         : face_(face), closed_(closed), tangents_(tangents), contacts_(contacts), next_(next), visit_(visit),
-          letters_(closed.size()) {}
+          letters_(closed.size()), closure_(closure) {}
 
     // The cells of the relatively open face spanned by `rays` and `lineality`.
     // `ray` is the face's ray as A stores it, for a 1-D face with a ray (its letters need no
@@ -53,13 +56,6 @@ public:
         start_vector_ = start;
         finish_vector_ = finish;
         normal_vector_ = normal;
-        auto with_lines = [&](std::vector<Q3> gens) {
-            for (const Q3& l : lineality) {
-                gens.push_back(l);
-                gens.push_back(-l);
-            }
-            return gens;
-        };
         if (dimension == 3) {
             // The interior of a full-dimensional A: no contact is closed there, so every letter
             // is 's' and the cell's closure is A itself. With contacts, no closure is given (the
@@ -68,27 +64,34 @@ public:
             // closure is A's lines, +- each. The sum of the rays is interior (pointed cone,
             // wedge x line, half-space); for R^3 any vector.
             assert(closed_.empty());
+            closure_.clear();
             if (contacts_ > 0) {
-                emit(index_of(false), {}, true);
+                emit(index_of(false), true);
                 return;
             }
             Q3 inside = rays.empty() ? lineality.front() : rays.front();
             for (std::size_t i = 1; i < rays.size(); ++i) inside = inside + rays[i];
-            single(inside, with_lines(rays));
+            closure_.assign(rays.begin(), rays.end());
+            add_lines(lineality);
+            single(inside);
             return;
         }
         if (dimension == 1) {
             if (!rays.empty()) {  // its letters at the ray as A stores it
                 assert(ray);
                 const std::size_t index = index_of(direct(*ray));
-                emit(index, {rays.front()}, true);
+                set_closure({&rays.front()});
+                emit(index, true);
             } else {
-                single(lineality.front(), {lineality.front()});
-                single(-lineality.front(), {-lineality.front()});
+                const Q3 line = lineality.front(), opposite = -line;
+                set_closure({&line});
+                single(line);
+                set_closure({&opposite});
+                single(opposite);
             }
             return;
         }
-        planar(rays, lineality, with_lines);
+        planar(rays, lineality);
     }
 
 private:
@@ -107,9 +110,23 @@ private:
     // cell is a mode of its own (the letters tell the face, and the cells of a face apart).
     std::size_t index_of(bool all_fixed) { return all_fixed && closed_.size() == contacts_ ? 0 : next_++; }
 
-    void single(const Q3& representative, std::vector<Q3> closure) {
+    // The closure: the given generators (copied into the buffer's own numbers).
+    void set_closure(std::initializer_list<const Q3*> generators) {
+        closure_.resize(generators.size());
+        std::size_t i = 0;
+        for (const Q3* g : generators) closure_[i++] = *g;
+    }
+    void add_lines(const std::vector<Q3>& lineality) {
+        for (const Q3& l : lineality) {
+            closure_.push_back(l);
+            closure_.push_back(-l);
+        }
+    }
+
+    // A cell of one representative, its closure already set.
+    void single(const Q3& representative) {
         const std::size_t index = index_of(direct(representative));
-        emit(index, std::move(closure), true, {}, &representative);
+        emit(index, true, {}, &representative);
     }
 
     // A point inside the cell whose closure is given by sector() or a single ray.
@@ -118,9 +135,7 @@ private:
         return closure.size() == 2 ? closure[0] + closure[1] : closure[2];
     }
 
-    void emit(std::size_t index, std::vector<Q3> closure, bool first, std::span<const int> changed = {},
-              const Q3* representative = nullptr) {
-        closure_ = std::move(closure);
+    void emit(std::size_t index, bool first, std::span<const int> changed = {}, const Q3* representative = nullptr) {
 #ifndef NDEBUG
         // The letters kept up to date along the walk are the signs at the cell's representative
         // (none to check for the interior of A, which has no letter but 's').
@@ -143,15 +158,16 @@ private:
         visit_(cell);
     }
 
-    template <class WithLines>
-    void planar(const std::vector<Q3>& rays, const std::vector<Q3>& lineality, WithLines with_lines) {
+    void planar(const std::vector<Q3>& rays, const std::vector<Q3>& lineality) {
         // Dimension 2: a wedge (two rays), a half-plane (a line and a ray) or a plane.
-        Q3 start, finish, e;
+        const Q3* start = nullptr;
+        const Q3* finish = nullptr;
+        Q3 opposite, e;  // a half-plane's finish, -start
         enum class Shape { Wedge, HalfPlane, Plane } shape;
         if (lineality.empty()) {
             shape = Shape::Wedge;
-            start = rays[0];
-            finish = rays[1];
+            start = &rays[0];
+            finish = &rays[1];
             // A positive multiple of start x finish (det(start, finish, e) > 0: counter-clockwise
             // about e): the facet of A on the wedge, signed, where A gives it. A's rays are
             // products of its facets, so start x finish has twice their degree and the crossings
@@ -161,16 +177,17 @@ private:
                 assert(turn != Sign::Zero);
                 e = turn == Sign::Positive ? normal_vector_->exact() : -normal_vector_->exact();
             } else {
-                e = cross(start, finish);
+                e = cross(*start, *finish);
             }
         } else if (lineality.size() == 1) {
             shape = Shape::HalfPlane;
-            start = lineality[0];
-            finish = -start;
-            e = cross(start, rays[0]);
+            start = &lineality[0];
+            opposite = -*start;
+            finish = &opposite;
+            e = cross(*start, rays[0]);
         } else {
             shape = Shape::Plane;
-            start = lineality[0];
+            start = &lineality[0];
             e = cross(lineality[0], lineality[1]);
         }
         // Where T_j . xi = 0 meets the face: u = e x T_j and -u. Since e is orthogonal to
@@ -206,8 +223,9 @@ private:
                 signs[t] = at_start != Sign::Zero ? at_start : at_finish;
                 const bool crosses = at_start != Sign::Zero && (shape == Shape::HalfPlane || at_finish == -at_start);
                 if (crosses) {
-                    const Q3 u = cross(e, tangent.exact());
-                    critical.push_back({at_start == Sign::Positive ? u : -u, position, 1});
+                    Q3 u = cross(e, tangent.exact());
+                    if (at_start != Sign::Positive) u = -u;
+                    critical.push_back({std::move(u), position, 1});
                 }
                 continue;
             }
@@ -216,7 +234,7 @@ private:
                 ++vanishing;
                 continue;
             }
-            const int half_u = angular_half(at_start, [&] { return sign(dot(start, u)) > 0; });
+            const int half_u = angular_half(at_start, [&] { return sign(dot(*start, u)) > 0; });
             critical.push_back({u, position, half_u});
             critical.push_back({-u, position, (half_u + 2) % 4});
         }
@@ -246,19 +264,27 @@ private:
         };
         // A sector's closure; its representative is the sum of the two, or the third (rep_of).
         // Only a plane's sectors can reach pi (two opposite rays).
-        auto sector = [&](const Q3& a, const Q3& b) -> std::vector<Q3> {
-            if (shape != Shape::Plane || orient(a, b, e) > 0) return {a, b};
-            return {a, -a, cross(e, a)};  // a turned by a quarter counter-clockwise
+        const auto set_sector = [&](const Q3& a, const Q3& b) {
+            if (shape != Shape::Plane || orient(a, b, e) > 0) {
+                set_closure({&a, &b});
+                return;
+            }
+            const Q3 quarter = cross(e, a);  // a turned by a quarter counter-clockwise
+            const Q3 back = -a;
+            set_closure({&a, &back, &quarter});
         };
         if (r_count == 0) {
             if (shape == Shape::Plane) {
-                single(start, with_lines({}));
+                closure_.clear();
+                add_lines(lineality);
+                single(*start);
             } else if (shape == Shape::HalfPlane) {
-                single(rays[0], {start, finish, rays[0]});
+                set_closure({start, finish, &rays[0]});
+                single(rays[0]);
             } else {
-                std::vector<Q3> closure = sector(start, finish);
-                const Q3 representative = rep_of(closure);
-                single(representative, std::move(closure));
+                set_sector(*start, *finish);
+                const Q3 representative = rep_of(closure_);
+                single(representative);
             }
             return;
         }
@@ -271,28 +297,37 @@ private:
         }
         for (std::size_t& i : sector_index) i = next_++;
         // The sectors counter-clockwise: sector i lies after ray i - 1 (plane: after ray i).
-        std::vector<Q3> sequence;
+        std::vector<const Q3*> sequence;
         if (shape != Shape::Plane) {
             sequence.push_back(start);
-            for (std::size_t r = 0; r < r_count; ++r) sequence.push_back(ray(r));
+            for (std::size_t r = 0; r < r_count; ++r) sequence.push_back(&ray(r));
             sequence.push_back(finish);
         }
-        const auto sector_at = [&](std::size_t i) {
-            return shape == Shape::Plane ? sector(ray(i), ray(i + 1)) : sector(sequence[i], sequence[i + 1]);
+        const auto set_sector_at = [&](std::size_t i) {
+            if (shape == Shape::Plane) {
+                set_sector(ray(i), ray(i + 1));
+            } else {
+                set_sector(*sequence[i], *sequence[i + 1]);
+            }
         };
         // Signs of the sector before the first ray visited: the last sector of the plane's turn
         // (at its representative), the first sector of a wedge or half-plane (found above).
         if (shape == Shape::Plane) {
-            const ExactVector xi = ExactVector::from_exact(rep_of(sector_at(r_count - 1)));
+            set_sector_at(r_count - 1);
+            const ExactVector xi = ExactVector::from_exact(rep_of(closure_));
             for (std::size_t t = 0; t < closed_.size(); ++t) signs[t] = dot_sign(tangents_[static_cast<std::size_t>(closed_[t])], xi);
         }
         for (std::size_t t = 0; t < closed_.size(); ++t) letters_[t] = letter_of(signs[t]);
-        if (shape != Shape::Plane) emit(sector_index[0], sector_at(0), true);
+        if (shape != Shape::Plane) {
+            set_sector_at(0);
+            emit(sector_index[0], true);
+        }
         bool first = shape == Shape::Plane;
         for (std::size_t r = 0; r < r_count; ++r) {
             const std::span<const int> changed = group_members(r);
             for (int t : changed) letters_[static_cast<std::size_t>(t)] = 'f';
-            emit(ray_index[r], {ray(r)}, first, changed);
+            set_closure({&ray(r)});
+            emit(ray_index[r], first, changed);
             first = false;
             for (int t : changed) {
                 Sign& s = signs[static_cast<std::size_t>(t)];
@@ -300,7 +335,8 @@ private:
                 letters_[static_cast<std::size_t>(t)] = letter_of(s);
             }
             const std::size_t i = shape == Shape::Plane ? r : r + 1;
-            emit(sector_index[i], sector_at(i), false, changed);
+            set_sector_at(i);
+            emit(sector_index[i], false, changed);
         }
     }
 
@@ -314,7 +350,7 @@ private:
     std::size_t& next_;
     const Visit& visit_;
     std::vector<char> letters_;
-    std::vector<Q3> closure_;
+    std::vector<Q3>& closure_;
 };
 
 }  // namespace
@@ -336,6 +372,7 @@ ModeWalk::ModeWalk(const std::vector<Contact>& contacts, Closed how) {
 
 void ModeWalk::run_faces(std::size_t begin, std::size_t end, const Progress& progress, std::vector<std::size_t>& counts,
                          const Visit& visit) const {
+    std::vector<Q3> closure;  // every cell's, in turn
     for (std::size_t i = begin; i < end; ++i) {
         if (progress) progress("faces of the cone of motions", i - begin, end - begin);
         const Face& face = faces_[i];
@@ -359,7 +396,7 @@ void ModeWalk::run_faces(std::size_t begin, std::size_t end, const Progress& pro
                     normal = &a_.facets()[static_cast<std::size_t>(face.facets.front())];
                 }
             }
-            FaceWalk(i, closed_[i], tangents_, normals_.size(), next, visit)
+            FaceWalk(i, closed_[i], tangents_, normals_.size(), next, visit, closure)
                 .run(face.dimension, rays, lineality_, ray, start, finish, normal);
         }
         counts[i] = next - 1;
