@@ -311,26 +311,6 @@ std::string degrees(double radians) {
     return s.str();
 }
 
-std::string printable(const std::string& text) {
-    std::string out;
-    for (unsigned char c : text) {
-        if (c == '\n') {
-            out += "\\n";
-        } else if (c == '\t') {
-            out += "\\t";
-        } else if (c == '\r') {
-            out += "\\r";
-        } else if (c < 0x20 || c == 0x7f) {
-            char hex[8];
-            std::snprintf(hex, sizeof hex, "\\x%02x", c);
-            out += hex;
-        } else {
-            out += static_cast<char>(c);
-        }
-    }
-    return out;
-}
-
 std::string describe_mode(const Scene& scene, const std::string& letters) {
     std::string out;  // appended in place: Theta(contacts) per mode, Theta(modes x contacts) in all
     for (std::size_t j = 0; j < letters.size(); ++j) {

@@ -16,6 +16,7 @@
 #include "momentlab/io/files.hpp"
 #include "momentlab/io/json_writer.hpp"
 #include "momentlab/io/json_output.hpp"
+#include "momentlab/io/printable.hpp"
 
 namespace momentlab::cli {
 
@@ -155,8 +156,8 @@ std::string fmt(const Magnitude& m, int digits = 6);
 std::string fmt_point(const ExactVector& homogeneous, int digits = 6);
 /// An angle in radians as degrees with two decimals and the degree sign.
 std::string degrees(double radians);
-/// `text` with control characters escaped (\n, \t, \xNN): names and messages stay one line.
-std::string printable(const std::string& text);
+/// Names and messages as one line (io/printable.hpp).
+using momentlab::printable;
 /// "contact 2 slides along +t, floor separates, ..." for the letters of a mode.
 std::string describe_mode(const Scene& scene, const std::string& letters);
 /// Significant digits of region_text's numbers.

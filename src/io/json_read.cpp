@@ -1,5 +1,7 @@
 #include "json_read.hpp"
 
+#include "momentlab/io/printable.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -168,8 +170,9 @@ void Builder::number(double value, std::string_view text, Text lifetime, JsonNum
     const Schema* place = nullptr;
     Node* n = begin_value(Kind::Number, place);
     if (value == 0.0 && nonzero_digits(text)) {
-        throw InputError(path(), "a number too small for a double: it would be taken as 0 (expected " +
-                                 std::string(kMagnitudeRange) + ")");
+        // (No range here: a coordinate of a vector may be tiny where its largest is in range,
+        // and each field checks its own.)
+        throw InputError(path(), "a number too small for a double: it would be taken as 0 (write 0 where 0 is meant)");
     }
     if (n == nullptr || n->skipped()) return;
     if (text.size() >= (std::size_t{1} << (32 - Node::kLengthShift))) {
@@ -261,25 +264,6 @@ Document Builder::finish() {
 
 namespace {
 
-// The JSON library's message as one short line of ASCII: its "last read" text holds the file's
-// bytes as they were (a character cut in two is not UTF-8, which Python and a terminal refuse):
-// a control or non-ASCII byte as \xNN, and at most 200 bytes of it (a 10^5-digit number).
-std::string library_message(const char* what) {
-    std::string out;
-    for (const char* p = what; *p != '\0' && out.size() < 200; ++p) {
-        const auto c = static_cast<unsigned char>(*p);
-        if (c < 0x20 || c >= 0x7f) {
-            char hex[8];
-            std::snprintf(hex, sizeof hex, "\\x%02x", c);
-            out += hex;
-        } else {
-            out += static_cast<char>(c);
-        }
-    }
-    if (out.size() >= 200) out += "...";
-    return out;
-}
-
 // The JSON library's SAX events, to a Builder (its texts do not outlive the event).
 class LibraryEvents {
 public:
@@ -304,7 +288,7 @@ public:
             throw InputError(b_.next_path(), "a number beyond the doubles is out of range (expected " + std::string(kMagnitudeRange) + ")");
         }
         malformed_ = true;
-        throw InputError("$", "malformed JSON: " + library_message(e.what()));
+        throw InputError("$", "malformed JSON: " + printable(e.what(), Printable::Ascii, 200));
     }
     /// The library found the text malformed (not an error of the values it gave).
     [[nodiscard]] bool malformed() const { return malformed_; }

@@ -55,7 +55,7 @@ std::string with_text_layer(std::string svg, const Figure& f, const std::vector<
     const std::size_t open = svg.find("<svg");
     const std::size_t open_end = open == std::string::npos ? open : svg.find('>', open);
     if (open_end == std::string::npos) throw std::runtime_error("render: cairo wrote no SVG start tag");
-    svg.insert(open_end + 1, "\n<title>" + xml_escaped(displayable(f.title)) + "</title>");
+    svg.insert(open_end + 1, "\n<title>" + xml_escaped(printable(f.title)) + "</title>");
     return svg;
 }
 
@@ -138,7 +138,7 @@ std::string render(const Figure& figure, Format format) {
                                          " points on a side: draw fewer panels");
             }
             surface.reset(cairo_pdf_surface_create_for_stream(append_to_string, &bytes, page.width, page.height));
-            cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, displayable(figure.title).c_str());
+            cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, printable(figure.title).c_str());
             cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "momentlab");
             break;
         case Format::Png: {

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "momentlab/io/printable.hpp"
 #include "momentlab/render/figure.hpp"
 
 namespace momentlab::render::page {
@@ -119,52 +120,6 @@ inline FrameSize frame_size(const Box& view) {
     }
     if (w >= h) return {kPanelSize, std::max(kMinPanelSide, kPanelSize * h / w)};
     return {std::max(kMinPanelSide, kPanelSize * w / h), kPanelSize};
-}
-
-// A text as it can be shown: a control character (which XML 1.0 cannot hold and a font has no
-// glyph for) as its escape \xNN, and a byte that is not part of valid UTF-8 (which Cairo
-// refuses) as U+FFFD. Names and titles come from users' files and options.
-inline std::string displayable(const std::string& s) {
-    std::string out;
-    const auto* p = reinterpret_cast<const unsigned char*>(s.data());
-    const std::size_t n = s.size();
-    for (std::size_t i = 0; i < n;) {
-        const unsigned char c = p[i];
-        if (c < 0x20 || c == 0x7F) {
-            char hex[8];
-            std::snprintf(hex, sizeof hex, "\\x%02x", c);
-            out += hex;
-            ++i;
-            continue;
-        }
-        if (c < 0x80) {
-            out += static_cast<char>(c);
-            ++i;
-            continue;
-        }
-        // The length of a well-formed UTF-8 sequence starting with c, and the range of its
-        // second byte (no overlong forms, no surrogates, nothing above U+10FFFF).
-        std::size_t len = 0;
-        unsigned char lo = 0x80, hi = 0xBF;
-        if (c >= 0xC2 && c <= 0xDF) len = 2;
-        else if (c == 0xE0) len = 3, lo = 0xA0;
-        else if (c >= 0xE1 && c <= 0xEC) len = 3;
-        else if (c == 0xED) len = 3, hi = 0x9F;
-        else if (c >= 0xEE && c <= 0xEF) len = 3;
-        else if (c == 0xF0) len = 4, lo = 0x90;
-        else if (c >= 0xF1 && c <= 0xF3) len = 4;
-        else if (c == 0xF4) len = 4, hi = 0x8F;
-        bool ok = len > 0 && i + len <= n && p[i + 1] >= lo && p[i + 1] <= hi;
-        for (std::size_t k = 2; ok && k < len; ++k) ok = p[i + k] >= 0x80 && p[i + k] <= 0xBF;
-        if (ok) {
-            out.append(s, i, len);
-            i += len;
-        } else {
-            out += "\xEF\xBF\xBD";
-            ++i;
-        }
-    }
-    return out;
 }
 
 inline std::string xml_escaped(const std::string& s) {

@@ -146,7 +146,7 @@ private:
     // Text centred at a page point.
     void text_at(const Vec2& centre, const std::string& raw, double size, bool bold, const Colour& colour) {
         if (raw.empty()) return;
-        const std::string text = displayable(raw);
+        const std::string text = printable(raw);
         cairo_select_font_face(cr_, kFont, CAIRO_FONT_SLANT_NORMAL,
                                bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
         cairo_set_font_size(cr_, size);
@@ -159,7 +159,7 @@ private:
 
     // Text ending at x, centred vertically on y.
     void text_right_of(double x, double y, const std::string& raw, double size, const Colour& colour) {
-        const std::string text = displayable(raw);
+        const std::string text = printable(raw);
         cairo_select_font_face(cr_, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
         cairo_set_font_size(cr_, size);
         cairo_text_extents_t e;
@@ -169,7 +169,7 @@ private:
 
     // Text with its baseline starting at (x, y).
     void text_from(double x, double y, const std::string& raw, double size, bool bold, const Colour& colour) {
-        const std::string text = displayable(raw);
+        const std::string text = printable(raw);
         cairo_select_font_face(cr_, kFont, CAIRO_FONT_SLANT_NORMAL,
                                bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
         cairo_set_font_size(cr_, size);

@@ -24,6 +24,7 @@
 
 #include "io/json_read.hpp"
 #include "json_documents.hpp"
+#include "momentlab/io/printable.hpp"
 #include "momentlab/io/scene_json.hpp"
 #include "../common/sizes.hpp"
 
@@ -203,7 +204,8 @@ TEST(JsonRead, PlainReaderDeclinesWhatTheLibraryMustReport) {
         for (const auto& [text, error] : std::vector<std::pair<std::string, std::string>>{
                  {R"({"contacts": [{"mu": 0.3, "mu": 0.4}]})", "$.contacts[0].mu: duplicate key"},
                  {R"({"contacts": [{"mu": 0.3, "mu": "\n"}]})", "$.contacts[0].mu: duplicate key"},
-                 {"[0, [1e-400]]", "$[1][0]: a number too small for a double"},
+                 // (whole: no range of magnitudes, which a vector's tiny coordinate need not meet)
+                 {"[0, [1e-400]]", "$[1][0]: a number too small for a double: it would be taken as 0 (write 0 where 0 is meant)"},
                  {R"({"a": -2e-324})", "$.a: a number too small for a double"}}) {
             try {
                 (void)read(text);
@@ -696,3 +698,36 @@ TEST(JsonRead, ExactDecimalIsPythonsFraction) {
 
 }  // namespace
 }  // namespace momentlab
+
+// The one rule for showing users' and libraries' text (io/printable.hpp), byte by byte: the
+// control bytes, DEL, well-formed UTF-8 of each length and the ill-formed sequences of the
+// Unicode standard's table 3-7 (overlong, surrogate, above U+10FFFF, cut short), in both forms.
+TEST(Printable, OneRuleForMessagesNamesAndPictures) {
+    using momentlab::Printable;
+    using momentlab::printable;
+    const std::string controls("a\nb\tc\rd\x01" "e\x1b[31m\x7f" "f\0g", 18);
+    EXPECT_EQ(printable(controls), "a\\nb\\tc\\rd\\x01e\\x1b[31m\\x7ff\\x00g");
+    EXPECT_EQ(printable(controls, Printable::Ascii), printable(controls));
+    // Well-formed: U+00E9, U+20AC, U+1F600, and the ends of the ranges (U+0080, U+D7FF, U+E000, U+10FFFF).
+    const std::string good = "\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80 \xC2\x80 \xED\x9F\xBF \xEE\x80\x80 \xF4\x8F\xBF\xBF";
+    EXPECT_EQ(printable(good), good);
+    EXPECT_EQ(printable("\xC3\xA9", Printable::Ascii), "\\xc3\\xa9");
+    // Ill-formed: an overlong '/' (C0 AF), a surrogate (ED A0 80), beyond U+10FFFF (F4 90 80 80),
+    // E0 80 80 (overlong), a lone continuation byte, a sequence cut by the end, F5 and FF.
+    const std::string bad_bytes[] = {"\xC0\xAF", "\xED\xA0\x80", "\xF4\x90\x80\x80", "\xE0\x80\x80", "\x80", "\xE2\x82", "\xF5", "\xFF"};
+    for (const std::string& bad : bad_bytes) {
+        std::string replaced, escaped;
+        for (unsigned char c : bad) {
+            replaced += c >= 0x80 ? "\xEF\xBF\xBD" : std::string(1, static_cast<char>(c));
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02x", c);
+            escaped += hex;
+        }
+        EXPECT_EQ(printable("<" + bad + ">"), "<" + replaced + ">") << escaped;
+        EXPECT_EQ(printable("<" + bad + ">", Printable::Ascii), "<" + escaped + ">");
+    }
+    // At most about max_bytes: whole escapes, then "...".
+    EXPECT_EQ(printable("abcdef", Printable::Utf8, 4), "abcd...");
+    EXPECT_EQ(printable("ab\x01" "cd", Printable::Ascii, 3), "ab\\x01...");
+    EXPECT_EQ(printable("abc", Printable::Utf8, 3), "abc");
+}
