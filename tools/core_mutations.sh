@@ -3,14 +3,16 @@
 # turn (a copy of the sources, one replacement each), the core and its two tests built beside it
 # (g++, ccache) and run; prints the tests each mutation makes fail ("none" for the unchanged
 # sources must print none). A few minutes per mutation.
-# Usage: tools/core_mutations.sh [work directory]
+# Usage: tools/core_mutations.sh [work directory [name ...]]   (all when no name is given)
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 work=${1:-$root/build/mutations}
+only=" ${*:2} "
 lock() { if command -v mlbuild > /dev/null; then mlbuild "$@"; else "$@"; fi; }
 
 mutate() {  # name, file, text, replacement
     local name=$1 file=$2 old=$3 new=$4 dir=$work/$1
+    [[ $only == "  " || $only == *" $name "* ]] || return 0
     rm -rf "$dir" && mkdir -p "$dir"
     cp -r "$root/include" "$root/src" "$root/tests" "$root/reference" "$dir"/
     if ! python3 - "$dir/$file" "$old" "$new" <<'PY'
@@ -48,8 +50,9 @@ mutate slack_0 $A "return depth * kUnitRoundoff * (1 + 0x1p-40);" "return depth 
 mutate underflow_0 $A "kUnderflowMagnitude = 0x1p-1020;" "kUnderflowMagnitude = 0;"
 mutate product_depth_max $A "a.depth + b.depth + 1};" "(a.depth > b.depth ? a.depth : b.depth) + 1};"
 mutate sum_depth_no_rounding $A \
-    "return {a.value + b.value, a.magnitude + b.magnitude, (a.depth > b.depth ? a.depth : b.depth) + 1};" \
-    "return {a.value + b.value, a.magnitude + b.magnitude, (a.depth > b.depth ? a.depth : b.depth)};"
+    "a.magnitude + b.magnitude, (a.depth > b.depth ? a.depth : b.depth) + 1};" \
+    "a.magnitude + b.magnitude, (a.depth > b.depth ? a.depth : b.depth)};"
+mutate exact_sum_magnitude_half $A "? std::fabs(v) : a.magnitude + b.magnitude" "? 0.5 * std::fabs(v) : a.magnitude + b.magnitude"
 mutate within_2^45 $A "m = error * 0x1p51;" "m = error * 0x1p45;"
 mutate within_depth_1 $A "kWithinDepth = 4;" "kWithinDepth = 1;"
 mutate cross_error_2^-60 $X "times_power_of_two(s->sums, s->scale - 51)" "times_power_of_two(s->sums, s->scale - 60)"

@@ -18,6 +18,8 @@ mutations=(
     "one-shot-unit-2^-60|include/momentlab/core/approx.hpp|s/return depth \* kUnitRoundoff \* (1 + 0x1p-40);/return depth * 0x1p-60 * (1 + 0x1p-40);/|test_one_shot|$build/tests/test_one_shot"
     "one-shot-underflow-zero|include/momentlab/core/approx.hpp|s/kUnderflowMagnitude = 0x1p-1020;/kUnderflowMagnitude = 0;/|test_one_shot|$build/tests/test_one_shot"
     "one-shot-no-propagation|include/momentlab/core/approx.hpp|s/std::fabs(v) : a.magnitude \* b.magnitude;/std::fabs(v) : std::fabs(v);/|test_one_shot|$build/tests/test_one_shot"
+    "orient2d-unit-2^-60|include/momentlab/core/approx.hpp|s/return depth \* kUnitRoundoff \* (1 + 0x1p-40);/return depth * 0x1p-60 * (1 + 0x1p-40);/|test_polygon|$build/tests/test_polygon"
+    "orient2d-difference-magnitude-half|include/momentlab/core/approx.hpp|s/? std::fabs(v) : a.magnitude + b.magnitude/? 0.5 * std::fabs(v) : a.magnitude + b.magnitude/|test_polygon|$build/tests/test_polygon"
     "modes-first-crossing-only|src/mechanics/modes.cpp|s/for (int t : changed) {\$/for (int t : changed.first(1)) {/|test_analysis|$build/tests/test_analysis --gtest_filter=*DirectQuery*:*LongFaces*:*Grouped*:*Large*:*Rings*:*OneShotAgrees*"
     "margin-inside-short|src/mechanics/margin.cpp|s/least = std::min(least, std::max(0.0, scaled_facet(f, r, metric.length).dot(p)));/least = std::min(least, 0.99 * std::max(0.0, scaled_facet(f, r, metric.length).dot(p)));/|test_margin|$build/tests/test_margin"
     "margin-other-no-2d-faces|src/mechanics/margin.cpp|s/if (const auto d = distance_in_face(p, face_rays, lines))/if (const auto d = face.dimension == 1 ? distance_in_face(p, face_rays, lines) : std::nullopt)/|test_margin|$build/tests/test_margin"

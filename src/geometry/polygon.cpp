@@ -2,6 +2,7 @@
 #include "../core/error_free.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -42,18 +43,27 @@ double distance_to_segment(const Vec2& a, const Vec2& b, const Vec2& p) {
     return (a + t * d - p).norm();
 }
 
+// The orientation of three points, (b - a) x (c - a), over any number type.
+struct Orientation {
+    template <class T>
+    T operator()(const std::array<T, 2>& a, const std::array<T, 2>& b, const std::array<T, 2>& c) const {
+        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    }
+};
+
+std::array<Approx, 2> exactly(const Vec2& p) { return {Approx::exact(p.x()), Approx::exact(p.y())}; }
+
 }  // namespace
 
 Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
-    // The sign of (b - a) x (c - a). First Shewchuk's filter ("Adaptive precision floating-point
-    // arithmetic and fast robust geometric predicates", 1997: error below (3 + 16 eps) eps times
-    // the sum of the two products' magnitudes; 8 eps here, and only where no product can
-    // underflow or overflow). Where it cannot decide: a 2x2 minor when the four differences are
-    // exact doubles (points on a grid, or along an axis-parallel edge, where the orientation is
-    // often exactly zero), the lifted 3x3 determinant otherwise. Exact for every finite input.
-    const double left = (b.x() - a.x()) * (c.y() - a.y()), right = (b.y() - a.y()) * (c.x() - a.x());
-    const double sum = std::fabs(left) + std::fabs(right), det = left - right;
-    if (sum > 0x1p-900 && sum < 0x1p900 && std::fabs(det) > 0x1p-50 * sum) return sign_of(det);
+    // The sign of (b - a) x (c - a): the filter adaptor's certified approximation first (its
+    // bound, from the operations, is Shewchuk's: "Adaptive precision floating-point arithmetic
+    // and fast robust geometric predicates", 1997). Where it cannot decide: a 2x2 minor when the
+    // four differences are exact doubles (points on a grid, or along an axis-parallel edge, where
+    // the orientation is often exactly zero), the lifted 3x3 determinant otherwise. Exact for
+    // every finite input.
+    Sign s = Sign::Zero;
+    if (filter_sign(Orientation{}, s, exactly(a), exactly(b), exactly(c))) return s;
     using detail::exact_difference;
     const std::optional<double> ux = exact_difference(b.x(), a.x()), uy = exact_difference(b.y(), a.y());
     const std::optional<double> vx = exact_difference(c.x(), a.x()), vy = exact_difference(c.y(), a.y());

@@ -51,12 +51,14 @@ struct Approx {
 };
 
 [[nodiscard]] constexpr Approx operator-(const Approx& a) { return {-a.value, a.magnitude, a.depth}; }
-[[nodiscard]] constexpr Approx operator+(const Approx& a, const Approx& b) {
-    return {a.value + b.value, a.magnitude + b.magnitude, (a.depth > b.depth ? a.depth : b.depth) + 1};
+// A sum of two exact doubles is rounded once relative to itself, fl(a + b) = (a + b)(1 + d) with
+// |d| <= u (exact below the normal range), so |x - value| <= u |x| <= gamma(1) |value|: its
+// magnitude is |value| (Shewchuk's differences of coordinates, which cancel nothing they hide).
+[[nodiscard]] inline Approx operator+(const Approx& a, const Approx& b) {
+    const double v = a.value + b.value;
+    return {v, a.depth == 0 && b.depth == 0 ? std::fabs(v) : a.magnitude + b.magnitude, (a.depth > b.depth ? a.depth : b.depth) + 1};
 }
-[[nodiscard]] constexpr Approx operator-(const Approx& a, const Approx& b) {
-    return {a.value - b.value, a.magnitude + b.magnitude, (a.depth > b.depth ? a.depth : b.depth) + 1};
-}
+[[nodiscard]] inline Approx operator-(const Approx& a, const Approx& b) { return a + -b; }
 // Input errors multiply: (1 + gamma(m))(1 + gamma(n))(1 + u) <= 1 + gamma(m + n + 1). (The
 // product of two exact doubles has the magnitude |value|, one instruction where the depths are
 // known at compile time.)
