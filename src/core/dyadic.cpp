@@ -333,12 +333,6 @@ Dyadic Dyadic::scaled(std::int64_t k) const {
     return d;
 }
 
-std::int64_t Dyadic::exponent() const {
-    if (size_ == 0) return 0;
-    const Limb top = data()[size_ - 1];
-    return exponent_ + 64 * static_cast<std::int64_t>(size_ - 1) + 63 - std::countl_zero(top);
-}
-
 double Dyadic::to_double_scaled(std::int64_t k) const {
     if (size_ == 0) return 0.0;
     const Limb* p = data();
@@ -363,13 +357,6 @@ double Dyadic::to_double_scaled(std::int64_t k) const {
 Approx approximate(const Dyadic& x) {
     const double v = x.to_double();
     return x.fits_double() ? Approx::exact(v) : Approx::within(v, std::fabs(v) * 0x1p-53 + 0x1p-1074);
-}
-
-bool Dyadic::fits_double() const {
-    if (size_ == 0) return true;
-    if (size_ > 1) return false;
-    const int bitlen = 64 - std::countl_zero(data()[0]);
-    return bitlen <= 53 && exponent_ >= -1074 && exponent() <= 1023;
 }
 
 std::string Dyadic::to_string() const {

@@ -11,6 +11,7 @@
 /// WebAssembly (docs/robustness.md, "Exact numbers"). Magnitudes of up to six 64-bit limbs
 /// live inside the object; larger ones on the heap.
 
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -86,14 +87,22 @@ public:
     [[nodiscard]] Dyadic scaled(std::int64_t k) const;
 
     /// floor(log2 |x|); meaningless for zero.
-    [[nodiscard]] std::int64_t exponent() const;
+    [[nodiscard]] std::int64_t exponent() const {
+        if (size_ == 0) return 0;
+        return exponent_ + 64 * static_cast<std::int64_t>(size_ - 1) + 63 - std::countl_zero(data()[size_ - 1]);
+    }
     /// x * 2^-k correctly rounded to a double (to nearest, ties to even; 0 or infinite outside
     /// the double range).
     [[nodiscard]] double to_double_scaled(std::int64_t k) const;
     /// x correctly rounded to a double (0 or infinite outside the range).
     [[nodiscard]] double to_double() const { return to_double_scaled(0); }
     /// True when x is exactly a finite double (then to_double() is exact).
-    [[nodiscard]] bool fits_double() const;
+    [[nodiscard]] bool fits_double() const {
+        if (size_ == 0) return true;
+        if (size_ > 1) return false;
+        // (one odd limb: its bits are the significand's, at most 53, and the exponent in range)
+        return std::bit_width(data()[0]) <= 53 && exponent_ >= -1074 && exponent() <= 1023;
+    }
 
     /// The representation: |x| = sum of limbs()[i] 2^(64 i) times 2^binary_exponent(), the
     /// magnitude odd (no trailing zero bits) and without leading zero limbs; no limbs for 0.
