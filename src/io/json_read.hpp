@@ -214,6 +214,9 @@ private:
 [[nodiscard]] Document read_by_library(std::string_view text, const Schema& schema);
 /// The same by this file's reader alone; nullopt where the text is not plain JSON.
 [[nodiscard]] std::optional<Document> read_plain(std::string_view text, const Schema& schema);
+/// The end of the run of ASCII digits that starts at `p` (`end` if it runs to the end): the
+/// plain reader's scan past the digits of long numbers, eight bytes at a time.
+[[nodiscard]] const char* end_of_digits(const char* p, const char* end);
 /// A document built in memory (Python's dicts, C++'s nlohmann::json), kept as `schema` says; its
 /// integers get their decimal text, its doubles none (JsonNumber). `doc` must outlive the result.
 [[nodiscard]] Document document_of(const nlohmann::json& doc, const Schema& schema);

@@ -133,26 +133,34 @@ private:
         // The digits as one integer w while they fit (at most 19), and the decimal exponent:
         // the text is w 10^e.
         std::uint64_t w = 0;
-        int digits = 0;
+        std::int64_t digits = 0;
         const auto take = [&](char c) {
             if (digits < 19) w = w * 10 + static_cast<std::uint64_t>(c - '0');
             ++digits;
+        };
+        // The digits beyond the 19th are only counted (a run of them skipped at once: the exact
+        // expansions of doubles have hundreds).
+        const auto take_all = [&] {
+            for (; q != end_ && digits < 19 && digit(*q); ++q) take(*q);
+            const char* const rest = q;
+            q = end_of_digits(q, end_);
+            digits += q - rest;
         };
         const char* const integer_begin = q;
         if (*q == '0') {
             ++q;
         } else {
-            for (; q != end_ && digit(*q); ++q) take(*q);
+            take_all();
         }
         const char* const integer_end = q;
         const char* fraction = q;
         std::int64_t e = 0;
         if (q != end_ && *q == '.') {
             fraction = ++q;
-            for (; q != end_ && digit(*q); ++q) {
-                if (digits == 0 && *q == '0') continue;  // (leading zeros of 0.00x)
-                take(*q);
+            if (digits == 0) {
+                while (q != end_ && *q == '0') ++q;  // (leading zeros of 0.00x)
             }
+            take_all();
             if (q == fraction) return false;
             e = -(q - fraction);
         }
@@ -257,11 +265,15 @@ private:
         if (length == 0) return x = 0.0, S::Exact;
         if (length > 767) return S::Inexact;
         if (e >= 0) return S::Unknown;
+        // (one run of digits as it stands in the text unless the point splits it)
         char text[767];
-        std::memcpy(text, first.data(), first.size());
-        std::memcpy(text + first.size(), second.data(), second.size());
+        const char* run = first.empty() ? second.data() : second.empty() ? first.data() : text;
+        if (run == text) {
+            std::memcpy(text, first.data(), first.size());
+            std::memcpy(text + first.size(), second.data(), second.size());
+        }
         std::array<std::uint32_t, 86> limbs;  // D, least significant first
-        std::size_t size = detail::limbs_of_digits(text, length, limbs.data());
+        std::size_t size = detail::limbs_of_digits(run, length, limbs.data());
         for (std::int64_t fives = -e; fives > 0;) {
             const std::int64_t step = fives < 13 ? fives : 13;
             const std::uint64_t divisor = detail::kPowersOfFive[static_cast<std::size_t>(step)];
@@ -303,6 +315,20 @@ private:
 };
 
 }  // namespace
+
+// Each byte '0'..'9' when its high nibble is 3 and stays 3 with 6 added (a carry into a byte
+// comes only from a byte of high nibble F, which fails itself); eight at a time, then one by one.
+const char* end_of_digits(const char* p, const char* end) {
+    constexpr std::uint64_t kHigh = 0xF0F0F0F0F0F0F0F0, kSix = 0x0606060606060606, kThrees = 0x3333333333333333;
+    while (end - p >= 8) {
+        std::uint64_t v = 0;
+        std::memcpy(&v, p, sizeof v);
+        if (((v & kHigh) | (((v + kSix) & kHigh) >> 4)) != kThrees) break;
+        p += 8;
+    }
+    while (p != end && *p >= '0' && *p <= '9') ++p;
+    return p;
+}
 
 std::optional<Document> read_plain(std::string_view text, const Schema& schema) {
     Builder b(schema, text);

@@ -184,6 +184,56 @@ TEST(JsonRead, PlainReaderGivesTheLibrarysDocumentOrDeclines) {
     EXPECT_GT(errors_alike, testing::floor_of(100));
 }
 
+// end_of_digits against the byte-by-byte definition: every byte after runs of 0-20 digits,
+// at every alignment (the eight-byte test sees the byte in each of its lanes).
+TEST(JsonRead, EndOfDigitsStopsAtTheFirstByteThatIsNoDigit) {
+    for (int length = 0; length <= 20; ++length) {
+        for (int end = 0; end < 256; ++end) {
+            for (int tail = 0; tail < 9; ++tail) {
+                std::string text;
+                for (int k = 0; k < length; ++k) text += static_cast<char>('0' + (k * 3 + end) % 10);
+                text += static_cast<char>(end);
+                text += std::string(static_cast<std::size_t>(tail), '7');
+                const std::size_t expected = (end >= '0' && end <= '9') ? text.size() : static_cast<std::size_t>(length);
+                ASSERT_EQ(json_read::end_of_digits(text.data(), text.data() + text.size()) - text.data(),
+                          static_cast<std::ptrdiff_t>(expected))
+                    << length << " " << end << " " << tail;
+            }
+        }
+    }
+}
+
+// The plain reader skips the digits beyond the 19th eight bytes at a time: a run of 20-60
+// digits ended, at every offset, by every byte (the ones next to '0'..'9' among them: '/' and
+// ':', and those whose high nibble is 3), in the integer part, the fraction and the exponent's
+// mantissa; what the plain reader accepts is the library's document, and it accepts the runs
+// ended by a comma.
+TEST(JsonRead, PlainReaderEndsLongRunsOfDigitsWhereTheLibraryDoes) {
+    int accepted = 0;
+    for (int length = 20; length <= 60; length += 3) {
+        for (int end = 0; end < 256; ++end) {
+            for (const char* form : {"I", "0.I", "1.I", "0.0000I", "I.5", "0.Ie-3"}) {
+                std::string digits;
+                for (int k = 0; k < length; ++k) digits += static_cast<char>('1' + (k * 7 + length) % 9);
+                std::string number = form;
+                number.replace(number.find('I'), 1, digits + std::string(1, static_cast<char>(end)));
+                const std::string text = "[" + number + ",2]";
+                std::string plain;
+                try {
+                    const std::optional<Document> doc = json_read::read_plain(text, json_read::kEverything);
+                    if (!doc) continue;
+                    plain = describe(*doc);
+                } catch (const InputError& e) {
+                    plain = std::string("error: ") + e.what();
+                }
+                ASSERT_EQ(plain, by_library(text)) << text;
+                ++accepted;
+            }
+        }
+    }
+    EXPECT_GE(accepted, 14 * 6);  // at least every run ended by the comma
+}
+
 TEST(JsonRead, PlainReaderDeclinesWhatTheLibraryMustReport) {
     for (const char* text : {"[1e400]", "[0.3,]", "[01]", "[1.]", R"(["a\n"])", "\xef\xbb\xbf[1]", "[1] x", "", " ",
                              "[true false]", "{\"a\" 1}", "[nul]", "[\"\xc3\xa9\"]"}) {
@@ -204,8 +254,8 @@ TEST(JsonRead, PlainReaderDeclinesWhatTheLibraryMustReport) {
         for (const auto& [text, error] : std::vector<std::pair<std::string, std::string>>{
                  {R"({"contacts": [{"mu": 0.3, "mu": 0.4}]})", "$.contacts[0].mu: duplicate key"},
                  {R"({"contacts": [{"mu": 0.3, "mu": "\n"}]})", "$.contacts[0].mu: duplicate key"},
-                 // (whole: no range of magnitudes, which a vector's tiny coordinate need not meet)
-                 {"[0, [1e-400]]", "$[1][0]: a number too small for a double: it would be taken as 0 (write 0 where 0 is meant)"},
+                 // (no range of magnitudes after it, which a vector's tiny coordinate need not meet)
+                 {"[0, [1e-400]]", "$[1][0]: a number too small for a double: it would be taken as 0"},
                  {R"({"a": -2e-324})", "$.a: a number too small for a double"}}) {
             try {
                 (void)read(text);
@@ -708,10 +758,19 @@ TEST(Printable, OneRuleForMessagesNamesAndPictures) {
     const std::string controls("a\nb\tc\rd\x01" "e\x1b[31m\x7f" "f\0g", 18);
     EXPECT_EQ(printable(controls), "a\\nb\\tc\\rd\\x01e\\x1b[31m\\x7ff\\x00g");
     EXPECT_EQ(printable(controls, Printable::Ascii), printable(controls));
-    // Well-formed: U+00E9, U+20AC, U+1F600, and the ends of the ranges (U+0080, U+D7FF, U+E000, U+10FFFF).
-    const std::string good = "\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80 \xC2\x80 \xED\x9F\xBF \xEE\x80\x80 \xF4\x8F\xBF\xBF";
+    // Well-formed: U+00E9, U+20AC, U+1F600, and the ends of the ranges (U+0080, U+D7FF, U+E000,
+    // U+10FFFD, the last that is no noncharacter).
+    const std::string good = "\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80 \xC2\x80 \xED\x9F\xBF \xEE\x80\x80 \xF4\x8F\xBF\xBD";
     EXPECT_EQ(printable(good), good);
     EXPECT_EQ(printable("\xC3\xA9", Printable::Ascii), "\\xc3\\xa9");
+    // Noncharacters, well-formed but refused by Cairo and XML: U+FDD0, U+FDEF, U+FFFE, U+FFFF,
+    // U+1FFFE, U+10FFFF; their neighbours U+FDCF, U+FDF0, U+FFFD, U+1FFFD are kept.
+    for (const char* nonchar : {"\xEF\xB7\x90", "\xEF\xB7\xAF", "\xEF\xBF\xBE", "\xEF\xBF\xBF", "\xF0\x9F\xBF\xBE", "\xF4\x8F\xBF\xBF"}) {
+        EXPECT_EQ(printable(std::string("<") + nonchar + ">"), "<\xEF\xBF\xBD>") << nonchar;
+    }
+    for (const char* kept : {"\xEF\xB7\x8F", "\xEF\xB7\xB0", "\xEF\xBF\xBD", "\xF0\x9F\xBF\xBD"}) {
+        EXPECT_EQ(printable(kept), kept);
+    }
     // Ill-formed: an overlong '/' (C0 AF), a surrogate (ED A0 80), beyond U+10FFFF (F4 90 80 80),
     // E0 80 80 (overlong), a lone continuation byte, a sequence cut by the end, F5 and FF.
     const std::string bad_bytes[] = {"\xC0\xAF", "\xED\xA0\x80", "\xF4\x90\x80\x80", "\xE0\x80\x80", "\x80", "\xE2\x82", "\xF5", "\xFF"};
