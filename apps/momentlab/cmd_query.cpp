@@ -153,8 +153,7 @@ void answer_file(const QueryOptions& o) {
                 throw InputError(where, "expected [fx, fy, tau] of finite numbers");
             }
             if (const std::optional<std::string> tiny = underflowing_number(line)) {
-                throw InputError(where, "\"" + printable(*tiny) + "\" is too small for a double: it would be taken as 0 "
-                                        "(expected " + std::string(kMagnitudeRange) + ")");
+                throw InputError(where, "\"" + printable(*tiny) + "\" is " + std::string(kTooSmallForADouble));
             }
             if (!w.is_array() || w.size() != 3 || !w[0].is_number() || !w[1].is_number() || !w[2].is_number()) {
                 throw InputError(where, "expected [fx, fy, tau]");

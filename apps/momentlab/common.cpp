@@ -115,8 +115,7 @@ const CLI::Validator& number_check() {
                 return "expected a number, got \"" + printable(s) + "\"";
             }
             if (x == 0.0 && nonzero_digits(s)) {
-                return "\"" + printable(s) + "\" is too small for a double: it would be taken as 0 (expected " +
-                       std::string(kMagnitudeRange) + ")";
+                return "\"" + printable(s) + "\" is " + std::string(kTooSmallForADouble);
             }
             return {};
         },

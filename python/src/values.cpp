@@ -50,7 +50,7 @@ Array real_array(const py::handle& value, const std::string& what) {
     Array a = Array::ensure(raw);
     if (kind == 'f' && raw.dtype().itemsize() > 8) {
         const py::object tiny = np.attr("logical_and")(np.attr("equal")(a, 0.0), np.attr("not_equal")(raw, 0));
-        if (np.attr("any")(tiny).cast<bool>()) throw InputError(what, "a number is too small for a double: it would be taken as 0");
+        if (np.attr("any")(tiny).cast<bool>()) throw InputError(what, "a number is " + std::string(kTooSmallForADouble));
     }
     return a;
 }
@@ -154,7 +154,7 @@ nlohmann::json json_of(const py::handle& value, const std::string& path, int dep
         if (kind != 'f') throw InputError(path, "expected a real number");
         const double x = py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
         if (x == 0.0 && py::bool_(py::reinterpret_borrow<py::object>(value))) {  // a long double below a double's range
-            throw InputError(path, "too small for a double: it would be taken as 0");
+            throw InputError(path, std::string(kTooSmallForADouble));
         }
         return x;
     }

@@ -102,13 +102,13 @@ std::array<Rational, K> exact_vector_of(const py::handle& value, const char* wha
         std::optional<Rational> r = exact_number(x);
         // As in files and options: a non-zero number never reads as 0 (docs/reliability.md).
         if (r && !r->is_zero() && r->to_double() == 0.0) {
-            throw InputError(what, "a number is too small for a double: it would be taken as 0");
+            throw InputError(what, "a number is " + std::string(kTooSmallForADouble));
         }
         if (!r && py::isinstance<py::str>(x)) {
             // A decimal whose exponent takes it beyond the doubles (1e-999999999): as files say it.
             const std::string t = stripped(x.cast<std::string>());
             if (!Rational::is_decimal(t)) throw InputError(what, "expected numbers");
-            if (std::strtod(t.c_str(), nullptr) == 0.0) throw InputError(what, "a number is too small for a double: it would be taken as 0");
+            if (std::strtod(t.c_str(), nullptr) == 0.0) throw InputError(what, "a number is " + std::string(kTooSmallForADouble));
             throw InputError(what, "expected finite numbers");
         }
         if (!r) {
@@ -123,7 +123,7 @@ std::array<Rational, K> exact_vector_of(const py::handle& value, const char* wha
             // A non-zero value that rounds to 0 (a long double or a Decimal below the doubles'
             // range) is refused, as in files: never read as 0.
             if (d == 0.0 && py::bool_(py::reinterpret_borrow<py::object>(x)).cast<bool>()) {
-                throw InputError(what, "a number is too small for a double: it would be taken as 0");
+                throw InputError(what, "a number is " + std::string(kTooSmallForADouble));
             }
             r = Rational(d);
         }

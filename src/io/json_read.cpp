@@ -170,9 +170,7 @@ void Builder::number(double value, std::string_view text, Text lifetime, JsonNum
     const Schema* place = nullptr;
     Node* n = begin_value(Kind::Number, place);
     if (value == 0.0 && nonzero_digits(text)) {
-        // (No range here: a coordinate of a vector may be tiny where its largest is in range,
-        // and each field checks its own.)
-        throw InputError(path(), "a number too small for a double: it would be taken as 0 (write 0 where 0 is meant)");
+        throw InputError(path(), "a number " + std::string(kTooSmallForADouble));
     }
     if (n == nullptr || n->skipped()) return;
     if (text.size() >= (std::size_t{1} << (32 - Node::kLengthShift))) {

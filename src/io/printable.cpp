@@ -1,6 +1,7 @@
 // Text as it can be shown (io/printable.hpp).
 #include "momentlab/io/printable.hpp"
 
+#include <cstdint>
 #include <cstdio>
 
 namespace momentlab {
@@ -25,6 +26,14 @@ std::size_t utf8_length(const unsigned char* p, std::size_t i, std::size_t n) {
         if (p[i + k] < 0x80 || p[i + k] > 0xBF) return 0;
     }
     return len;
+}
+
+// U+FDD0..U+FDEF and the last two code points of every plane (U+FFFE, U+FFFF, U+1FFFE, ...):
+// well-formed, but neither XML 1.0 nor Cairo takes U+FFFE and U+FFFF, and no text means them.
+bool noncharacter(const unsigned char* s, std::size_t len) {
+    std::uint32_t cp = len == 2 ? s[0] & 0x1Fu : len == 3 ? s[0] & 0x0Fu : s[0] & 0x07u;
+    for (std::size_t k = 1; k < len; ++k) cp = (cp << 6) | (s[k] & 0x3Fu);
+    return (cp >= 0xFDD0 && cp <= 0xFDEF) || (cp & 0xFFFEu) == 0xFFFEu;
 }
 
 void append_escape(std::string& out, unsigned char c) {
@@ -55,7 +64,11 @@ std::string printable(std::string_view text, Printable how, std::size_t max_byte
             append_escape(out, c);
             ++i;
         } else if (const std::size_t len = utf8_length(p, i, n); len > 0) {
-            out.append(text.substr(i, len));
+            if (noncharacter(p + i, len)) {
+                out += "\xEF\xBF\xBD";  // (one for the character)
+            } else {
+                out.append(text.substr(i, len));
+            }
             i += len;
         } else {
             out += "\xEF\xBF\xBD";

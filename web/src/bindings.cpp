@@ -52,11 +52,11 @@ Rational typed(const json& v, const std::string& where) {
     const std::optional<Rational> x = v.is_string() ? Rational::parse(v.get<std::string>()) : std::optional<Rational>(Rational(v.get<double>()));
     // A decimal whose exponent takes it beyond the doubles (1e-999999999): as files say it.
     if (!x && std::strtod(v.get<std::string>().c_str(), nullptr) == 0.0) {
-        throw InputError(where, "a number is too small for a double: it would be taken as 0");
+        throw InputError(where, "a number is " + std::string(kTooSmallForADouble));
     }
     if (!x || !std::isfinite(x->to_double())) throw InputError(where, "expected a finite number");
     // as in files and options: a non-zero number never reads as 0 (docs/reliability.md)
-    if (!x->is_zero() && x->to_double() == 0.0) throw InputError(where, "a number is too small for a double: it would be taken as 0");
+    if (!x->is_zero() && x->to_double() == 0.0) throw InputError(where, "a number is " + std::string(kTooSmallForADouble));
     return *x;
 }
 

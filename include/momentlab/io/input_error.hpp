@@ -45,6 +45,11 @@ public:
 /// is ignored), each "path: message".
 using InputWarnings = std::vector<std::string>;
 
+/// What a number that is not 0 but reads as 0.0 (1e-400) is told, in every front end. No range
+/// of magnitudes: a vector's coordinate may be tiny where its largest is in range, and each field
+/// checks its own.
+inline constexpr std::string_view kTooSmallForADouble = "too small for a double: it would be taken as 0";
+
 /// The accepted magnitudes of numbers in input files: 0, or between these.
 inline constexpr double kSmallestMagnitude = 1e-60;
 inline constexpr double kLargestMagnitude = 1e60;

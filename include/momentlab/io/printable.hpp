@@ -12,7 +12,7 @@ namespace momentlab {
 
 /// What `printable` keeps of the bytes beyond ASCII.
 enum class Printable {
-    Utf8,   ///< well-formed UTF-8 kept; any other byte as U+FFFD (Cairo and XML take the result)
+    Utf8,   ///< well-formed UTF-8 kept but noncharacters (U+FFFE ...); any other byte, and those, as U+FFFD (Cairo and XML take the result)
     Ascii,  ///< every byte beyond ASCII as \xNN (a message that must be one line of ASCII)
 };
 
