@@ -15,10 +15,13 @@ constexpr double kInfeasibleSum = 1e-7;
 constexpr std::size_t kRefactorEvery = 64;
 constexpr std::size_t kDegenerateRun = 50;
 
+// One exchange of the product-form update: the basis's column `position` replaced, with the
+// entering column's alpha there (`pivot`) and at the other positions (entries begin .. end of
+// the eta file's one list).
 struct Eta {
     std::uint32_t position;
     double pivot;
-    std::vector<SparseEntry<double>> others;  // (position, alpha) for the other positions
+    std::size_t begin, end;
 };
 
 class Simplex {
@@ -111,12 +114,14 @@ private:
     }
 
     bool refactor() {
-        std::vector<SparseColumn<double>> columns(m_);
+        basis_columns_.resize(m_);
         for (std::uint32_t p = 0; p < m_; ++p) {
-            for_column(basis_.basic[p], [&](std::uint32_t i, double v) { columns[p].push_back({i, v}); });
+            basis_columns_[p].clear();
+            for_column(basis_.basic[p], [&](std::uint32_t i, double v) { basis_columns_[p].push_back({i, v}); });
         }
         etas_.clear();
-        return lu_.factor(columns);
+        eta_entries_.clear();
+        return lu_.factor(basis_columns_);
     }
 
     void recompute_x() {
@@ -129,25 +134,36 @@ private:
         for (std::uint32_t p = 0; p < m_; ++p) x_[basis_.basic[p]] = xb[p];
     }
 
-    std::vector<double> ftran(std::vector<double> by_row) const {
-        std::vector<double> v = lu_.solve(std::move(by_row));
+    // B^-1 by_row into v (by_row overwritten; no allocation once the buffers have room).
+    void ftran(std::vector<double>& by_row, std::vector<double>& v) const {
+        lu_.solve(by_row, v);
         for (const Eta& e : etas_) {
             const double vp = v[e.position] / e.pivot;
             v[e.position] = vp;
             if (vp != 0.0) {
-                for (const SparseEntry<double>& a : e.others) v[a.index] -= a.value * vp;
+                for (std::size_t k = e.begin; k < e.end; ++k) v[eta_entries_[k].index] -= eta_entries_[k].value * vp;
             }
         }
+    }
+    std::vector<double> ftran(std::vector<double> by_row) const {
+        std::vector<double> v;
+        ftran(by_row, v);
         return v;
     }
 
-    std::vector<double> btran(std::vector<double> by_position) const {
+    // B^-T by_position into y (by_position overwritten).
+    void btran(std::vector<double>& by_position, std::vector<double>& y) const {
         for (auto e = etas_.rbegin(); e != etas_.rend(); ++e) {
             double s = by_position[e->position];
-            for (const SparseEntry<double>& a : e->others) s -= a.value * by_position[a.index];
+            for (std::size_t k = e->begin; k < e->end; ++k) s -= eta_entries_[k].value * by_position[eta_entries_[k].index];
             by_position[e->position] = s / e->pivot;
         }
-        return lu_.solve_transposed(std::move(by_position));
+        lu_.solve_transposed(by_position, y);
+    }
+    std::vector<double> btran(std::vector<double> by_position) const {
+        std::vector<double> y;
+        btran(by_position, y);
+        return y;
     }
 
     std::vector<double> column_by_row(std::uint32_t j) const {
@@ -157,11 +173,12 @@ private:
     }
 
     void exchange(std::uint32_t position, std::uint32_t entering, const std::vector<double>& alpha) {
-        Eta eta{position, alpha[position], {}};
+        Eta eta{position, alpha[position], eta_entries_.size(), 0};
         for (std::uint32_t i = 0; i < m_; ++i) {
-            if (i != position && alpha[i] != 0.0) eta.others.push_back({i, alpha[i]});
+            if (i != position && alpha[i] != 0.0) eta_entries_.push_back({i, alpha[i]});
         }
-        etas_.push_back(std::move(eta));
+        eta.end = eta_entries_.size();
+        etas_.push_back(eta);
         basis_.basic[position] = entering;
         basis_.place[entering] = Place::Basic;
         ++pivots_;
@@ -254,9 +271,11 @@ private:
                 recompute_x();
             }
             const bool bland = degenerate > kDegenerateRun;
-            std::vector<double> cb(m_);
+            std::vector<double>& cb = work_;
+            cb.resize(m_);
             for (std::uint32_t p = 0; p < m_; ++p) cb[p] = cost_[basis_.basic[p]];
-            const std::vector<double> y = btran(std::move(cb));
+            std::vector<double>& y = y_;
+            btran(cb, y);
             // Pricing.
             std::uint32_t entering = n_ + m_;
             double best = 0.0, direction = 0.0;
@@ -278,7 +297,11 @@ private:
                 }
             }
             if (entering == n_ + m_) return SimplexStatus::Optimal;
-            const std::vector<double> alpha = ftran(column_by_row(entering));
+            std::vector<double>& column = work_;
+            column.assign(m_, 0.0);
+            for_column(entering, [&](std::uint32_t i, double v) { column[i] += v; });
+            std::vector<double>& alpha = alpha_;
+            ftran(column, alpha);
             // Harris's ratio test: the largest |alpha| among the steps within the tolerant minimum.
             double bound_with_tolerance = kInfinity;
             for (std::uint32_t p = 0; p < m_; ++p) {
@@ -346,6 +369,9 @@ private:
     Basis basis_;
     SparseLu<double> lu_;
     std::vector<Eta> etas_;
+    std::vector<SparseEntry<double>> eta_entries_;
+    std::vector<SparseColumn<double>> basis_columns_;  // (room for refactor)
+    std::vector<double> work_, y_, alpha_;              // (room for each iteration's vectors)
     std::size_t pivots_ = 0;
 };
 

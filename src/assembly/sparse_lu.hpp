@@ -52,11 +52,15 @@ public:
     bool factor(std::span<const SparseColumn<T>> columns, std::span<const Pivot> order = {}, bool search = false) {
         const auto m = static_cast<std::uint32_t>(columns.size());
         m_ = m;
-        rows_.assign(m, {});
-        col_rows_.assign(m, {});
+        // (The per-row and per-step lists keep their room from one factorization to the next: a
+        // simplex refactors its basis many times.)
+        for (auto* lists : {&rows_, &lower_, &upper_}) {
+            if (lists->size() < m) lists->resize(m);
+            for (auto& list : *lists) list.clear();
+        }
+        if (col_rows_.size() < m) col_rows_.resize(m);
+        for (auto& list : col_rows_) list.clear();
         col_count_.assign(m, 0);
-        lower_.clear();
-        upper_.clear();
         pivots_.clear();
         pivots_.reserve(m);
         for (std::uint32_t j = 0; j < m; ++j) {
@@ -82,8 +86,6 @@ public:
             if (!p) return false;
             eliminate(*p);
         }
-        rows_.clear();
-        col_rows_.clear();
         return true;
     }
 
@@ -91,23 +93,34 @@ public:
 
     /// x with B x = b: b indexed by row, the result by column position.
     [[nodiscard]] std::vector<T> solve(std::vector<T> b) const {
+        std::vector<T> x;
+        solve(b, x);
+        return x;
+    }
+    /// The same into x (b is overwritten): no allocation once x has room.
+    void solve(std::vector<T>& b, std::vector<T>& x) const {
         for (std::size_t k = 0; k < pivots_.size(); ++k) {
             const T& pivot_value = b[pivots_[k].row];
             for (const SparseEntry<T>& l : lower_[k]) b[l.index] -= l.value * pivot_value;
         }
-        std::vector<T> x(m_, T(0.0));
+        x.assign(m_, T(0.0));
         for (std::size_t k = pivots_.size(); k-- > 0;) {
             T s = b[pivots_[k].row];
             const std::vector<SparseEntry<T>>& u = upper_[k];
             for (std::size_t i = 1; i < u.size(); ++i) s -= u[i].value * x[u[i].index];
             x[pivots_[k].col] = s / u[0].value;
         }
-        return x;
     }
 
     /// y with B^T y = c: c indexed by column position, the result by row.
     [[nodiscard]] std::vector<T> solve_transposed(std::vector<T> c) const {
-        std::vector<T> z(m_, T(0.0));
+        std::vector<T> z;
+        solve_transposed(c, z);
+        return z;
+    }
+    /// The same into z (c is overwritten).
+    void solve_transposed(std::vector<T>& c, std::vector<T>& z) const {
+        z.assign(m_, T(0.0));
         for (std::size_t k = 0; k < pivots_.size(); ++k) {
             const std::vector<SparseEntry<T>>& u = upper_[k];
             const T v = c[pivots_[k].col] / u[0].value;
@@ -118,14 +131,12 @@ public:
             T& zr = z[pivots_[k].row];
             for (const SparseEntry<T>& l : lower_[k]) zr -= l.value * z[l.index];
         }
-        return z;
     }
 
     /// Entries of L and U (the work of a solve).
     [[nodiscard]] std::size_t size() const {
         std::size_t s = 0;
-        for (const auto& l : lower_) s += l.size();
-        for (const auto& u : upper_) s += u.size();
+        for (std::size_t k = 0; k < pivots_.size(); ++k) s += lower_[k].size() + upper_[k].size();
         return s;
     }
 
@@ -183,7 +194,10 @@ private:
     }
 
     void eliminate(const Pivot& p) {
-        std::vector<SparseEntry<T>> pivot_row = std::move(rows_[p.row]);
+        const std::size_t k = pivots_.size();
+        // The pivot row becomes U's row k (their buffers swapped: the row keeps U's old room).
+        std::vector<SparseEntry<T>>& pivot_row = upper_[k];
+        pivot_row.swap(rows_[p.row]);
         rows_[p.row].clear();
         // The pivot first in U's row.
         for (std::size_t i = 0; i < pivot_row.size(); ++i) {
@@ -196,7 +210,7 @@ private:
         row_done_[p.row] = true;
         col_done_[p.col] = true;
         for (const SparseEntry<T>& e : pivot_row) --col_count_[e.index];
-        std::vector<SparseEntry<T>> lower;
+        std::vector<SparseEntry<T>>& lower = lower_[k];  // (cleared by factor)
         for (std::uint32_t r : col_rows_[p.col]) {
             if (row_done_[r]) continue;
             std::vector<SparseEntry<T>>& row = rows_[r];
@@ -229,8 +243,6 @@ private:
             for (const SparseEntry<T>& e : row) position_[e.index] = -1;
         }
         pivots_.push_back(p);
-        lower_.push_back(std::move(lower));
-        upper_.push_back(std::move(pivot_row));
     }
 
     std::uint32_t m_ = 0;
@@ -240,8 +252,9 @@ private:
     std::vector<bool> row_done_, col_done_;
     std::vector<std::int64_t> position_;
     std::vector<Pivot> pivots_;
-    std::vector<std::vector<SparseEntry<T>>> lower_;  // step k: (row, multiplier)
-    std::vector<std::vector<SparseEntry<T>>> upper_;  // step k: the pivot row, pivot first: (col, value)
+    // Step k < pivots_.size() (the lists beyond are room kept for the next factorization):
+    std::vector<std::vector<SparseEntry<T>>> lower_;  // (row, multiplier)
+    std::vector<std::vector<SparseEntry<T>>> upper_;  // the pivot row, pivot first: (col, value)
 };
 
 }  // namespace momentlab::assembly_detail
