@@ -45,4 +45,7 @@ check "angular order: the half of a direction (angular_half)" '\bangular_half\(S
 check "angular order: comparing two (angular_compare)" '\bangular_compare\(int '
 check "the range message (kMagnitudeRange =)" '\bkMagnitudeRange = '
 check "the range written as text (\"...1e-60...\")" '"[^"]*1e-60'
+check "the underflow message (kTooSmallForADouble =)" '\bkTooSmallForADouble = '
+check "the underflow written as text (\"...taken as 0...\")" '"[^"]*taken as 0'
+check "text as shown to a user (printable)" '^std::string printable\(std::string_view '
 exit $status

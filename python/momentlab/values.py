@@ -14,6 +14,8 @@ from typing import Any
 
 import numpy as np
 
+from . import _momentlab
+
 
 @dataclass
 class _Table:
@@ -56,7 +58,7 @@ def _real(value, what) -> np.ndarray:
     if a.ndim:
         a = np.ascontiguousarray(a)
     if raw.dtype.kind == "f" and raw.dtype.itemsize > 8 and np.any((a == 0) & (raw != 0)):
-        raise ValueError(f"{what}: a number is too small for a double: it would be taken as 0")
+        raise ValueError(f"{what}: a number is {_momentlab.TOO_SMALL_FOR_A_DOUBLE}")
     return a
 
 

@@ -100,6 +100,9 @@ PYBIND11_MODULE(_momentlab, m) {
     using namespace momentlab;
     using namespace momentlab::python;
     m.doc() = "momentlab's compiled core; use the package `momentlab` (docs/python.md).";
+    // The message the library gives a number that underflows (io/input_error.hpp), for the
+    // checks made in Python (values.py).
+    m.attr("TOO_SMALL_FOR_A_DOUBLE") = std::string(kTooSmallForADouble);
 
     py::class_<Region>(m, "Region", "One sheet of the moment labels: conv(vertices) + cone(rays) + span(lines).")
         .def_property_readonly("kind", &Region::kind)
