@@ -4,7 +4,8 @@
 // the collapse mechanism: each turning body's rotation centre and each moving body's velocity at
 // its centre of mass), the panel can stand, the outcome, the modes and the tilt range. Handles:
 // each centre of mass (anywhere), each body with a polygon (sideways: a stack stays stacked; its
-// com and listed contacts go with it) and each listed contact point. Loaded after draw.js and
+// com and listed contacts go with it, and the bodies joined to it by listed contacts) and each
+// listed contact point. Loaded after draw.js and
 // before app.js (web/build_page.py); app.js hands a scene with "bodies" to these functions.
 'use strict';
 
@@ -96,16 +97,31 @@ function drawAssemblyPanel(r) {
   $('stand-tilt').textContent = tiltText(r.tilt);
 }
 
-// Moves body k (0-based) by d: its polygon, its centre of mass and the listed contacts of its own
-// (both bodies it touches moved, or the other the world).
+// Moves body k (0-based) by d, with every body joined to it by listed contacts between bodies
+// (a stack, an arch: those contacts stay where both their bodies are): their polygons, centres of
+// mass and every listed contact of theirs, those with the world included. The library then judges
+// the scene as drawn (a contact moved off the world's outline is refused).
 function moveBody(k, d) {
-  const b = app.doc.bodies[k];
   const shift = (p) => [p[0] + d[0], p[1] + d[1]];
-  b.com = shift(b.com);
-  if (b.polygon) b.polygon = b.polygon.map(shift);
-  for (const c of app.doc.contacts || []) {
-    const [a, other] = c.bodies;
-    if ((a === k + 1 && other === 0) || (other === k + 1 && a === 0)) c.point = shift(c.point);
+  const contacts = app.doc.contacts || [];
+  const moving = new Set([k + 1]);
+  for (let grown = true; grown;) {
+    grown = false;
+    for (const c of contacts) {
+      const [a, b] = c.bodies;
+      if (a !== 0 && b !== 0 && moving.has(a) !== moving.has(b)) {
+        moving.add(moving.has(a) ? b : a);
+        grown = true;
+      }
+    }
+  }
+  for (const i of moving) {
+    const body = app.doc.bodies[i - 1];
+    body.com = shift(body.com);
+    if (body.polygon) body.polygon = body.polygon.map(shift);
+  }
+  for (const c of contacts) {
+    if (moving.has(c.bodies[0]) || moving.has(c.bodies[1])) c.point = shift(c.point);
   }
 }
 

@@ -529,6 +529,18 @@ test('assemblies: the stand answer live as bodies, centres of mass, contacts and
   await page.focus('[data-handle="contact 1"]');
   await page.keyboard.press('ArrowLeft');
   await expectStandAsCli('floor contact moved');
+  // the block dragged sideways: the leaning body, joined to it by a listed contact, goes with it
+  // (the edit accepted: both centres of mass moved by the same step, the joint too)
+  const before = await page.evaluate(() => JSON.parse(JSON.stringify(window.momentlabApp.doc)));
+  await page.focus('[data-handle="body 2"]');
+  await page.keyboard.press('ArrowRight');
+  const after = await page.evaluate(() => window.momentlabApp.doc);
+  const step = after.bodies[1].com[0] - before.bodies[1].com[0];
+  assert.ok(step > 0, `block moved ${step}`);
+  const near = (x, what) => assert.ok(Math.abs(x - step) <= 1e-9 * Math.abs(step), `${what} moved ${x}, the block ${step}`);
+  near(after.bodies[0].com[0] - before.bodies[0].com[0], 'the leaning body');
+  near(after.contacts[1].point[0] - before.contacts[1].point[0], 'the joint');
+  await expectStandAsCli('block and leaning body moved');
   await page.screenshot({ path: join(WEB, 'page-assembly.png') });
   // An opened file's decimals as typed (a JS number would round mu = 0.29999999999999999999 to
   // 0.3, where the floor holds under gravity (0.3, -1)); a refused file leaves the scene as it was.
