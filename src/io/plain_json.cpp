@@ -134,14 +134,10 @@ private:
         // the text is w 10^e.
         std::uint64_t w = 0;
         std::int64_t digits = 0;
-        const auto take = [&](char c) {
-            if (digits < 19) w = w * 10 + static_cast<std::uint64_t>(c - '0');
-            ++digits;
-        };
         // The digits beyond the 19th are only counted (a run of them skipped at once: the exact
         // expansions of doubles have hundreds).
         const auto take_all = [&] {
-            for (; q != end_ && digits < 19 && digit(*q); ++q) take(*q);
+            for (; q != end_ && digits < 19 && digit(*q); ++q, ++digits) w = w * 10 + static_cast<std::uint64_t>(*q - '0');
             const char* const rest = q;
             q = end_of_digits(q, end_);
             digits += q - rest;

@@ -83,7 +83,8 @@ public:
                 set_closure({&rays.front()});
                 emit(index, true);
             } else {
-                const Q3 line = lineality.front(), opposite = -line;
+                const Q3& line = lineality.front();
+                const Q3 opposite = -line;
                 set_closure({&line});
                 single(line);
                 set_closure({&opposite});
@@ -129,7 +130,7 @@ private:
         emit(index, true, {}, &representative);
     }
 
-    // A point inside the cell whose closure is given by sector() or a single ray.
+    // A point inside the cell whose closure set_sector or a single ray gives.
     static Q3 rep_of(const std::vector<Q3>& closure) {
         if (closure.size() == 1) return closure[0];
         return closure.size() == 2 ? closure[0] + closure[1] : closure[2];
